@@ -1,0 +1,54 @@
+#include "core/config.hpp"
+
+#include <stdexcept>
+
+namespace trirast {
+
+CullMode parse_cull_mode(const std::string& text) {
+  if (text == "none") return CullMode::None;
+  if (text == "back") return CullMode::Back;
+  if (text == "front") return CullMode::Front;
+  throw std::invalid_argument("--cull: expected none, back or front, got '" + text + "'");
+}
+
+const char* cull_mode_name(CullMode mode) {
+  switch (mode) {
+    case CullMode::Back: return "back";
+    case CullMode::Front: return "front";
+    default: return "none";
+  }
+}
+
+BoundaryMode parse_boundary_mode(const std::string& text) {
+  if (text == "step") return BoundaryMode::Step;
+  if (text == "divide") return BoundaryMode::Divide;
+  throw std::invalid_argument("--boundary: expected step or divide, got '" + text + "'");
+}
+
+const char* boundary_mode_name(BoundaryMode mode) {
+  return mode == BoundaryMode::Divide ? "divide" : "step";
+}
+
+void RasterConfig::validate() const {
+  if (width < 1 || width > kMaxViewport)
+    throw std::invalid_argument("--width: " + std::to_string(width) + " is outside 1.." +
+                                std::to_string(kMaxViewport));
+  if (height < 1 || height > kMaxViewport)
+    throw std::invalid_argument("--height: " + std::to_string(height) + " is outside 1.." +
+                                std::to_string(kMaxViewport));
+  if (subpixel_bits < 0 || subpixel_bits > 8)
+    throw std::invalid_argument("--subpixel-bits: " + std::to_string(subpixel_bits) +
+                                " is outside 0..8");
+  // The viewport must lie inside the coordinate range, and edge values (2p+2 bits) must fit int64.
+  if (coord_int_bits < 2 || coord_int_bits > 24)
+    throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) +
+                                " is outside 2..24");
+  if (coord_limit_px() < width || coord_limit_px() < height)
+    throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) +
+                                " bits cannot hold a " + std::to_string(width) + "x" +
+                                std::to_string(height) + " viewport");
+  if (box_bits < 1 || box_bits > 14)
+    throw std::invalid_argument("--box-bits: " + std::to_string(box_bits) + " is outside 1..14");
+}
+
+}  // namespace trirast

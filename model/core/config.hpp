@@ -1,0 +1,53 @@
+// Configuration shared by setup and every engine: viewport, subpixel precision, coordinate range,
+// culling, and the unit's hardware parameters.
+#pragma once
+#include <cstdint>
+#include <string>
+
+namespace trirast {
+
+enum class CullMode { None, Back, Front };
+
+// How the unit's walkers find the first row where an edge enters the bounding box:
+// Step = the paper's boundary traversal, one row per step down the box's side column;
+// Divide = one division on the adder divider (same result, fewer steps on tall boxes).
+enum class BoundaryMode { Step, Divide };
+BoundaryMode parse_boundary_mode(const std::string& text);
+const char* boundary_mode_name(BoundaryMode mode);
+
+// Parses "none" | "back" | "front"; throws std::invalid_argument otherwise.
+CullMode parse_cull_mode(const std::string& text);
+const char* cull_mode_name(CullMode mode);
+
+constexpr int kMaxViewport = 16384;  // largest --width / --height
+
+struct RasterConfig {
+  int width = 1024;          // viewport width in pixels, 1..kMaxViewport
+  int height = 768;          // viewport height in pixels, 1..kMaxViewport
+  int subpixel_bits = 8;     // S: vertices snap to 1/2^S pixel, 0..8
+  int coord_int_bits = 16;   // signed integer bits of a coordinate: range [-2^15, 2^15) pixels
+  CullMode cull = CullMode::None;
+
+  // ---- the improved-Bresenham unit's hardware parameters ----
+  int box_bits = 14;         // unsigned bits of a box-relative pixel coordinate (box <= 2^box_bits)
+  BoundaryMode boundary = BoundaryMode::Step;
+
+  // Fractional bits used for the arithmetic: S, or 1 when S == 0 so that pixel centres
+  // (px + 0.5) stay integers (raster-rules.md, "S = 0").
+  int frac_bits() const { return subpixel_bits > 0 ? subpixel_bits : 1; }
+  // Multiplier from snapped S-bit vertex values to frac_bits() values (1, or 2 when S == 0).
+  int64_t snap_scale() const { return subpixel_bits > 0 ? 1 : 2; }
+  // One pixel in frac_bits() units.
+  int64_t unit() const { return int64_t(1) << frac_bits(); }
+  // Half a pixel in frac_bits() units (the offset of a pixel centre).
+  int64_t half() const { return int64_t(1) << (frac_bits() - 1); }
+  // Exclusive bound of |coordinate| in pixels: coordinates lie in [-limit, limit).
+  int64_t coord_limit_px() const { return int64_t(1) << (coord_int_bits - 1); }
+  // Signed bits of a vertex coordinate in frac_bits() units (p in raster-rules.md).
+  int vertex_bits() const { return coord_int_bits + frac_bits(); }
+
+  // Throws std::invalid_argument with a message naming the option when out of range.
+  void validate() const;
+};
+
+}  // namespace trirast

@@ -1,0 +1,55 @@
+// The one face every engine shows: set-up triangles and a configuration in, spans and work
+// statistics out. A new engine is one factory function and one line in engine_registry.cpp.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/config.hpp"
+#include "core/setup.hpp"
+#include "core/span.hpp"
+
+namespace trirast {
+
+// Per-triangle timing of a cycle-level engine (model, rtl, trad with cycles).
+struct TriangleCycles {
+  uint32_t tri;
+  uint64_t accept_cycle;
+  uint64_t first_span_cycle;
+  uint64_t done_cycle;
+  uint64_t spans;
+  uint64_t pixels;
+  uint64_t stall_cycles;
+};
+
+struct EngineResult {
+  SpanList spans;                      // in any order; callers sort with sort_spans()
+  std::map<std::string, uint64_t> work;  // stage work counters, e.g. "divider_iterations"
+  std::vector<TriangleCycles> cycles;  // empty for untimed engines
+  uint64_t total_cycles = 0;           // 0 for untimed engines
+};
+
+class Engine {
+ public:
+  virtual ~Engine() = default;
+  // Rasterizes every set-up triangle. Throws std::runtime_error (WidthError, ...) for a triangle
+  // the engine's configuration cannot hold; never emits wrong spans silently.
+  virtual void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) = 0;
+};
+
+struct EngineInfo {
+  std::string name;         // the --engine value
+  std::string description;  // one line for --help
+  bool exact;               // claims pixel-exact agreement with the golden rule
+  std::function<std::unique_ptr<Engine>()> make;
+};
+
+// All engines compiled into this build, in the order --help lists them.
+const std::vector<EngineInfo>& engine_registry();
+// Looks an engine up by name; nullptr when unknown.
+const EngineInfo* find_engine(const std::string& name);
+
+}  // namespace trirast

@@ -1,0 +1,22 @@
+// The list of engines. Adding an engine: declare its factory here and add one line below.
+#include "core/engine.hpp"
+
+namespace trirast {
+
+std::unique_ptr<Engine> make_golden_engine();
+
+const std::vector<EngineInfo>& engine_registry() {
+  static const std::vector<EngineInfo> engines = {
+      {"golden", "half-space rasterizer, the rule of raster-rules.md (the truth)", true,
+       make_golden_engine},
+  };
+  return engines;
+}
+
+const EngineInfo* find_engine(const std::string& name) {
+  for (const EngineInfo& e : engine_registry())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+}  // namespace trirast

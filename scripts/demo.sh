@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The front door: install what is missing, build, run the main job on a built-in scene and print
+# the report and where every output file went.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+./scripts/deps.sh
+./scripts/build.sh
+out=out/demo
+mkdir -p "$out"
+scene="builtin:mixed"
+echo "== trirast raster: the golden rasterizer on $scene"
+./build/trirast raster --engine golden --scene "$scene" \
+  --spans "$out/golden.spans" --image "$out/golden.png" --report "$out/golden.json"
+echo
+echo "== trirast compare: every engine against the golden on $scene"
+engines=$(./build/trirast engines | awk '{print $1}' | paste -sd, -)
+status=0
+./build/trirast compare --scene "$scene" --engines "$engines" \
+  --diff-image "$out/diff.png" --report "$out/compare.json" || status=$?
+echo
+echo "outputs in $out/:"
+ls -l "$out" | awk 'NR > 1 {print "  " $NF " (" $5 " bytes)"}'
+exit $status

@@ -1,0 +1,46 @@
+// Command-line options of one trirast subcommand: declared once, parsed strictly, and printed by
+// --help from the same declarations so the help cannot drift from what is accepted.
+#pragma once
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace trirast {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct OptionSpec {
+  std::string name;      // "--width"
+  std::string metavar;   // "W"; empty for a flag
+  std::string help;      // one line
+  std::string fallback;  // default shown in --help; empty when none
+};
+
+class Args {
+ public:
+  Args(std::string command, std::string synopsis, std::vector<OptionSpec> specs);
+  // Parses argv[first..argc). Throws UsageError("trirast CMD: ...") naming the bad option.
+  void parse(int argc, char** argv, int first);
+  bool help_requested() const { return help_; }
+  std::string help_text() const;
+
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  std::string get(const std::string& name) const;  // value or the declared default
+  // Strict integer in [lo, hi]; UsageError naming the option otherwise.
+  long get_int(const std::string& name, long lo, long hi) const;
+  double get_double(const std::string& name) const;
+  const std::string& command() const { return command_; }
+
+ private:
+  const OptionSpec* find(const std::string& name) const;
+  std::string command_, synopsis_;
+  std::vector<OptionSpec> specs_;
+  std::map<std::string, std::string> values_;
+  bool help_ = false;
+};
+
+}  // namespace trirast

@@ -1,0 +1,430 @@
+#include "cli/cli.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "cli/args.hpp"
+#include "core/engine.hpp"
+#include "core/fixed_point.hpp"
+#include "core/span_diff.hpp"
+#include "io/image.hpp"
+#include "io/json.hpp"
+#include "io/output_file.hpp"
+#include "io/spans_file.hpp"
+#include "scene/scene.hpp"
+
+namespace trirast {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Options every scene-consuming subcommand shares.
+std::vector<OptionSpec> scene_options() {
+  return {
+      {"--scene", "SCENE", "builtin:NAME[:k=v,...], a .tri file, or a mesh file (OBJ, PLY, STL, OFF, glTF, ...)", ""},
+      {"--width", "W", "viewport width in pixels, 1..16384", "1024"},
+      {"--height", "H", "viewport height in pixels, 1..16384", "768"},
+      {"--subpixel-bits", "S", "vertex snapping: 1/2^S pixel, 0..8", "8"},
+      {"--coord-bits", "N", "signed integer bits of a coordinate: range [-2^(N-1), 2^(N-1)) px", "16"},
+      {"--cull", "MODE", "none | back | front (front faces run counter-clockwise as seen on screen)", "none"},
+      {"--yaw", "DEG", "mesh camera: rotation about the up axis", "30"},
+      {"--pitch", "DEG", "mesh camera: elevation", "20"},
+      {"--distance", "R", "mesh camera: eye distance in bounding radii; 0 fits the viewport", "0"},
+      {"--fov", "DEG", "mesh camera: vertical field of view", "45"},
+      {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
+      {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
+  };
+}
+
+RasterConfig config_from(const Args& a) {
+  RasterConfig cfg;
+  cfg.width = int(a.get_int("--width", 1, kMaxViewport));
+  cfg.height = int(a.get_int("--height", 1, kMaxViewport));
+  cfg.subpixel_bits = int(a.get_int("--subpixel-bits", 0, 8));
+  cfg.coord_int_bits = int(a.get_int("--coord-bits", 2, 24));
+  cfg.box_bits = int(a.get_int("--box-bits", 1, 14));
+  try {
+    cfg.cull = parse_cull_mode(a.get("--cull"));
+    cfg.boundary = parse_boundary_mode(a.get("--boundary"));
+    cfg.validate();
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("trirast " + a.command() + ": " + e.what());
+  }
+  return cfg;
+}
+
+CameraOptions camera_from(const Args& a) {
+  CameraOptions cam;
+  cam.yaw_deg = a.get_double("--yaw");
+  cam.pitch_deg = a.get_double("--pitch");
+  cam.distance = a.get_double("--distance");
+  cam.fov_deg = a.get_double("--fov");
+  if (cam.fov_deg <= 0 || cam.fov_deg >= 180)
+    throw UsageError("trirast " + a.command() + ": --fov: must be between 0 and 180 degrees");
+  if (cam.distance < 0)
+    throw UsageError("trirast " + a.command() + ": --distance: must not be negative");
+  return cam;
+}
+
+struct LoadedScene {
+  Scene scene;
+  SetupResult setup;
+  double load_seconds = 0, setup_seconds = 0;
+};
+
+LoadedScene load_and_setup(const Args& a, const RasterConfig& cfg) {
+  if (!a.has("--scene")) throw UsageError("trirast " + a.command() + ": --scene is required");
+  LoadedScene ls;
+  auto t0 = Clock::now();
+  ls.scene = load_scene(a.get("--scene"), cfg, camera_from(a));
+  ls.load_seconds = seconds_since(t0);
+  t0 = Clock::now();
+  try {
+    ls.setup = setup_scene(ls.scene.tris, cfg);
+  } catch (const SetupError& e) {
+    // Name the file (and line) the bad triangle came from.
+    const std::string scene = a.get("--scene");
+    throw SceneError(e.line > 0 ? scene + ":" + std::to_string(e.line) + ": " + e.what()
+                                : scene + ": " + e.what());
+  }
+  ls.setup_seconds = seconds_since(t0);
+  return ls;
+}
+
+Json triangle_counts(const LoadedScene& ls) {
+  const SetupCounts& c = ls.setup.counts;
+  return Json::object()
+      .set("read", c.read)
+      .set("accepted", c.accepted)
+      .set("culled", c.culled)
+      .set("degenerate", c.degenerate)
+      .set("offscreen", c.offscreen)
+      .set("near_clipped", ls.scene.near_clipped)
+      .set("near_dropped", ls.scene.near_dropped)
+      .set("range_dropped", ls.scene.range_dropped);
+}
+
+Json config_json(const RasterConfig& cfg) {
+  return Json::object()
+      .set("width", cfg.width)
+      .set("height", cfg.height)
+      .set("subpixel_bits", cfg.subpixel_bits)
+      .set("coord_bits", cfg.coord_int_bits)
+      .set("cull", cull_mode_name(cfg.cull))
+      .set("box_bits", cfg.box_bits)
+      .set("boundary", boundary_mode_name(cfg.boundary));
+}
+
+const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd) {
+  const EngineInfo* info = find_engine(name);
+  if (!info) {
+    std::string known;
+    for (const EngineInfo& e : engine_registry()) known += (known.empty() ? "" : ", ") + e.name;
+    throw UsageError("trirast " + cmd + ": --engine: unknown engine '" + name + "' (known: " +
+                     known + ")");
+  }
+  return *info;
+}
+
+struct EngineRun {
+  const EngineInfo* info;
+  EngineResult result;
+  double seconds = 0;
+};
+
+EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const RasterConfig& cfg) {
+  EngineRun run{&info, {}, 0};
+  auto engine = info.make();
+  auto t0 = Clock::now();
+  engine->run(ls.setup, cfg, run.result);
+  run.seconds = seconds_since(t0);
+  sort_spans(run.result.spans);
+  return run;
+}
+
+Json work_json(const EngineResult& r) {
+  Json w = Json::object();
+  for (const auto& kv : r.work) w.set(kv.first, kv.second);
+  return w;
+}
+
+std::string engine_list_help() {
+  std::string s;
+  for (const EngineInfo& e : engine_registry()) s += (s.empty() ? "" : " | ") + e.name;
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+int cmd_raster(int argc, char** argv) {
+  auto specs = scene_options();
+  specs.insert(specs.begin(), {"--engine", "NAME", "engine: " + engine_list_help(), "golden"});
+  specs.push_back({"--spans", "FILE", "write spans: 'tri y x_begin x_end' per line, sorted", ""});
+  specs.push_back({"--image", "FILE.png", "write the viewport as PNG, a colour per triangle", ""});
+  specs.push_back({"--report", "FILE.json", "write the JSON report", ""});
+  Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
+  a.parse(argc, argv, 2);
+  if (a.help_requested()) {
+    std::cout << "Rasterize a scene with one engine and report spans, pixels and work.\n\n"
+              << a.help_text();
+    return 0;
+  }
+  const RasterConfig cfg = config_from(a);
+  const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster");
+  // Refuse unwritable outputs before the run, so a long run cannot fail at the end.
+  if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
+  if (a.has("--image")) check_output_path(a.get("--image"), "--image");
+  if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+
+  auto t0 = Clock::now();
+  LoadedScene ls = load_and_setup(a, cfg);
+  EngineRun run = run_engine(info, ls, cfg);
+  const int64_t pixels = count_pixels(run.result.spans);
+
+  Json report = Json::object();
+  report.set("engine", info.name)
+      .set("scene", a.get("--scene"))
+      .set("config", config_json(cfg))
+      .set("triangles", triangle_counts(ls))
+      .set("spans", uint64_t(run.result.spans.size()))
+      .set("pixels", pixels)
+      .set("work", work_json(run.result));
+  if (run.result.total_cycles) report.set("total_cycles", run.result.total_cycles);
+
+  if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");
+  if (a.has("--image"))
+    write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
+  report.set("wall_seconds", Json::object()
+                                 .set("load", ls.load_seconds)
+                                 .set("setup", ls.setup_seconds)
+                                 .set("engine", run.seconds)
+                                 .set("total", seconds_since(t0)));
+  if (a.has("--report")) {
+    OutputFile out(a.get("--report"), "--report");
+    out.write(report.dump());
+    out.commit();
+  }
+
+  const SetupCounts& c = ls.setup.counts;
+  std::printf("trirast raster: engine %s, scene %s, viewport %dx%d, S=%d\n", info.name.c_str(),
+              a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits);
+  std::printf("  triangles  %llu read, %llu accepted, %llu degenerate, %llu culled, %llu offscreen",
+              (unsigned long long)c.read, (unsigned long long)c.accepted,
+              (unsigned long long)c.degenerate, (unsigned long long)c.culled,
+              (unsigned long long)c.offscreen);
+  if (ls.scene.near_clipped || ls.scene.near_dropped || ls.scene.range_dropped)
+    std::printf(", %llu near-clipped, %llu near-dropped, %llu out of range",
+                (unsigned long long)ls.scene.near_clipped, (unsigned long long)ls.scene.near_dropped,
+                (unsigned long long)ls.scene.range_dropped);
+  std::printf("\n  coverage   %zu spans, %lld pixels\n", run.result.spans.size(), (long long)pixels);
+  for (const auto& kv : run.result.work)
+    std::printf("  work       %-28s %llu\n", kv.first.c_str(), (unsigned long long)kv.second);
+  if (run.result.total_cycles)
+    std::printf("  cycles     %llu\n", (unsigned long long)run.result.total_cycles);
+  std::printf("  time       %.3f s (load %.3f, setup %.3f, engine %.3f)\n", seconds_since(t0),
+              ls.load_seconds, ls.setup_seconds, run.seconds);
+  for (const char* opt : {"--spans", "--image", "--report"})
+    if (a.has(opt)) std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+std::vector<std::string> split_list(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ',')) out.push_back(item);
+  return out;
+}
+
+int cmd_compare(int argc, char** argv) {
+  auto specs = scene_options();
+  specs.insert(specs.begin(), {"--engines", "A,B,...", "engines to run against the golden: " +
+                                                           engine_list_help() +
+                                                           ", or file:SPANS for recorded spans", "golden"});
+  specs.push_back({"--diff-image", "FILE.png",
+                   "PNG of the first non-golden engine vs golden: grey agreed, red missing, blue extra", ""});
+  specs.push_back({"--report", "FILE.json", "write the comparison as JSON", ""});
+  Args a("compare", "--scene SCENE --engines A,B,... [options]", specs);
+  a.parse(argc, argv, 2);
+  if (a.help_requested()) {
+    std::cout << "Run engines on one scene and compare each with the golden pixel for pixel.\n"
+                 "Exit status 0 only if every exact engine (all but trad) agrees with the golden.\n\n"
+              << a.help_text();
+    return 0;
+  }
+  const RasterConfig cfg = config_from(a);
+  // "file:PATH" stands for spans recorded by another implementation (interchange format); it
+  // claims exactness, so any difference from the golden fails the comparison.
+  std::vector<EngineInfo> file_engines;
+  std::vector<std::string> names = split_list(a.get("--engines"));
+  for (const std::string& name : names)
+    if (name.rfind("file:", 0) == 0) file_engines.push_back({name, "recorded spans", true, nullptr});
+  std::vector<const EngineInfo*> engines;
+  size_t next_file = 0;
+  for (const std::string& name : names)
+    engines.push_back(name.rfind("file:", 0) == 0 ? &file_engines[next_file++]
+                                                   : &engine_or_throw(name, "compare"));
+  if (engines.empty()) throw UsageError("trirast compare: --engines: empty list");
+  if (a.has("--diff-image")) check_output_path(a.get("--diff-image"), "--diff-image");
+  if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+
+  LoadedScene ls = load_and_setup(a, cfg);
+  EngineRun golden = run_engine(*find_engine("golden"), ls, cfg);
+  const int64_t golden_pixels = count_pixels(golden.result.spans);
+
+  std::printf("trirast compare: scene %s, viewport %dx%d, S=%d, %llu triangles (%llu accepted)\n",
+              a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
+              (unsigned long long)ls.setup.counts.read, (unsigned long long)ls.setup.counts.accepted);
+  std::printf("  %-8s %6s %10s %12s %10s %10s %9s  %s\n", "engine", "exact", "spans", "pixels",
+              "missing", "extra", "seconds", "work");
+  bool all_exact_agree = true;
+  bool diff_written = false;
+  Json rows = Json::array();
+  for (const EngineInfo* info : engines) {
+    EngineRun run{info, {}, 0};
+    if (info->name == "golden") {
+      run = golden;
+    } else if (!info->make) {
+      run.result.spans = read_spans_file(info->name.substr(5));
+      sort_spans(run.result.spans);
+    } else {
+      run = run_engine(*info, ls, cfg);
+    }
+    const SpanDiff diff = diff_spans(golden.result.spans, run.result.spans);
+    const bool agrees = diff.exact();
+    if (info->exact && !agrees) all_exact_agree = false;
+    std::string work;
+    for (const auto& kv : run.result.work)
+      work += (work.empty() ? "" : " ") + kv.first + "=" + std::to_string(kv.second);
+    std::printf("  %-8s %6s %10zu %12lld %10lld %10lld %9.3f  %s%s\n", info->name.c_str(),
+                info->exact ? "yes" : "no", run.result.spans.size(),
+                (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
+                (long long)diff.extra_pixels, run.seconds, work.c_str(),
+                info->exact && !agrees ? "  <-- DISAGREES WITH GOLDEN" : "");
+    rows.push(Json::object()
+                  .set("engine", info->name)
+                  .set("claims_exact", info->exact)
+                  .set("spans", uint64_t(run.result.spans.size()))
+                  .set("pixels", count_pixels(run.result.spans))
+                  .set("missing_pixels", diff.missing_pixels)
+                  .set("extra_pixels", diff.extra_pixels)
+                  .set("agrees", agrees)
+                  .set("seconds", run.seconds)
+                  .set("work", work_json(run.result)));
+    if (a.has("--diff-image") && !diff_written && info->name != "golden") {
+      write_png(diff_image(golden.result.spans, diff, cfg.width, cfg.height), a.get("--diff-image"),
+                "--diff-image");
+      diff_written = true;
+      std::printf("  wrote %s (diff of %s against golden)\n", a.get("--diff-image").c_str(),
+                  info->name.c_str());
+    }
+  }
+  if (a.has("--diff-image") && !diff_written) {  // only golden was asked for: all grey
+    write_png(diff_image(golden.result.spans, SpanDiff{}, cfg.width, cfg.height),
+              a.get("--diff-image"), "--diff-image");
+    std::printf("  wrote %s\n", a.get("--diff-image").c_str());
+  }
+  if (a.has("--report")) {
+    OutputFile out(a.get("--report"), "--report");
+    out.write(Json::object()
+                  .set("scene", a.get("--scene"))
+                  .set("config", config_json(cfg))
+                  .set("triangles", triangle_counts(ls))
+                  .set("golden_pixels", golden_pixels)
+                  .set("engines", rows)
+                  .set("all_exact_agree", all_exact_agree)
+                  .dump());
+    out.commit();
+    std::printf("  wrote %s (report)\n", a.get("--report").c_str());
+  }
+  std::printf("  result: %s\n", all_exact_agree ? "every exact engine agrees with the golden"
+                                                 : "MISMATCH: an exact engine disagrees with the golden");
+  return all_exact_agree ? 0 : 1;
+}
+
+// ---------------------------------------------------------------------------------------------
+int cmd_scenes(int argc, char** argv) {
+  Args a("scenes", "", {});
+  a.parse(argc, argv, 2);
+  if (a.help_requested()) {
+    std::cout << "List the built-in scenes (use as --scene builtin:NAME[:key=value,...]).\n\n"
+              << a.help_text();
+    return 0;
+  }
+  for (const BuiltinInfo& b : builtin_scenes())
+    std::printf("%-22s %s\n", b.name.c_str(), b.description.c_str());
+  return 0;
+}
+
+int cmd_engines(int argc, char** argv) {
+  Args a("engines", "", {});
+  a.parse(argc, argv, 2);
+  if (a.help_requested()) {
+    std::cout << "List the engines compiled into this build.\n\n" << a.help_text();
+    return 0;
+  }
+  for (const EngineInfo& e : engine_registry())
+    std::printf("%-8s %-6s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
+                e.description.c_str());
+  return 0;
+}
+
+void print_usage() {
+  std::cout <<
+      "trirast: a cycle-level model of the improved-Bresenham triangle rasterization unit\n"
+      "\n"
+      "usage: trirast COMMAND [options]     (trirast COMMAND --help for its options)\n"
+      "\n"
+      "commands:\n"
+      "  raster    rasterize a scene with one engine; write spans, a PNG and a JSON report\n"
+      "  compare   run engines on a scene and compare them with the golden pixel for pixel\n"
+      "  scenes    list the built-in scenes\n"
+      "  engines   list the engines\n"
+      "\n"
+      "exit status: 0 success, 1 an exact engine disagrees with the golden, 2 bad input or usage\n";
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv) {
+  try {
+    if (argc < 2) {
+      print_usage();
+      return 2;
+    }
+    const std::string cmd = argv[1];
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      print_usage();
+      return 0;
+    }
+    if (cmd == "raster") return cmd_raster(argc, argv);
+    if (cmd == "compare") return cmd_compare(argc, argv);
+    if (cmd == "scenes") return cmd_scenes(argc, argv);
+    if (cmd == "engines") return cmd_engines(argc, argv);
+    throw UsageError("trirast: unknown command '" + cmd + "' (see trirast --help)");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+  } catch (const SceneError& e) {
+    std::fprintf(stderr, "trirast: %s\n", e.what());
+  } catch (const SetupError& e) {
+    std::fprintf(stderr, "trirast: %s\n", e.what());
+  } catch (const WidthError& e) {
+    std::fprintf(stderr, "trirast: %s\n", e.what());
+  } catch (const OutputError& e) {
+    std::fprintf(stderr, "trirast: %s\n", e.what());
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "trirast: out of memory\n");
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "trirast: %s\n", e.what());
+  }
+  return 2;
+}
+
+}  // namespace trirast

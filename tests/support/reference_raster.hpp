@@ -1,0 +1,37 @@
+// A deliberately simple, independent implementation of raster-rules.md, used only by tests to
+// check the engines: its own snapping, 128-bit edge functions from the vertices, a per-pixel test
+// of every pixel near the triangle. Slow and obvious on purpose.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "core/config.hpp"
+#include "core/setup.hpp"
+#include "core/span.hpp"
+
+namespace trirast::test {
+
+// Spans of every triangle of the scene, sorted, by the rule applied pixel by pixel.
+// Triangles that the rule gives no pixels (zero area, culled) produce nothing.
+SpanList reference_raster(const std::vector<InputTriangle>& tris, const RasterConfig& cfg);
+
+// Small deterministic PRNG for tests (splitmix64); no std distributions (implementation-defined).
+struct TestRng {
+  uint64_t state;
+  explicit TestRng(uint64_t seed) : state(seed) {}
+  uint64_t next() {
+    uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  // Uniform integer in [lo, hi].
+  int64_t range(int64_t lo, int64_t hi) { return lo + int64_t(next() % uint64_t(hi - lo + 1)); }
+};
+
+// Random triangles with vertices on the 1/2^grid_bits pixel grid within [lo, hi) pixels.
+std::vector<InputTriangle> random_grid_triangles(TestRng& rng, int count, double lo_x, double hi_x,
+                                                 double lo_y, double hi_y, int grid_bits,
+                                                 double max_size);
+
+}  // namespace trirast::test

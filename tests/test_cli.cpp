@@ -1,0 +1,196 @@
+// The trirast program as a user meets it: outputs, bad input, exit statuses, and a .tri file
+// written by an independent program checked against the D3D11 rule.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "support/run_command.hpp"
+
+namespace trirast {
+namespace {
+
+using test::CommandResult;
+using test::run_command;
+using test::TempDir;
+using test::write_file;
+
+const std::string kBin = TRIRAST_BIN;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+// A bad input: exit status 2, exactly one line on stderr containing `needle`, nothing on disk.
+void expect_one_line_error(const std::string& args, const std::string& needle, TempDir& dir) {
+  const std::string spans = dir.file("out.spans"), image = dir.file("out.png"),
+                    report = dir.file("out.json");
+  const int before = dir.entry_count();
+  CommandResult r = run_command(kBin + " " + args + " --spans " + spans + " --image " + image +
+                                " --report " + report);
+  EXPECT_EQ(r.status, 2) << args << "\nstderr: " << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << args << "\nstderr: " << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\nstderr: " << r.err
+                                                   << "\nexpected to contain: " << needle;
+  EXPECT_EQ(dir.entry_count(), before) << args << ": output files left behind";
+}
+
+TEST(CliBadInput, TriFiles) {
+  TempDir dir;
+  struct Case {
+    std::string name, content, needle;
+  };
+  const std::vector<Case> cases = {
+      {"empty.tri", "", "empty.tri"},
+      {"comments.tri", "# only a comment\n\n", "comments.tri"},
+      {"truncated.tri", "0 0 10 0 0 10\n1 2 3 4 5\n", "truncated.tri:2"},
+      {"text.tri", "0 0 10 0 0 10\n# fine\n0 0 abc 0 0 10\n", "text.tri:3"},
+      {"toomany.tri", "0 0 10 0 0 10 7\n", "toomany.tri:1"},
+      {"nan.tri", "0 0 10 0 0 10\nnan 0 10 0 0 10\n", "nan.tri:2"},
+      {"inf.tri", "0 0 10 0 inf 10\n", "inf.tri:1"},
+      {"huge.tri", "\n0 0 1e300 0 0 10\n", "huge.tri:2"},
+      {"overflow.tri", "0 0 1e999 0 0 10\n", "overflow.tri:1"},
+      {"outside.tri", "0 0 40000 0 0 10\n", "outside.tri:1"},
+      {"garbage.tri", std::string("\x7f\x45\x4c\x46\x02\x01\x00\x00\xff\xfe", 10), "garbage.tri"},
+  };
+  for (const Case& c : cases) {
+    write_file(dir.file(c.name), c.content);
+    expect_one_line_error("raster --scene " + dir.file(c.name), c.needle, dir);
+  }
+  expect_one_line_error("raster --scene " + dir.path(), dir.path(), dir);  // a directory
+  expect_one_line_error("raster --scene " + dir.file("missing.tri"), "missing.tri", dir);
+}
+
+TEST(CliBadInput, MeshFileThatIsNotAMesh) {
+  TempDir dir;
+  write_file(dir.file("fake.obj"), std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16));
+  expect_one_line_error("raster --scene " + dir.file("fake.obj"), "fake.obj", dir);
+  write_file(dir.file("fake.stl"), "this is not an STL file at all\n");
+  expect_one_line_error("raster --scene " + dir.file("fake.stl"), "fake.stl", dir);
+}
+
+TEST(CliBadInput, Options) {
+  TempDir dir;
+  const std::string scene = " --scene builtin:fan";
+  expect_one_line_error("raster" + scene + " --width 0", "--width", dir);
+  expect_one_line_error("raster" + scene + " --height 100000", "--height", dir);
+  expect_one_line_error("raster" + scene + " --width abc", "--width", dir);
+  expect_one_line_error("raster" + scene + " --subpixel-bits 9", "--subpixel-bits", dir);
+  expect_one_line_error("raster" + scene + " --frobnicate 3", "--frobnicate", dir);
+  expect_one_line_error("raster" + scene + " --engine nosuch", "nosuch", dir);
+  expect_one_line_error("raster" + scene + " --cull sideways", "--cull", dir);
+  expect_one_line_error("raster" + scene + " --fov 0", "--fov", dir);
+  expect_one_line_error("raster", "--scene", dir);
+  expect_one_line_error("raster --scene builtin:nosuchscene", "nosuchscene", dir);
+  expect_one_line_error("raster --scene builtin:fan:nosuchkey=1", "nosuchkey", dir);
+  expect_one_line_error("frobnicate", "frobnicate", dir);
+}
+
+TEST(CliBadInput, UnwritableOutputLeavesNothing) {
+  TempDir dir;
+  CommandResult r = run_command(kBin + " raster --scene builtin:fan --spans " + dir.file("x.spans") +
+                                " --image " + dir.file("no/such/dir/x.png"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--image"), std::string::npos) << r.err;
+  EXPECT_EQ(dir.entry_count(), 0);
+}
+
+TEST(Cli, HelpOnEverySubcommand) {
+  for (const std::string cmd : {"", "raster ", "compare ", "scenes ", "engines "}) {
+    CommandResult r = run_command(kBin + " " + cmd + "--help");
+    EXPECT_EQ(r.status, 0) << cmd;
+    EXPECT_NE(r.out.find("usage: trirast"), std::string::npos) << cmd << r.out;
+  }
+  // --help lists every option the parser accepts, with defaults.
+  CommandResult r = run_command(kBin + " raster --help");
+  for (const char* opt : {"--engine", "--scene", "--width", "--height", "--subpixel-bits", "--spans",
+                          "--image", "--report", "--cull", "--yaw", "--pitch", "--distance", "--fov"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST(Cli, RasterWritesSortedSpansImageAndReport) {
+  TempDir dir;
+  write_file(dir.file("two.tri"), "# two triangles\n10 10 50 12 20 40\n\n60.5 5 90 30 61 44 # tail\n");
+  CommandResult r = run_command(kBin + " raster --engine golden --scene " + dir.file("two.tri") +
+                                " --width 100 --height 50 --spans " + dir.file("s") + " --image " +
+                                dir.file("i.png") + " --report " + dir.file("r.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string spans = slurp(dir.file("s"));
+  ASSERT_GT(count_lines(spans), 10);
+  // Sorted by tri, then y; only "tri y x_begin x_end" lines; both triangles present.
+  std::istringstream in(spans);
+  long tri, y, b, e, last_tri = -1, last_y = -1;
+  bool seen[2] = {false, false};
+  while (in >> tri >> y >> b >> e) {
+    ASSERT_TRUE(tri > last_tri || (tri == last_tri && y > last_y));
+    ASSERT_LT(b, e);
+    seen[tri] = true;
+    last_tri = tri;
+    last_y = y;
+  }
+  EXPECT_TRUE(in.eof());
+  EXPECT_TRUE(seen[0] && seen[1]);
+  EXPECT_EQ(slurp(dir.file("i.png")).substr(1, 3), "PNG");
+  const std::string json = slurp(dir.file("r.json"));
+  for (const char* key : {"\"engine\": \"golden\"", "\"read\": 2", "\"culled\": 0", "\"degenerate\": 0",
+                          "\"spans\":", "\"pixels\":", "\"wall_seconds\""})
+    EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
+}
+
+// Acceptance (issue 2, item 5): a .tri file written by another program, with vertices on the
+// 1/256 grid inside the viewport, gives exactly the pixels of the D3D11 rule.
+TEST(Cli, IndependentD3D11ProgramAgrees) {
+  TempDir dir;
+  for (int seed : {1, 2, 3}) {
+    CommandResult gen = run_command("/usr/bin/python3 " TRIRAST_SOURCE_DIR
+                                    "/scripts/d3d11_reference.py " + dir.file("s.tri") + " " +
+                                    dir.file("expected.spans") + " --seed " + std::to_string(seed));
+    ASSERT_EQ(gen.status, 0) << gen.err;
+    CommandResult r = run_command(kBin + " raster --scene " + dir.file("s.tri") +
+                                  " --width 320 --height 240 --spans " + dir.file("got.spans"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string expected = slurp(dir.file("expected.spans"));
+    EXPECT_GT(count_lines(expected), 1000);
+    EXPECT_EQ(slurp(dir.file("got.spans")), expected) << "seed " << seed;
+    // The same through compare with the recorded spans as an engine.
+    CommandResult c = run_command(kBin + " compare --width 320 --height 240 --scene " +
+                                  dir.file("s.tri") + " --engines golden,file:" +
+                                  dir.file("expected.spans"));
+    EXPECT_EQ(c.status, 0) << c.out << c.err;
+  }
+}
+
+TEST(Cli, CompareExitStatusBothWays) {
+  TempDir dir;
+  write_file(dir.file("t.tri"), "10 10 50 12 20 40\n");
+  ASSERT_EQ(run_command(kBin + " raster --scene " + dir.file("t.tri") + " --spans " +
+                        dir.file("good.spans")).status, 0);
+  CommandResult ok = run_command(kBin + " compare --scene " + dir.file("t.tri") +
+                                 " --engines golden,file:" + dir.file("good.spans"));
+  EXPECT_EQ(ok.status, 0) << ok.out;
+  // One pixel removed from one span: an exact engine now disagrees -> exit 1.
+  std::string spans = slurp(dir.file("good.spans"));
+  std::istringstream in(spans);
+  std::string first;
+  std::getline(in, first);
+  long tri, y, b, e;
+  std::istringstream(first) >> tri >> y >> b >> e;
+  write_file(dir.file("bad.spans"), std::to_string(tri) + " " + std::to_string(y) + " " +
+                                        std::to_string(b + 1) + " " + std::to_string(e) + "\n" +
+                                        spans.substr(first.size() + 1));
+  CommandResult bad = run_command(kBin + " compare --scene " + dir.file("t.tri") +
+                                  " --engines golden,file:" + dir.file("bad.spans") +
+                                  " --diff-image " + dir.file("d.png"));
+  EXPECT_EQ(bad.status, 1) << bad.out;
+  EXPECT_NE(bad.out.find("DISAGREES"), std::string::npos) << bad.out;
+  EXPECT_TRUE(test::file_exists(dir.file("d.png")));
+}
+
+}  // namespace
+}  // namespace trirast

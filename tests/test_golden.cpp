@@ -1,0 +1,303 @@
+// The golden rasterizer against an independent per-pixel implementation of raster-rules.md, and
+// watertightness on closed configurations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/setup.hpp"
+#include "core/span_diff.hpp"
+#include "golden/golden.hpp"
+#include "support/reference_raster.hpp"
+#include "support/watertight.hpp"
+
+namespace trirast {
+namespace {
+
+using test::TestRng;
+
+SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
+  SpanList spans;
+  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, spans);
+  sort_spans(spans);
+  return spans;
+}
+
+// Golden spans must equal the reference's, span for span.
+void expect_matches_reference(const std::vector<InputTriangle>& tris, const RasterConfig& cfg) {
+  const SetupResult setup = setup_scene(tris, cfg);
+  const SpanList golden = golden_spans(setup, cfg);
+  const SpanList reference = test::reference_raster(tris, cfg);
+  const SpanDiff d = diff_spans(reference, golden);
+  ASSERT_TRUE(d.identical_spans) << d.missing_pixels << " missing, " << d.extra_pixels
+                                 << " extra pixels; first missing tri "
+                                 << (d.missing.empty() ? -1 : int64_t(d.missing[0].tri))
+                                 << ", first extra tri "
+                                 << (d.extra.empty() ? -1 : int64_t(d.extra[0].tri));
+  EXPECT_GT(count_pixels(golden), 0);
+}
+
+TEST(GoldenVsReference, RandomOnSubpixelGrid) {
+  TestRng rng(1);
+  RasterConfig cfg;  // 1024x768, S = 8
+  // Vertices on the 1/256 grid, some triangles straddling the viewport edges.
+  auto tris = test::random_grid_triangles(rng, 100000, -40, 1064, -40, 808, 8, 24);
+  expect_matches_reference(tris, cfg);
+}
+
+TEST(GoldenVsReference, RandomOnHalfPixelLattice) {
+  TestRng rng(2);
+  RasterConfig cfg;
+  // Vertices on the half-pixel lattice: pixel centres fall exactly on edges and vertices.
+  auto tris = test::random_grid_triangles(rng, 100000, -8, 1032, -8, 776, 1, 12);
+  expect_matches_reference(tris, cfg);
+}
+
+TEST(GoldenVsReference, LargeViewport4096) {
+  TestRng rng(3);
+  RasterConfig cfg;
+  cfg.width = cfg.height = 4096;
+  auto tris = test::random_grid_triangles(rng, 10000, -100, 4196, -100, 4196, 8, 160);
+  expect_matches_reference(tris, cfg);
+}
+
+TEST(GoldenVsReference, EverySubpixelPrecision) {
+  for (int s = 0; s <= 8; ++s) {
+    SCOPED_TRACE("subpixel bits " + std::to_string(s));
+    TestRng rng(10 + s);
+    RasterConfig cfg;
+    cfg.width = 256;
+    cfg.height = 192;
+    cfg.subpixel_bits = s;
+    // Arbitrary doubles (not on any grid): snapping itself is under test.
+    std::vector<InputTriangle> tris;
+    for (int n = 0; n < 5000; ++n) {
+      InputTriangle t;
+      for (int i = 0; i < 3; ++i) {
+        t.x[i] = double(rng.range(-2000, 27600)) / 100.0 + double(rng.next() % 1000) * 1e-6;
+        t.y[i] = double(rng.range(-2000, 21200)) / 100.0 + double(rng.next() % 1000) * 1e-6;
+      }
+      tris.push_back(t);
+    }
+    expect_matches_reference(tris, cfg);
+  }
+}
+
+TEST(GoldenVsReference, CullModes) {
+  TestRng rng(4);
+  auto tris = test::random_grid_triangles(rng, 5000, 0, 512, 0, 512, 8, 40);
+  for (CullMode m : {CullMode::None, CullMode::Back, CullMode::Front}) {
+    RasterConfig cfg;
+    cfg.cull = m;
+    SCOPED_TRACE(cull_mode_name(m));
+    expect_matches_reference(tris, cfg);
+  }
+  // Back and front culling split the accepted triangles between them.
+  RasterConfig back, front;
+  back.cull = CullMode::Back;
+  front.cull = CullMode::Front;
+  const auto sb = setup_scene(tris, back), sf = setup_scene(tris, front);
+  const auto sn = setup_scene(tris, RasterConfig{});
+  EXPECT_GT(sb.counts.accepted, 0u);
+  EXPECT_GT(sf.counts.accepted, 0u);
+  EXPECT_EQ(sb.counts.accepted + sf.counts.accepted, sn.counts.accepted);
+}
+
+TEST(GoldenVsReference, LargeCoordinatesAndNegative) {
+  TestRng rng(5);
+  RasterConfig cfg;
+  std::vector<InputTriangle> tris;
+  for (int n = 0; n < 2000; ++n) {
+    InputTriangle t;
+    // One vertex near the viewport, two far away near the +-32768 limit.
+    t.x[0] = double(rng.range(-256 * 50, 256 * 1070)) / 256;
+    t.y[0] = double(rng.range(-256 * 50, 256 * 810)) / 256;
+    for (int i = 1; i < 3; ++i) {
+      t.x[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
+      t.y[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
+    }
+    tris.push_back(t);
+  }
+  expect_matches_reference(tris, cfg);
+}
+
+// ---- watertightness ----------------------------------------------------------------------------
+
+InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
+  InputTriangle t;
+  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
+  return t;
+}
+
+double snap256(double v) { return std::nearbyint(v * 256) / 256; }
+
+void expect_watertight(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
+                       bool whole_screen) {
+  const SetupResult setup = setup_scene(tris, cfg);
+  const SpanList spans = golden_spans(setup, cfg);
+  const auto w = test::check_watertight(setup, spans, cfg);
+  EXPECT_EQ(w.doubled, 0) << w.first_problem;
+  EXPECT_EQ(w.holes, 0) << w.first_problem;
+  EXPECT_GT(w.covered, 0);
+  if (whole_screen) EXPECT_EQ(w.covered, int64_t(cfg.width) * cfg.height);
+}
+
+TEST(GoldenWatertight, FansAroundPixelCentre) {
+  RasterConfig cfg;
+  cfg.width = cfg.height = 128;
+  for (int n = 3; n <= 8; ++n)
+    for (int rot = 0; rot < 12; ++rot) {
+      SCOPED_TRACE("fan of " + std::to_string(n) + ", rotation " + std::to_string(rot));
+      const double cx = 64.5, cy = 63.5;  // a pixel centre: every triangle meets there
+      std::vector<InputTriangle> fan;
+      for (int k = 0; k < n; ++k) {
+        const double a0 = 2 * M_PI * k / n + rot * 0.13, a1 = 2 * M_PI * (k + 1) / n + rot * 0.13;
+        const double r = 40;
+        fan.push_back(tri(cx, cy, snap256(cx + r * std::cos(a0)), snap256(cy + r * std::sin(a0)),
+                          snap256(cx + r * std::cos(a1)), snap256(cy + r * std::sin(a1))));
+        if (k % 2) {  // mixed windings: coverage must not depend on it
+          std::swap(fan.back().x[1], fan.back().x[2]);
+          std::swap(fan.back().y[1], fan.back().y[2]);
+        }
+      }
+      expect_watertight(fan, cfg, false);
+    }
+}
+
+TEST(GoldenWatertight, RotatedQuadGrids) {
+  RasterConfig cfg;
+  cfg.width = cfg.height = 160;
+  for (int deg = 0; deg <= 90; deg += 5)
+    for (int diag = 0; diag < 2; ++diag) {
+      SCOPED_TRACE("angle " + std::to_string(deg) + ", diagonal " + std::to_string(diag));
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a), step = 9.37;
+      auto grid_point = [&](int i, int j, double& x, double& y) {
+        x = snap256(80 + (i - 4) * step * c - (j - 4) * step * s);
+        y = snap256(80 + (i - 4) * step * s + (j - 4) * step * c);
+      };
+      std::vector<InputTriangle> tris;
+      for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) {
+          double x00, y00, x10, y10, x01, y01, x11, y11;
+          grid_point(i, j, x00, y00);
+          grid_point(i + 1, j, x10, y10);
+          grid_point(i, j + 1, x01, y01);
+          grid_point(i + 1, j + 1, x11, y11);
+          if (diag == 0) {
+            tris.push_back(tri(x00, y00, x10, y10, x11, y11));
+            tris.push_back(tri(x00, y00, x11, y11, x01, y01));
+          } else {
+            tris.push_back(tri(x00, y00, x10, y10, x01, y01));
+            tris.push_back(tri(x10, y10, x11, y11, x01, y01));
+          }
+        }
+      expect_watertight(tris, cfg, false);
+    }
+}
+
+TEST(GoldenWatertight, WholeScreenCovers) {
+  RasterConfig cfg;
+  cfg.width = 200;
+  cfg.height = 150;
+  // Two triangles exactly on the viewport, both diagonals.
+  expect_watertight({tri(0, 0, 200, 0, 200, 150), tri(0, 0, 200, 150, 0, 150)}, cfg, true);
+  expect_watertight({tri(0, 0, 200, 0, 0, 150), tri(200, 0, 200, 150, 0, 150)}, cfg, true);
+  // A rotated square much larger than the screen, split on its diagonal, partly off-screen.
+  for (int deg = 0; deg < 90; deg += 7) {
+    SCOPED_TRACE("rotation " + std::to_string(deg));
+    const double a = deg * M_PI / 180, r = 600;
+    double x[4], y[4];
+    for (int k = 0; k < 4; ++k) {
+      x[k] = snap256(100 + r * std::cos(a + k * M_PI / 2));
+      y[k] = snap256(75 + r * std::sin(a + k * M_PI / 2));
+    }
+    expect_watertight({tri(x[0], y[0], x[1], y[1], x[2], y[2]), tri(x[0], y[0], x[2], y[2], x[3], y[3])},
+                      cfg, true);
+  }
+}
+
+TEST(GoldenWatertight, ManyTrianglesMeetingOnACentreVertex) {
+  RasterConfig cfg;
+  cfg.width = cfg.height = 64;
+  // 16 triangles around (32.5, 32.5): exactly one of them owns that centre.
+  std::vector<InputTriangle> tris;
+  for (int k = 0; k < 16; ++k) {
+    const double a0 = 2 * M_PI * k / 16, a1 = 2 * M_PI * (k + 1) / 16;
+    tris.push_back(tri(32.5, 32.5, snap256(32.5 + 20 * std::cos(a0)), snap256(32.5 + 20 * std::sin(a0)),
+                       snap256(32.5 + 20 * std::cos(a1)), snap256(32.5 + 20 * std::sin(a1))));
+  }
+  const SetupResult setup = setup_scene(tris, cfg);
+  const SpanList spans = golden_spans(setup, cfg);
+  int owners = 0;
+  for (const Span& s : spans)
+    if (s.y == 32 && s.x_begin <= 32 && 32 < s.x_end) ++owners;
+  EXPECT_EQ(owners, 1);
+  expect_watertight(tris, cfg, false);
+}
+
+// ---- setup -------------------------------------------------------------------------------------
+
+TEST(Setup, SnapsHalfwayToEven) {
+  RasterConfig cfg;
+  // 1/512 is exactly halfway between two 1/256 steps: ties go to the even step.
+  EXPECT_EQ(snap_coordinate(1.0 / 512, cfg, 0, 0), 0);
+  EXPECT_EQ(snap_coordinate(3.0 / 512, cfg, 0, 0), 2);
+  EXPECT_EQ(snap_coordinate(-1.0 / 512, cfg, 0, 0), 0);
+  EXPECT_EQ(snap_coordinate(-3.0 / 512, cfg, 0, 0), -2);
+  cfg.subpixel_bits = 0;  // whole pixels, doubled internally: 2.5 -> 2 -> 4, 3.5 -> 4 -> 8
+  EXPECT_EQ(snap_coordinate(2.5, cfg, 0, 0), 4);
+  EXPECT_EQ(snap_coordinate(3.5, cfg, 0, 0), 8);
+}
+
+TEST(Setup, RejectsNonFiniteAndOutOfRange) {
+  RasterConfig cfg;
+  EXPECT_THROW(snap_coordinate(std::nan(""), cfg, 3, 7), SetupError);
+  EXPECT_THROW(snap_coordinate(INFINITY, cfg, 3, 7), SetupError);
+  EXPECT_THROW(snap_coordinate(32768.0, cfg, 3, 7), SetupError);
+  EXPECT_THROW(snap_coordinate(1e300, cfg, 3, 7), SetupError);
+  EXPECT_NO_THROW(snap_coordinate(32767.99, cfg, 3, 7));
+  EXPECT_NO_THROW(snap_coordinate(-32768.0, cfg, 3, 7));
+  // 32767.999 rounds up to 32768 at 1/256: out of range after snapping.
+  EXPECT_THROW(snap_coordinate(32767.999, cfg, 3, 7), SetupError);
+  try {
+    snap_coordinate(std::nan(""), cfg, 3, 7);
+  } catch (const SetupError& e) {
+    EXPECT_EQ(e.tri, 3u);
+    EXPECT_EQ(e.line, 7);
+    EXPECT_NE(std::string(e.what()).find("line 7"), std::string::npos);
+  }
+}
+
+TEST(Setup, DegenerateAfterSnappingHasNoPixels) {
+  RasterConfig cfg;
+  // Distinct as floats, collinear after snapping to 1/256.
+  auto tris = std::vector<InputTriangle>{tri(10, 10, 20, 20.001, 30, 30),
+                                         tri(5, 5, 5, 5, 5, 5),
+                                         tri(1, 1, 1.0001, 9, 1, 17)};
+  const SetupResult s = setup_scene(tris, cfg);
+  EXPECT_EQ(s.counts.degenerate, 3u);
+  EXPECT_EQ(s.counts.accepted, 0u);
+}
+
+TEST(Setup, BoxHoldsCentresWithinTheVertexExtent) {
+  RasterConfig cfg;
+  TriangleSetup t;
+  const char* why;
+  // x extent [10.5, 20.5]: centres 10.5 .. 20.5 -> pixels 10..20 (both end centres on the extent).
+  ASSERT_TRUE(setup_triangle(tri(10.5, 10.5, 20.5, 10.5, 10.5, 30.2), 0, cfg, t, &why));
+  EXPECT_EQ(t.box.x0, 10);
+  EXPECT_EQ(t.box.x1, 20);
+  EXPECT_EQ(t.box.y0, 10);
+  EXPECT_EQ(t.box.y1, 29);
+  // Negative coordinates: floor, not truncation.
+  ASSERT_TRUE(setup_triangle(tri(-10.7, -3.2, 5.1, -3.2, -10.7, 4.0), 0, cfg, t, &why));
+  EXPECT_EQ(t.box.x0, 0);
+  EXPECT_EQ(t.box.x1, 4);
+  EXPECT_EQ(t.box.y0, 0);
+  EXPECT_EQ(t.box.y1, 3);
+  // Between two centres: empty box.
+  ASSERT_TRUE(setup_triangle(tri(10.6, 10.6, 11.4, 10.6, 10.6, 11.4), 0, cfg, t, &why));
+  EXPECT_TRUE(t.box.empty());
+}
+
+}  // namespace
+}  // namespace trirast
