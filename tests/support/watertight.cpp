@@ -36,6 +36,20 @@ WatertightResult check_watertight(const SetupResult& setup, const SpanList& span
   std::map<Key, int> uses;
   for (const TriangleSetup& t : setup.tris)
     for (int i = 0; i < 3; ++i) ++uses[edge_key(t.v[i], t.v[(i + 1) % 3])];
+  std::vector<std::pair<Vec2i, Vec2i>> boundary;
+  for (const auto& kv : uses)
+    if (kv.second == 1)
+      boundary.push_back({Vec2i{kv.first.first.first, kv.first.first.second},
+                          Vec2i{kv.first.second.first, kv.first.second.second}});
+  // A centre on any outer boundary edge (not only the edges of the triangle being scanned: a
+  // vertex of an interior triangle can sit on the outline) may stay uncovered.
+  auto on_outline = [&](int64_t x, int64_t y) {
+    for (const auto& [a, b] : boundary) {
+      const int64_t cross = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
+      if (cross == 0 && within_segment(a, b, x, y)) return true;
+    }
+    return false;
+  };
 
   for (int32_t py = 0; py < cfg.height; ++py)
     for (int32_t px = 0; px < cfg.width; ++px) {
@@ -62,14 +76,7 @@ WatertightResult check_watertight(const SetupResult& setup, const SpanList& span
           closed_inside = closed_inside && e[i] >= 0;
         }
         if (!closed_inside) continue;
-        bool on_outer_boundary = false;
-        for (int i = 0; i < 3; ++i) {
-          const Vec2i& a = t.v[i];
-          const Vec2i& b = t.v[(i + 1) % 3];
-          if (e[i] == 0 && within_segment(a, b, cx, cy) && uses[edge_key(a, b)] == 1)
-            on_outer_boundary = true;
-        }
-        if (on_outer_boundary) continue;
+        if (on_outline(cx, cy)) continue;
         ++r.holes;
         count[size_t(py) * cfg.width + px] = 255;  // count each hole once
         if (r.first_problem.empty())
