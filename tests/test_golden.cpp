@@ -35,7 +35,9 @@ void expect_matches_reference(const std::vector<InputTriangle>& tris, const Rast
                                  << (d.missing.empty() ? -1 : int64_t(d.missing[0].tri))
                                  << ", first extra tri "
                                  << (d.extra.empty() ? -1 : int64_t(d.extra[0].tri));
-  if (expect_pixels) EXPECT_GT(count_pixels(golden), 0);
+  if (expect_pixels) {
+    EXPECT_GT(count_pixels(golden), 0);
+  }
 }
 
 TEST(GoldenVsReference, RandomOnSubpixelGrid) {
@@ -140,7 +142,9 @@ void expect_watertight(const std::vector<InputTriangle>& tris, const RasterConfi
   EXPECT_EQ(w.doubled, 0) << w.first_problem;
   EXPECT_EQ(w.holes, 0) << w.first_problem;
   EXPECT_GT(w.covered, 0);
-  if (whole_screen) EXPECT_EQ(w.covered, int64_t(cfg.width) * cfg.height);
+  if (whole_screen) {
+    EXPECT_EQ(w.covered, int64_t(cfg.width) * cfg.height);
+  }
 }
 
 TEST(GoldenWatertight, FansAroundPixelCentre) {

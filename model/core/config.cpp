@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "core/sink_pattern.hpp"
+
 namespace trirast {
 
 CullMode parse_cull_mode(const std::string& text) {
@@ -43,10 +45,23 @@ void RasterConfig::validate() const {
   if (coord_int_bits < 2 || coord_int_bits > 24)
     throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) +
                                 " is outside 2..24");
+  // Edge values need 2p + 2 bits with p = coord_int_bits + frac_bits (raster-rules.md); they are
+  // computed in int64, so p may not exceed 30.
+  if (coord_int_bits + frac_bits() > 30)
+    throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) + " with " +
+                                std::to_string(subpixel_bits) +
+                                " subpixel bits needs edge values wider than 63 bits (at most " +
+                                std::to_string(30 - frac_bits()) + ")");
   if (coord_limit_px() < width || coord_limit_px() < height)
     throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) +
                                 " bits cannot hold a " + std::to_string(width) + "x" +
                                 std::to_string(height) + " viewport");
+  if (endpoints != 1 && endpoints != 2 && endpoints != 4)
+    throw std::invalid_argument("--endpoints: " + std::to_string(endpoints) + " is not 1, 2 or 4");
+  if (fifo_depth < endpoints || fifo_depth > 1024)
+    throw std::invalid_argument("--fifo-depth: " + std::to_string(fifo_depth) + " is outside " +
+                                std::to_string(endpoints) + "..1024 (at least --endpoints)");
+  SinkPattern::parse(sink_stall);  // throws with a message naming --sink-stall
   if (box_bits < 1 || box_bits > 14)
     throw std::invalid_argument("--box-bits: " + std::to_string(box_bits) + " is outside 1..14");
 }

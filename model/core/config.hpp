@@ -32,6 +32,16 @@ struct RasterConfig {
   int box_bits = 14;         // unsigned bits of a box-relative pixel coordinate (box <= 2^box_bits)
   BoundaryMode boundary = BoundaryMode::Step;
 
+  // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
+  int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)
+  int fifo_depth = 8;               // span FIFO entries (>= endpoints)
+  std::string sink_stall = "none";  // sink ready pattern (core/sink_pattern.hpp)
+
+  // ---- traces of the cycle-level engines ----
+  std::string trace_path;           // empty: no trace
+  int64_t trace_first = 0;          // record only triangles trace_first..trace_last (scene
+  int64_t trace_last = -1;          // indices); trace_last < 0: to the end
+
   // Fractional bits used for the arithmetic: S, or 1 when S == 0 so that pixel centres
   // (px + 0.5) stay integers (raster-rules.md, "S = 0").
   int frac_bits() const { return subpixel_bits > 0 ? subpixel_bits : 1; }

@@ -4,11 +4,14 @@
 namespace trirast {
 
 std::unique_ptr<Engine> make_golden_engine();
+std::unique_ptr<Engine> make_unit_engine();
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> engines = {
       {"golden", "half-space rasterizer, the rule of raster-rules.md (the truth)", true,
        make_golden_engine},
+      {"unit", "improved-Bresenham unit, bit-accurate datapath model (docs/unit.md)", true,
+       make_unit_engine},
   };
   return engines;
 }

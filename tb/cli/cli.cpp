@@ -12,6 +12,7 @@
 #include "io/image.hpp"
 #include "io/json.hpp"
 #include "io/output_file.hpp"
+#include "io/cycles_file.hpp"
 #include "io/spans_file.hpp"
 #include "scene/scene.hpp"
 
@@ -40,6 +41,9 @@ std::vector<OptionSpec> scene_options() {
       {"--fov", "DEG", "mesh camera: vertical field of view", "45"},
       {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
       {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
+      {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
+      {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
+      {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:R:S | random:SEED:P", "none"},
   };
 }
 
@@ -50,6 +54,9 @@ RasterConfig config_from(const Args& a) {
   cfg.subpixel_bits = int(a.get_int("--subpixel-bits", 0, 8));
   cfg.coord_int_bits = int(a.get_int("--coord-bits", 2, 24));
   cfg.box_bits = int(a.get_int("--box-bits", 1, 14));
+  cfg.endpoints = int(a.get_int("--endpoints", 1, 4));
+  cfg.fifo_depth = int(a.get_int("--fifo-depth", 1, 1024));
+  cfg.sink_stall = a.get("--sink-stall");
   try {
     cfg.cull = parse_cull_mode(a.get("--cull"));
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
@@ -119,7 +126,10 @@ Json config_json(const RasterConfig& cfg) {
       .set("coord_bits", cfg.coord_int_bits)
       .set("cull", cull_mode_name(cfg.cull))
       .set("box_bits", cfg.box_bits)
-      .set("boundary", boundary_mode_name(cfg.boundary));
+      .set("boundary", boundary_mode_name(cfg.boundary))
+      .set("endpoints", cfg.endpoints)
+      .set("fifo_depth", cfg.fifo_depth)
+      .set("sink_stall", cfg.sink_stall);
 }
 
 const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd) {
@@ -168,6 +178,9 @@ int cmd_raster(int argc, char** argv) {
   specs.push_back({"--spans", "FILE", "write spans: 'tri y x_begin x_end' per line, sorted", ""});
   specs.push_back({"--image", "FILE.png", "write the viewport as PNG, a colour per triangle", ""});
   specs.push_back({"--report", "FILE.json", "write the JSON report", ""});
+  specs.push_back({"--cycles", "FILE.csv", "timed engines: per-triangle cycles (docs/timing.md)", ""});
+  specs.push_back({"--trace", "FILE", "timed engines: waveform trace (.vcd; the rtl engine also .fst)", ""});
+  specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -175,8 +188,23 @@ int cmd_raster(int argc, char** argv) {
               << a.help_text();
     return 0;
   }
-  const RasterConfig cfg = config_from(a);
+  RasterConfig cfg = config_from(a);
   const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster");
+  if (a.has("--trace")) {
+    check_output_path(a.get("--trace"), "--trace");
+    cfg.trace_path = a.get("--trace");
+  }
+  if (a.has("--trace-tris")) {
+    const std::string w = a.get("--trace-tris");
+    long long first = -1, last = -1;
+    char extra = 0;
+    if (std::sscanf(w.c_str(), "%lld:%lld%c", &first, &last, &extra) != 2 || first < 0 ||
+        last < first)
+      throw UsageError("trirast raster: --trace-tris: expected A:B with 0 <= A <= B, got '" + w + "'");
+    cfg.trace_first = first;
+    cfg.trace_last = last;
+  }
+  if (a.has("--cycles")) check_output_path(a.get("--cycles"), "--cycles");
   // Refuse unwritable outputs before the run, so a long run cannot fail at the end.
   if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
   if (a.has("--image")) check_output_path(a.get("--image"), "--image");
@@ -197,6 +225,11 @@ int cmd_raster(int argc, char** argv) {
       .set("work", work_json(run.result));
   if (run.result.total_cycles) report.set("total_cycles", run.result.total_cycles);
 
+  if (a.has("--cycles")) {
+    if (run.result.cycles.empty() && !ls.setup.tris.empty())
+      throw UsageError("trirast raster: --cycles: engine '" + info.name + "' is not timed");
+    write_cycles_file(run.result.cycles, a.get("--cycles"), "--cycles");
+  }
   if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");
   if (a.has("--image"))
     write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
@@ -229,7 +262,7 @@ int cmd_raster(int argc, char** argv) {
     std::printf("  cycles     %llu\n", (unsigned long long)run.result.total_cycles);
   std::printf("  time       %.3f s (load %.3f, setup %.3f, engine %.3f)\n", seconds_since(t0),
               ls.load_seconds, ls.setup_seconds, run.seconds);
-  for (const char* opt : {"--spans", "--image", "--report"})
+  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
     if (a.has(opt)) std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
   return 0;
 }

@@ -1,0 +1,44 @@
+#include "unit/adder_divider.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace trirast {
+
+AdderDivider::AdderDivider(int quotient_bits, int numerator_bits, int divisor_bits)
+    : q_bits_(quotient_bits), n_bits_(numerator_bits), d_bits_(divisor_bits) {
+  // The shifted divisor d << (Q-1) and the numerator must both fit the int64 model.
+  if (q_bits_ < 1 || n_bits_ > 63 || d_bits_ + q_bits_ > 62)
+    throw std::invalid_argument("AdderDivider: widths too large for the model");
+}
+
+AdderDivider::AdderDivider(const RasterConfig& cfg)
+    : AdderDivider(unit_widths(cfg).quotient, unit_widths(cfg).numerator,
+                   unit_widths(cfg).remainder) {}
+
+DivideResult AdderDivider::divide(int64_t n, int64_t d, uint32_t tri, const char* what) const {
+  // Ports: an unsigned numerator and a positive divisor of the configured widths.
+  check_unsigned(n, n_bits_, tri, what, "divider numerator");
+  check_unsigned(d, d_bits_, tri, what, "divider divisor");
+  if (d == 0)
+    throw std::invalid_argument("triangle " + std::to_string(tri) + ": " + what +
+                                ": division by zero");
+  DivideResult res{};
+  // Saturation: the quotient needs more than Q bits iff n >> Q >= d (a compare, no divide).
+  res.saturated = (n >> q_bits_) >= d;
+  // Restoring division, MSB first: bit k of q is set when d << k fits the partial remainder.
+  int64_t rem = n;
+  int64_t q = 0;
+  for (int k = q_bits_ - 1; k >= 0; --k) {
+    const int64_t trial = rem - (d << k);  // the adder: partial remainder minus shifted divisor
+    const bool fits = trial >= 0;          // its sign bit is the quotient bit (inverted)
+    if (fits) rem = trial;                 // restore (keep rem) when it did not fit
+    q = (q << 1) | (fits ? 1 : 0);
+    ++res.iterations;
+  }
+  res.quotient = q;
+  res.remainder = rem;
+  return res;
+}
+
+}  // namespace trirast
