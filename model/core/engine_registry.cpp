@@ -5,6 +5,7 @@ namespace trirast {
 
 std::unique_ptr<Engine> make_golden_engine();
 std::unique_ptr<Engine> make_unit_engine();
+std::unique_ptr<Engine> make_trad_engine();
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> engines = {
@@ -12,6 +13,9 @@ const std::vector<EngineInfo>& engine_registry() {
        make_golden_engine},
       {"unit", "improved-Bresenham unit, bit-accurate datapath model (docs/unit.md)", true,
        make_unit_engine},
+      {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1): integer vertices, edge lines, "
+               "row fill; its own coverage, not the rule",
+       false, make_trad_engine},
   };
   return engines;
 }

@@ -282,7 +282,7 @@ int cmd_compare(int argc, char** argv) {
                                                            engine_list_help() +
                                                            ", or file:SPANS for recorded spans", "golden"});
   specs.push_back({"--diff-image", "FILE.png",
-                   "PNG of the first non-golden engine vs golden: grey agreed, red missing, blue extra", ""});
+                   "PNG of the first engine that differs from golden (else the first non-golden one): grey agreed, red missing, blue extra", ""});
   specs.push_back({"--report", "FILE.json", "write the comparison as JSON", ""});
   Args a("compare", "--scene SCENE --engines A,B,... [options]", specs);
   a.parse(argc, argv, 2);
@@ -318,7 +318,9 @@ int cmd_compare(int argc, char** argv) {
   std::printf("  %-8s %6s %10s %12s %10s %10s %9s  %s\n", "engine", "exact", "spans", "pixels",
               "missing", "extra", "seconds", "work");
   bool all_exact_agree = true;
-  bool diff_written = false;
+  std::string diff_engine;  // the engine shown in --diff-image
+  bool diff_agrees = true;
+  SpanDiff diff_for_image;
   Json rows = Json::array();
   for (const EngineInfo* info : engines) {
     EngineRun run{info, {}, 0};
@@ -351,18 +353,19 @@ int cmd_compare(int argc, char** argv) {
                   .set("agrees", agrees)
                   .set("seconds", run.seconds)
                   .set("work", work_json(run.result)));
-    if (a.has("--diff-image") && !diff_written && info->name != "golden") {
-      write_png(diff_image(golden.result.spans, diff, cfg.width, cfg.height), a.get("--diff-image"),
-                "--diff-image");
-      diff_written = true;
-      std::printf("  wrote %s (diff of %s against golden)\n", a.get("--diff-image").c_str(),
-                  info->name.c_str());
+    // The diff image shows the first engine that differs from the golden, or else the first
+    // engine other than the golden.
+    if (info->name != "golden" && (diff_engine.empty() || (!agrees && diff_agrees))) {
+      diff_engine = info->name;
+      diff_agrees = agrees;
+      diff_for_image = diff;
     }
   }
-  if (a.has("--diff-image") && !diff_written) {  // only golden was asked for: all grey
-    write_png(diff_image(golden.result.spans, SpanDiff{}, cfg.width, cfg.height),
+  if (a.has("--diff-image")) {
+    write_png(diff_image(golden.result.spans, diff_for_image, cfg.width, cfg.height),
               a.get("--diff-image"), "--diff-image");
-    std::printf("  wrote %s\n", a.get("--diff-image").c_str());
+    std::printf("  wrote %s (%s against golden: grey agreed, red missing, blue extra)\n",
+                a.get("--diff-image").c_str(), diff_engine.empty() ? "golden" : diff_engine.c_str());
   }
   if (a.has("--report")) {
     OutputFile out(a.get("--report"), "--report");

@@ -38,8 +38,9 @@ RgbImage coverage_image(const SpanList& spans, int width, int height) {
 RgbImage diff_image(const SpanList& golden, const SpanDiff& diff, int width, int height) {
   RgbImage img(width, height);
   for (const Span& s : golden) img.fill_span(s, 128, 128, 128);
-  for (const Span& s : diff.missing) img.fill_span(s, 230, 30, 30);
+  // Extra first, missing last: a baseline's extra pixels are common and must not hide a miss.
   for (const Span& s : diff.extra) img.fill_span(s, 40, 90, 255);
+  for (const Span& s : diff.missing) img.fill_span(s, 230, 30, 30);
   return img;
 }
 
