@@ -6,6 +6,7 @@ namespace trirast {
 std::unique_ptr<Engine> make_golden_engine();
 std::unique_ptr<Engine> make_unit_engine();
 std::unique_ptr<Engine> make_trad_engine();
+std::unique_ptr<Engine> make_float_scanline_engine();
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> engines = {
@@ -16,6 +17,9 @@ const std::vector<EngineInfo>& engine_registry() {
       {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1): integer vertices, edge lines, "
                "row fill; its own coverage, not the rule",
        false, make_trad_engine},
+      {"float-scanline", "float scanline of seed 002, top-left via ceil(x - 0.5): a CPU baseline, "
+                         "not exact",
+       false, make_float_scanline_engine},
   };
   return engines;
 }

@@ -6,9 +6,11 @@
 #include <sstream>
 
 #include "cli/args.hpp"
+#include "cli/commands.hpp"
 #include "core/engine.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
+#include "golden/golden.hpp"
 #include "io/image.hpp"
 #include "io/json.hpp"
 #include "io/output_file.hpp"
@@ -39,6 +41,8 @@ std::vector<OptionSpec> scene_options() {
       {"--pitch", "DEG", "mesh camera: elevation", "20"},
       {"--distance", "R", "mesh camera: eye distance in bounding radii; 0 fits the viewport", "0"},
       {"--fov", "DEG", "mesh camera: vertical field of view", "45"},
+      {"--traversal", "NAME", "golden traversal: simple | incremental | block | adaptive | bisector | sat-block | window | scanline | auto", "auto"},
+      {"--threads", "N", "golden threads (0 = all cores)", "1"},
       {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
       {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
       {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
@@ -149,9 +153,29 @@ struct EngineRun {
   double seconds = 0;
 };
 
-EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const RasterConfig& cfg) {
+// Golden options (--traversal, --threads) of a command; other engines ignore them.
+struct GoldenOptions {
+  Traversal traversal = Traversal::Auto;
+  int threads = 1;
+};
+
+GoldenOptions golden_options_from(const Args& a) {
+  GoldenOptions g;
+  try {
+    g.traversal = parse_traversal(a.get("--traversal"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError("trirast " + a.command() + ": " + e.what());
+  }
+  g.threads = int(a.get_int("--threads", 0, 256));
+  return g;
+}
+
+EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const RasterConfig& cfg,
+                     const GoldenOptions& golden_options) {
   EngineRun run{&info, {}, 0};
-  auto engine = info.make();
+  auto engine = info.name == "golden"
+                    ? make_golden_engine(golden_options.traversal, golden_options.threads)
+                    : info.make();
   auto t0 = Clock::now();
   engine->run(ls.setup, cfg, run.result);
   run.seconds = seconds_since(t0);
@@ -212,7 +236,7 @@ int cmd_raster(int argc, char** argv) {
 
   auto t0 = Clock::now();
   LoadedScene ls = load_and_setup(a, cfg);
-  EngineRun run = run_engine(info, ls, cfg);
+  EngineRun run = run_engine(info, ls, cfg, golden_options_from(a));
   const int64_t pixels = count_pixels(run.result.spans);
 
   Json report = Json::object();
@@ -309,13 +333,14 @@ int cmd_compare(int argc, char** argv) {
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
 
   LoadedScene ls = load_and_setup(a, cfg);
-  EngineRun golden = run_engine(*find_engine("golden"), ls, cfg);
+  const GoldenOptions golden_options = golden_options_from(a);
+  EngineRun golden = run_engine(*find_engine("golden"), ls, cfg, golden_options);
   const int64_t golden_pixels = count_pixels(golden.result.spans);
 
   std::printf("trirast compare: scene %s, viewport %dx%d, S=%d, %llu triangles (%llu accepted)\n",
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
               (unsigned long long)ls.setup.counts.read, (unsigned long long)ls.setup.counts.accepted);
-  std::printf("  %-8s %6s %10s %12s %10s %10s %9s  %s\n", "engine", "exact", "spans", "pixels",
+  std::printf("  %-14s %6s %10s %12s %10s %10s %9s  %s\n", "engine", "exact", "spans", "pixels",
               "missing", "extra", "seconds", "work");
   bool all_exact_agree = true;
   std::string diff_engine;  // the engine shown in --diff-image
@@ -330,7 +355,7 @@ int cmd_compare(int argc, char** argv) {
       run.result.spans = read_spans_file(info->name.substr(5));
       sort_spans(run.result.spans);
     } else {
-      run = run_engine(*info, ls, cfg);
+      run = run_engine(*info, ls, cfg, golden_options);
     }
     const SpanDiff diff = diff_spans(golden.result.spans, run.result.spans);
     const bool agrees = diff.exact();
@@ -338,7 +363,7 @@ int cmd_compare(int argc, char** argv) {
     std::string work;
     for (const auto& kv : run.result.work)
       work += (work.empty() ? "" : " ") + kv.first + "=" + std::to_string(kv.second);
-    std::printf("  %-8s %6s %10zu %12lld %10lld %10lld %9.3f  %s%s\n", info->name.c_str(),
+    std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
                 (long long)diff.extra_pixels, run.seconds, work.c_str(),
@@ -407,7 +432,7 @@ int cmd_engines(int argc, char** argv) {
     return 0;
   }
   for (const EngineInfo& e : engine_registry())
-    std::printf("%-8s %-6s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
+    std::printf("%-15s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
                 e.description.c_str());
   return 0;
 }
@@ -423,6 +448,7 @@ void print_usage() {
       "  compare   run engines on a scene and compare them with the golden pixel for pixel\n"
       "  scenes    list the built-in scenes\n"
       "  engines   list the engines\n"
+      "  fuzz      random scenes through several engines; a disagreement becomes a .tri reproducer\n"
       "\n"
       "exit status: 0 success, 1 an exact engine disagrees with the golden, 2 bad input or usage\n";
 }
@@ -444,6 +470,7 @@ int run_cli(int argc, char** argv) {
     if (cmd == "compare") return cmd_compare(argc, argv);
     if (cmd == "scenes") return cmd_scenes(argc, argv);
     if (cmd == "engines") return cmd_engines(argc, argv);
+    if (cmd == "fuzz") return cmd_fuzz(argc, argv);
     throw UsageError("trirast: unknown command '" + cmd + "' (see trirast --help)");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "%s\n", e.what());

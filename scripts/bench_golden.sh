@@ -1,0 +1,137 @@
+#!/usr/bin/env bash
+# Measures the golden traversals (tb/bench_golden.cpp) and writes docs/golden-performance.md:
+# seed 000's Table 1 shape (speed-up of each traversal over `simple` per scene type, the paper's
+# figures beside ours), triangles and pixels per second, thread scaling, and the issue's targets.
+# All ratios come from one run of one program (the machine is shared and noisy).
+# Usage: scripts/bench_golden.sh [extra Google Benchmark flags, e.g. --benchmark_min_time=0.1]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j2 --target bench_golden >/dev/null
+json=build/bench_golden.json
+./build/bench_golden --benchmark_out="$json" --benchmark_out_format=json "$@" >/dev/null
+python3 - "$json" "scripts/bench_golden.sh $*" >docs/golden-performance.md.tmp <<'PY'
+import json, sys
+data = json.load(open(sys.argv[1]))
+command = sys.argv[2].strip()
+rows = {}
+for b in data["benchmarks"]:
+    name = b["name"].split("/min_time")[0]
+    rows[name] = b
+def get(kind, scene, trav, threads=None):
+    key = f"{kind}/{scene}/{trav}" + (f"/{threads}" if threads else "")
+    return rows[key]
+travs = ["simple", "incremental", "block", "adaptive", "bisector", "sat-block", "window", "scanline", "auto"]
+cases = [("C1", "lowpoly-far", "low poly, far"), ("C2", "lowpoly-near", "low poly, near (80% of screen)"),
+         ("C3", "highpoly-far", "high poly, far"), ("C4", "highpoly-near", "high poly, whole screen"),
+         ("C5", "mixed", "mixed small and large")]
+paper = {"C1": [112, 294, 456, 506, 517], "C2": [58, 165, 552, 552, 564], "C3": [60, 67, 51, 67, 69],
+         "C4": [23, 37, 35, 40, 45], "C5": [69, 97, 106, 125, 132]}
+def t(scene, trav):
+    return get("traversal", scene, trav)["real_time"]
+ctx = data["context"]
+out = []
+w = out.append
+w("# Golden traversal performance\n")
+w("Made by `" + command + "` (tb/bench_golden.cpp, Google Benchmark) on " + ctx.get("date", "?") +
+  f", {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, a shared and noisy machine: "
+  "compare ratios within this one run, not absolute times across runs. Viewport 1024x768, S = 8, "
+  "no culling. Times cover the traversal of already set-up triangles (setup is common to every "
+  "engine and measured on its own below); every traversal produces identical spans "
+  "(tests/test_golden_variants.cpp).\n")
+w("## Speed-up over `simple`, in the shape of seed 000's Table 1\n")
+w("The paper (000, Table 1) gives frames per second of a full pipeline (z-buffer, shading) on an "
+  "i7-870; we give the traversal alone. Both are shown as speed-up over the simple rasterizer, "
+  "paper first, ours second. The paper's last column is its adaptive model combined with the "
+  "bisector; our `bisector` runs the bisector block walk on every triangle.\n")
+w("| Case | Scene | Simple | Incremental | Block | Adaptive | Bisector (paper: adaptive+bisector) | sat-block | window | scanline | auto |")
+w("|---|---|---|---|---|---|---|---|---|---|---|")
+def ratio_row(code, scene, label):
+    base = t(scene, "simple")
+    ours = [base / t(scene, x) for x in travs]
+    p = paper.get(code)
+    cells = []
+    for i, x in enumerate(travs):
+        if p and i < 5:
+            cells.append(f"{p[i] / p[0]:.2f} / **{ours[i]:.2f}**")
+        else:
+            cells.append(f"**{ours[i]:.2f}**")
+    w(f"| {code} | `{scene}` ({label}) | " + " | ".join(cells) + " |")
+for code, scene, label in cases:
+    ratio_row(code, scene, label)
+for scene, label in [("sphere", "mesh"), ("torus", "mesh"), ("tri10", "10-pixel triangles"), ("large", "large triangles")]:
+    ratio_row("-", scene, label)
+w("\nThe paper's Table 1 in frames per second (quoted from 000_5c8a4b93fc256fe1.txt):\n")
+w("| Case | Simple | Incremental | Block-based | Adaptive | Adaptive and Bisector |")
+w("|---|---|---|---|---|---|")
+for code in ["C1", "C2", "C3", "C4", "C5"]:
+    w(f"| {code} | " + " | ".join(str(v) for v in paper[code]) + " |")
+w("\n## Triangles and covered pixels per second (single thread)\n")
+w("Millions per second: triangles / pixels.\n")
+scenes = [s for _, s, _ in cases] + ["sphere", "torus", "tri10", "large"]
+w("| Traversal | " + " | ".join(f"`{s}`" for s in scenes) + " |")
+w("|---|" + "---|" * len(scenes))
+for x in travs:
+    cells = []
+    for s in scenes:
+        b = get("traversal", s, x)
+        cells.append(f"{b['tris_per_s'] / 1e6:.2f} / {b['pixels_per_s'] / 1e6:.0f}")
+    w(f"| `{x}` | " + " | ".join(cells) + " |")
+tris = {s: int(get("traversal", s, "auto")["tris"]) for s in scenes}
+w("\nTriangles per scene (accepted by setup): " + ", ".join(f"`{s}` {n}" for s, n in tris.items()) + ".")
+st = rows["setup/tri10"]
+w(f"Setup alone (`setup_scene`, 10-pixel triangles): {st['tris_per_s'] / 1e6:.2f} M triangles/s.\n")
+w("## Threads\n")
+w("The golden engine (`make_golden_engine(traversal, threads)`: chunks of 256 triangles from a "
+  "shared counter, per-chunk span lists joined in order, so the output is the same list for any "
+  "thread count), wall-clock time including the output list. Load average when the run started: "
+  + ", ".join(f"{v:.2f}" for v in ctx.get("load_avg", [])) + " (on 2 cores: anything near 1 or above "
+  "means another job held a core, and the 2-thread figures are then not a scaling measurement).\n")
+w("| Scene | Traversal | 1 thread (ms) | 2 threads (ms) | Speed-up |")
+w("|---|---|---|---|---|")
+speedups = {}
+for s in ["highpoly-near", "random100k"]:
+    for x in ["auto", "incremental", "simple"]:
+        a, b = get("threads", s, x, 1), get("threads", s, x, 2)
+        sp = a["real_time"] / b["real_time"]
+        speedups[(s, x)] = sp
+        w(f"| `{s}` ({int(a['tris'])} triangles) | `{x}` | {a['real_time']:.2f} | {b['real_time']:.2f} | {sp:.2f}x |")
+w("\n## Targets\n")
+tri10 = get("traversal", "tri10", "auto")["tris_per_s"]
+tri10_best = max(get("traversal", "tri10", x)["tris_per_s"] for x in travs)
+large = get("traversal", "large", "scanline")["pixels_per_s"]
+w("| Target | Measured | Met |")
+w("|---|---|---|")
+w(f"| >= 5 M triangles/s on 10-pixel triangles (1 thread) | `auto` {tri10 / 1e6:.2f} M/s (best traversal {tri10_best / 1e6:.2f} M/s) | {'yes' if tri10 >= 5e6 else 'no'} |")
+w(f"| >= 1 G covered pixels/s on large triangles (1 thread) | `scanline` {large / 1e9:.2f} G/s | {'yes' if large >= 1e9 else 'no'} |")
+best = max(speedups.values())
+auto_sp = speedups[("highpoly-near", "auto")]
+w(f"| >= 1.8x on 2 threads vs 1 for >= 100,000 triangles | `auto` on `highpoly-near` {auto_sp:.2f}x; best {best:.2f}x | {'yes' if min(speedups.values()) >= 1.8 else 'partly' if best >= 1.8 else 'no'} |")
+w("\n## Notes\n")
+w("- **Exactness.** Every traversal decides coverage with the same integer edge test (or, for "
+  "`scanline`, the same rule solved per row with exact floor/ceil), and all emit identical spans "
+  "in the same order; `tests/test_golden_variants.cpp` checks each against the independent "
+  "per-pixel reference on random, lattice, tiny, sliver, large-coordinate and 4096x4096 cases.")
+w("- **Why scanline wins almost everywhere.** It costs per row, not per pixel: a span's pixels are "
+  "counted, never visited, which is what the >= 1 G pixels/s target asks for. The pixel and block "
+  "traversals must visit every covered pixel (the block ones at least every partial block's pixels), "
+  "so their pixel rate is bounded by a few G/s. The paper's figures include shading every pixel, "
+  "which compresses its ratios.")
+w("- **Block traversals on small triangles** (C3, C4, meshes) lose to `incremental`, as in the "
+  "paper's C3/C4: most blocks are partial, and the corner tests are pure overhead. `adaptive` "
+  "avoids most of that loss by the orientation metric, as the paper reports.")
+w("- **`auto`** uses `incremental` for boxes of at most kAutoPixelBoxLimit (100) pixels (no "
+  "divisions to set up) and `scanline` above; the threshold was picked by sweeping 16..200 on "
+  "these scenes (differences near the noise).")
+w("- **The 2-thread target.** Rasterizing scales, but the engine has to hand back one span list "
+  "in triangle order: the chunk lists are joined by `resize` (a serial zero-fill and first touch "
+  "of the whole output, tens of MB for these scenes) followed by a parallel copy. That serial, "
+  "memory-bound step is a large share of a run that only takes a few milliseconds, and both "
+  "threads share one memory bus; the machine is also shared with other jobs. Where there is more "
+  "arithmetic per span (`simple`) the speed-up is closer to 2. Reaching 1.8x everywhere would need "
+  "an output type that is not one contiguous `std::vector<Span>` (per-chunk lists handed to the "
+  "consumer, or a span sink), which is an interface change outside model/golden.")
+print("\n".join(out))
+PY
+mv docs/golden-performance.md.tmp docs/golden-performance.md
+echo "wrote docs/golden-performance.md"

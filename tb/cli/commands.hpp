@@ -1,0 +1,10 @@
+// Subcommands that live in their own files (each returns the process exit status and throws
+// UsageError / SceneError / ... for run_cli to report as one line).
+#pragma once
+
+namespace trirast {
+
+// trirast fuzz: tb/cli/cmd_fuzz.cpp
+int cmd_fuzz(int argc, char** argv);
+
+}  // namespace trirast
