@@ -7,6 +7,8 @@ std::unique_ptr<Engine> make_golden_engine();
 std::unique_ptr<Engine> make_unit_engine();
 std::unique_ptr<Engine> make_trad_engine();
 std::unique_ptr<Engine> make_float_scanline_engine();
+std::unique_ptr<Engine> make_model_engine();
+std::unique_ptr<Engine> make_trad_model_engine();
 
 const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> engines = {
@@ -14,9 +16,11 @@ const std::vector<EngineInfo>& engine_registry() {
        make_golden_engine},
       {"unit", "improved-Bresenham unit, bit-accurate datapath model (docs/unit.md)", true,
        make_unit_engine},
-      {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1): integer vertices, edge lines, "
-               "row fill; its own coverage, not the rule",
-       false, make_trad_engine},
+      {"model", "SystemC model of the improved unit: the unit's spans plus cycles (docs/timing.md)",
+       true, make_model_engine},
+      {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1), SystemC model with cycles; "
+               "its own coverage, not the rule",
+       false, make_trad_model_engine},
       {"float-scanline", "float scanline of seed 002, top-left via ceil(x - 0.5): a CPU baseline, "
                          "not exact",
        false, make_float_scanline_engine},

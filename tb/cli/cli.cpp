@@ -1,6 +1,8 @@
 #include "cli/cli.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <cstdio>
 #include <iostream>
 #include <sstream>
@@ -26,6 +28,16 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
+
+// The GTKWave save file a trace writer leaves beside FILE.vcd / FILE.fst.
+std::string gtkw_path(const std::string& trace) {
+  const size_t dot = trace.find_last_of('.');
+  const size_t slash = trace.find_last_of('/');
+  const bool has_ext = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (has_ext ? trace.substr(0, dot) : trace) + ".gtkw";
 }
 
 // Options every scene-consuming subcommand shares.
@@ -183,10 +195,42 @@ EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const Raster
   return run;
 }
 
+bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// Datapath work counters (the per-module busy/stall cycles are reported apart).
 Json work_json(const EngineResult& r) {
   Json w = Json::object();
-  for (const auto& kv : r.work) w.set(kv.first, kv.second);
+  for (const auto& kv : r.work)
+    if (!starts_with(kv.first, "busy_cycles.") && !starts_with(kv.first, "stall_cycles."))
+      w.set(kv.first, kv.second);
   return w;
+}
+
+// Per-module busy and stall cycles of a timed engine: {module: {busy, stall}}.
+std::map<std::string, std::pair<uint64_t, uint64_t>> module_cycles(const EngineResult& r) {
+  std::map<std::string, std::pair<uint64_t, uint64_t>> modules;
+  for (const auto& kv : r.work) {
+    if (starts_with(kv.first, "busy_cycles.")) modules[kv.first.substr(12)].first = kv.second;
+    if (starts_with(kv.first, "stall_cycles.")) modules[kv.first.substr(13)].second = kv.second;
+  }
+  return modules;
+}
+
+// Throughput of a timed engine, for the JSON report.
+Json timing_json(const EngineResult& r, uint64_t triangles, uint64_t spans, int64_t pixels) {
+  const double cycles = double(r.total_cycles);
+  Json t = Json::object();
+  t.set("total_cycles", r.total_cycles)
+      .set("triangles_per_cycle", cycles > 0 ? triangles / cycles : 0.0)
+      .set("spans_per_cycle", cycles > 0 ? spans / cycles : 0.0)
+      .set("pixels_per_cycle", cycles > 0 ? pixels / cycles : 0.0);
+  auto it = r.work.find("sim_cycles_per_second");
+  if (it != r.work.end()) t.set("sim_cycles_per_second", it->second);
+  Json modules = Json::object();
+  for (const auto& [name, bs] : module_cycles(r))
+    modules.set(name, Json::object().set("busy", bs.first).set("stall", bs.second));
+  t.set("modules", modules);
+  return t;
 }
 
 std::string engine_list_help() {
@@ -247,7 +291,9 @@ int cmd_raster(int argc, char** argv) {
       .set("spans", uint64_t(run.result.spans.size()))
       .set("pixels", pixels)
       .set("work", work_json(run.result));
-  if (run.result.total_cycles) report.set("total_cycles", run.result.total_cycles);
+  if (!run.result.cycles.empty())
+    report.set("timing", timing_json(run.result, ls.setup.counts.accepted,
+                                     run.result.spans.size(), pixels));
 
   if (a.has("--cycles")) {
     if (run.result.cycles.empty() && !ls.setup.tris.empty())
@@ -281,13 +327,28 @@ int cmd_raster(int argc, char** argv) {
                 (unsigned long long)ls.scene.range_dropped);
   std::printf("\n  coverage   %zu spans, %lld pixels\n", run.result.spans.size(), (long long)pixels);
   for (const auto& kv : run.result.work)
-    std::printf("  work       %-28s %llu\n", kv.first.c_str(), (unsigned long long)kv.second);
-  if (run.result.total_cycles)
-    std::printf("  cycles     %llu\n", (unsigned long long)run.result.total_cycles);
+    if (!starts_with(kv.first, "busy_cycles.") && !starts_with(kv.first, "stall_cycles.") &&
+        kv.first != "total_cycles" && !starts_with(kv.first, "sim_"))
+      std::printf("  work       %-28s %llu\n", kv.first.c_str(), (unsigned long long)kv.second);
+  if (!run.result.cycles.empty()) {
+    const double c = double(std::max<uint64_t>(run.result.total_cycles, 1));
+    std::printf("  cycles     %llu total: %.4f triangles, %.4f spans, %.3f pixels per cycle\n",
+                (unsigned long long)run.result.total_cycles, ls.setup.counts.accepted / c,
+                run.result.spans.size() / c, pixels / c);
+    auto sim = run.result.work.find("sim_cycles_per_second");
+    if (sim != run.result.work.end())
+      std::printf("  simulated  %.1f M cycles per wall-clock second\n", sim->second / 1e6);
+    std::printf("  %-26s %12s %12s\n", "module", "busy", "stall");
+    for (const auto& [name, bs] : module_cycles(run.result))
+      std::printf("  %-26s %12llu %12llu\n", name.c_str(), (unsigned long long)bs.first,
+                  (unsigned long long)bs.second);
+  }
   std::printf("  time       %.3f s (load %.3f, setup %.3f, engine %.3f)\n", seconds_since(t0),
               ls.load_seconds, ls.setup_seconds, run.seconds);
   for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
     if (a.has(opt)) std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
+  if (a.has("--trace") && file_exists(gtkw_path(a.get("--trace"))))
+    std::printf("  wrote      %s (GTKWave save file)\n", gtkw_path(a.get("--trace")).c_str());
   return 0;
 }
 

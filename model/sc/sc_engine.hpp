@@ -1,0 +1,17 @@
+// The SystemC models as engines (docs/sc-model.md). Both units are elaborated once per process,
+// the first time either engine runs; every run then goes through the same modules from the
+// current SystemC time on (cycle numbers are relative to the run's start).
+#pragma once
+#include <memory>
+
+#include "core/engine.hpp"
+
+namespace trirast {
+
+// The improved-Bresenham unit, timed (register as "model").
+std::unique_ptr<Engine> make_model_engine();
+// The traditional-Bresenham unit, timed: the spans of make_trad_engine() plus cycles
+// (register as "trad").
+std::unique_ptr<Engine> make_trad_model_engine();
+
+}  // namespace trirast

@@ -1,0 +1,91 @@
+// The improved unit against the traditional one in cycles (scripts/cycles_table.sh writes the
+// output to docs/cycles-improved-vs-trad.md): the five seed-000 scene analogues and meshes, both
+// SystemC models with the default parameters (N = 1, FIFO 8, sink always ready), and the improved
+// unit with N = 4 and in divide mode beside them.
+#include <cstdio>
+#include <string>
+#include <systemc>  // declares sc_main extern "C"
+#include <vector>
+
+#include "core/setup.hpp"
+#include "sc/sc_engine.hpp"
+#include "scene/scene.hpp"
+
+using namespace trirast;
+
+namespace {
+
+struct Run {
+  uint64_t cycles = 0, setup_busy = 0, walk_busy = 0;
+};
+
+Run run(Engine& e, const SetupResult& setup, const RasterConfig& cfg) {
+  EngineResult r;
+  e.run(setup, cfg, r);
+  return Run{r.total_cycles, r.work["busy_cycles.setup"], r.work["busy_cycles.walk"]};
+}
+
+std::string pct(double improved, double trad) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%+.1f%%", 100.0 * (trad - improved) / trad);
+  return b;
+}
+
+}  // namespace
+
+int sc_main(int argc, char** argv) {
+  const std::string source = argc > 1 ? argv[1] : ".";
+  struct Entry {
+    std::string label, spec;
+  };
+  const std::vector<Entry> scenes = {
+      {"1 low-poly far", "builtin:lowpoly-far"},
+      {"2 low-poly near", "builtin:lowpoly-near"},
+      {"3 high-poly far", "builtin:highpoly-far"},
+      {"4 high-poly near", "builtin:highpoly-near"},
+      {"5 mixed", "builtin:mixed"},
+      {"mesh: sphere", "builtin:sphere"},
+      {"mesh: torus", "builtin:torus"},
+      {"mesh: surface", "builtin:surface"},
+      {"mesh: cube.obj", source + "/tests/data/cube.obj"},
+  };
+  std::printf(
+      "| scene | triangles | improved cycles | trad cycles | improved vs trad | improved cyc/tri "
+      "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide |\n");
+  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|\n");
+  uint64_t sum_i = 0, sum_t = 0;
+  for (const Entry& e : scenes) {
+    RasterConfig cfg;
+    Scene scene;
+    try {
+      scene = load_scene(e.spec, cfg, CameraOptions{});
+    } catch (const std::exception& ex) {
+      std::fprintf(stderr, "cycles_table: %s: %s (skipped)\n", e.spec.c_str(), ex.what());
+      continue;
+    }
+    const SetupResult setup = setup_scene(scene.tris, cfg);
+    const double n = setup.tris.empty() ? 1.0 : double(setup.tris.size());
+    auto model = make_model_engine();
+    auto trad = make_trad_model_engine();
+    const Run i = run(*model, setup, cfg);
+    const Run t = run(*trad, setup, cfg);
+    RasterConfig cfg4 = cfg;
+    cfg4.endpoints = 4;
+    const Run i4 = run(*model, setup, cfg4);
+    RasterConfig cfgd = cfg;
+    cfgd.boundary = BoundaryMode::Divide;
+    const Run id = run(*model, setup, cfgd);
+    sum_i += i.cycles;
+    sum_t += t.cycles;
+    std::printf(
+        "| %s | %zu | %llu | %llu | %s | %.1f (%.1f, %.1f) | %.1f (%.1f, %.1f) | %llu | %llu |\n",
+        e.label.c_str(), setup.tris.size(), (unsigned long long)i.cycles,
+        (unsigned long long)t.cycles, pct(double(i.cycles), double(t.cycles)).c_str(),
+        double(i.cycles) / n, double(i.setup_busy) / n, double(i.walk_busy) / n,
+        double(t.cycles) / n, double(t.setup_busy) / n, double(t.walk_busy) / n,
+        (unsigned long long)i4.cycles, (unsigned long long)id.cycles);
+  }
+  std::printf("| **all** | | %llu | %llu | %s | | | | |\n", (unsigned long long)sum_i,
+              (unsigned long long)sum_t, pct(double(sum_i), double(sum_t)).c_str());
+  return 0;
+}
