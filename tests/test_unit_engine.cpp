@@ -294,8 +294,10 @@ TEST(UnitEngine, WorkCounters) {
   RasterConfig cfg;
   const SetupResult s = setup_scene({InputTriangle{{10.5, 40.25, 20.5}, {5.5, 15.5, 30.75}}}, cfg);
   ASSERT_EQ(s.tris.size(), 1u);
-  for (BoundaryMode mode : {BoundaryMode::Step, BoundaryMode::Divide}) {
+  for (BoundaryMode mode : {BoundaryMode::Step, BoundaryMode::Divide})
+  for (DividerMode divider : {DividerMode::Fixed, DividerMode::Adaptive}) {
     cfg.boundary = mode;
+    cfg.divider = divider;
     ImprovedUnit unit(cfg);
     SpanList spans;
     const UnitTriangleResult r = unit.run_triangle(s.tris[0], spans);
@@ -303,7 +305,14 @@ TEST(UnitEngine, WorkCounters) {
     EXPECT_EQ(r.work.rows_visited, uint64_t(rows));
     EXPECT_EQ(r.work.spans, spans.size());
     EXPECT_EQ(int64_t(r.work.pixels), count_pixels(spans));
-    EXPECT_EQ(r.work.divider_iterations(), 15 * r.work.divisions());
+    // Box 30 x 26 pixels (Xmax = 29, Ymax = 25): adaptive divisions run bits(29) + 1 = 6
+    // iterations along x; fixed ones Q = 15.
+    ASSERT_EQ(r.iface.Xmax, 29);
+    ASSERT_EQ(r.iface.Ymax, 25);
+    if (divider == DividerMode::Fixed || mode == BoundaryMode::Step) {
+      EXPECT_EQ(r.work.divider_iterations(),
+                (divider == DividerMode::Fixed ? 15 : 6) * r.work.divisions());
+    }
     for (int k = 0; k < 3; ++k) {
       // Every edge divides its slope and its entry x (all three enter this box).
       EXPECT_GE(r.work.edge[k].divisions, 2u) << k;

@@ -213,9 +213,10 @@ const char* state_name(EdgeRowState s) {
   return s == EdgeRowState::Out ? "out" : s == EdgeRowState::Bound ? "bound" : "clear";
 }
 
-void walk_random_edges(BoundaryMode mode, uint64_t seed) {
+void walk_random_edges(BoundaryMode mode, DividerMode divider, uint64_t seed) {
   RasterConfig cfg;
   cfg.boundary = mode;
+  cfg.divider = divider;
   const UnitWidths w = unit_widths(cfg);
   EdgeNormalizer norm(cfg);
   AdderDivider div(cfg);
@@ -264,7 +265,20 @@ void walk_random_edges(BoundaryMode mode, uint64_t seed) {
     }
     steps_total += wk.boundary_steps;
     EXPECT_EQ(wk.rows_stepped, expect_stepped) << "edge " << it;
-    EXPECT_EQ(wk.divider_iterations, wk.divisions * uint64_t(w.quotient));
+    if (divider == DividerMode::Fixed) {
+      EXPECT_EQ(wk.divider_iterations, wk.divisions * uint64_t(w.quotient));
+    } else {
+      // Each division runs bits(extent) + 1 iterations: the box's width (slope, entry x) or
+      // height (entry row, divide mode only).
+      const uint64_t bx = uint64_t(unsigned_bits(uint64_t(Xmax)) + 1);
+      const uint64_t by = uint64_t(unsigned_bits(uint64_t(Ymax)) + 1);
+      if (mode == BoundaryMode::Step) {
+        EXPECT_EQ(wk.divider_iterations, wk.divisions * bx);
+      } else {
+        EXPECT_GE(wk.divider_iterations, wk.divisions * std::min(bx, by));
+        EXPECT_LE(wk.divider_iterations, wk.divisions * std::max(bx, by));
+      }
+    }
   }
   // The random edges exercised bound rows in both directions.
   EXPECT_GT(bound_rows, rows / 20);
@@ -274,8 +288,14 @@ void walk_random_edges(BoundaryMode mode, uint64_t seed) {
   }
 }
 
-TEST(EdgeWalker, ClosedFormStepMode) { walk_random_edges(BoundaryMode::Step, 99); }
-TEST(EdgeWalker, ClosedFormDivideMode) { walk_random_edges(BoundaryMode::Divide, 99); }
+TEST(EdgeWalker, ClosedFormStepMode) {
+  walk_random_edges(BoundaryMode::Step, DividerMode::Adaptive, 99);
+  walk_random_edges(BoundaryMode::Step, DividerMode::Fixed, 98);
+}
+TEST(EdgeWalker, ClosedFormDivideMode) {
+  walk_random_edges(BoundaryMode::Divide, DividerMode::Adaptive, 99);
+  walk_random_edges(BoundaryMode::Divide, DividerMode::Fixed, 98);
+}
 
 TEST(EdgeWalker, BothModesFindTheSameEntry) {
   // The step traversal and the division agree on the entry row, edge by edge.

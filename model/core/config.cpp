@@ -31,6 +31,16 @@ const char* boundary_mode_name(BoundaryMode mode) {
   return mode == BoundaryMode::Divide ? "divide" : "step";
 }
 
+DividerMode parse_divider_mode(const std::string& text) {
+  if (text == "fixed") return DividerMode::Fixed;
+  if (text == "adaptive") return DividerMode::Adaptive;
+  throw std::invalid_argument("--divider: expected fixed or adaptive, got '" + text + "'");
+}
+
+const char* divider_mode_name(DividerMode mode) {
+  return mode == DividerMode::Fixed ? "fixed" : "adaptive";
+}
+
 void RasterConfig::validate() const {
   if (width < 1 || width > kMaxViewport)
     throw std::invalid_argument("--width: " + std::to_string(width) + " is outside 1.." +

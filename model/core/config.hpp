@@ -15,6 +15,13 @@ enum class BoundaryMode { Step, Divide };
 BoundaryMode parse_boundary_mode(const std::string& text);
 const char* boundary_mode_name(BoundaryMode mode);
 
+// How many iterations the unit's adder divider runs per division (docs/unit.md, section 3):
+// Fixed = Q = box_bits + 1 always (m from the configured range);
+// Adaptive = as many quotient bits as this triangle's box needs (m from the box size).
+enum class DividerMode { Fixed, Adaptive };
+DividerMode parse_divider_mode(const std::string& text);
+const char* divider_mode_name(DividerMode mode);
+
 // Parses "none" | "back" | "front"; throws std::invalid_argument otherwise.
 CullMode parse_cull_mode(const std::string& text);
 const char* cull_mode_name(CullMode mode);
@@ -31,6 +38,7 @@ struct RasterConfig {
   // ---- the improved-Bresenham unit's hardware parameters ----
   int box_bits = 14;         // unsigned bits of a box-relative pixel coordinate (box <= 2^box_bits)
   BoundaryMode boundary = BoundaryMode::Step;
+  DividerMode divider = DividerMode::Adaptive;
 
   // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
   int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)

@@ -5,6 +5,7 @@ namespace trirast {
 
 std::unique_ptr<Engine> make_golden_engine();
 std::unique_ptr<Engine> make_unit_engine();
+std::unique_ptr<Engine> make_rtl_engine();
 std::unique_ptr<Engine> make_trad_engine();
 std::unique_ptr<Engine> make_float_scanline_engine();
 std::unique_ptr<Engine> make_model_engine();
@@ -16,6 +17,7 @@ const std::vector<EngineInfo>& engine_registry() {
        make_golden_engine},
       {"unit", "improved-Bresenham unit, bit-accurate datapath model (docs/unit.md)", true,
        make_unit_engine},
+      {"rtl", "Verilated RTL of the improved unit (rtl/)", true, make_rtl_engine},
       {"model", "SystemC model of the improved unit: the unit's spans plus cycles (docs/timing.md)",
        true, make_model_engine},
       {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1), SystemC model with cycles; "

@@ -16,7 +16,13 @@ AdderDivider::AdderDivider(const RasterConfig& cfg)
     : AdderDivider(unit_widths(cfg).quotient, unit_widths(cfg).numerator,
                    unit_widths(cfg).remainder) {}
 
-DivideResult AdderDivider::divide(int64_t n, int64_t d, uint32_t tri, const char* what) const {
+DivideResult AdderDivider::divide(int64_t n, int64_t d, uint32_t tri, const char* what,
+                                  int quotient_bits) const {
+  const int q_bits = quotient_bits > 0 ? quotient_bits : q_bits_;
+  if (q_bits > q_bits_)
+    throw std::invalid_argument("AdderDivider: " + std::to_string(q_bits) +
+                                " quotient bits asked of a " + std::to_string(q_bits_) +
+                                "-bit divider");
   // Ports: an unsigned numerator and a positive divisor of the configured widths.
   check_unsigned(n, n_bits_, tri, what, "divider numerator");
   check_unsigned(d, d_bits_, tri, what, "divider divisor");
@@ -24,12 +30,12 @@ DivideResult AdderDivider::divide(int64_t n, int64_t d, uint32_t tri, const char
     throw std::invalid_argument("triangle " + std::to_string(tri) + ": " + what +
                                 ": division by zero");
   DivideResult res{};
-  // Saturation: the quotient needs more than Q bits iff n >> Q >= d (a compare, no divide).
-  res.saturated = (n >> q_bits_) >= d;
+  // Saturation: the quotient needs more than q_bits bits iff n >> q_bits >= d (a compare).
+  res.saturated = (n >> q_bits) >= d;
   // Restoring division, MSB first: bit k of q is set when d << k fits the partial remainder.
   int64_t rem = n;
   int64_t q = 0;
-  for (int k = q_bits_ - 1; k >= 0; --k) {
+  for (int k = q_bits - 1; k >= 0; --k) {
     const int64_t trial = rem - (d << k);  // the adder: partial remainder minus shifted divisor
     const bool fits = trial >= 0;          // its sign bit is the quotient bit (inverted)
     if (fits) rem = trial;                 // restore (keep rem) when it did not fit

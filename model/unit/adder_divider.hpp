@@ -15,7 +15,7 @@ struct DivideResult {
   int64_t quotient;   // q, Q bits unsigned (all ones when saturated)
   int64_t remainder;  // r = n - q*d, 0 <= r < d when not saturated
   bool saturated;     // n >= d * 2^Q: the true quotient does not fit Q bits
-  int iterations;     // iterations the division took (always Q)
+  int iterations;     // iterations the division took (Q, or the quotient_bits asked for)
 };
 
 class AdderDivider {
@@ -27,7 +27,10 @@ class AdderDivider {
 
   // n = q*d + r for n >= 0, d > 0. Throws WidthError (naming triangle `tri` and `what`) when an
   // input does not fit its port, std::invalid_argument when d == 0.
-  DivideResult divide(int64_t n, int64_t d, uint32_t tri, const char* what) const;
+  // `quotient_bits` (1..Q) runs a shorter division for a small box: the quotient saturates at
+  // 2^quotient_bits instead of 2^Q; 0 means Q.
+  DivideResult divide(int64_t n, int64_t d, uint32_t tri, const char* what,
+                      int quotient_bits = 0) const;
 
   int quotient_bits() const { return q_bits_; }
   int iterations_per_division() const { return q_bits_; }

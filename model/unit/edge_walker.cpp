@@ -1,12 +1,19 @@
 #include "unit/edge_walker.hpp"
 
+#include "core/fixed_point.hpp"
+
 namespace trirast {
 
 EdgeWalker::EdgeWalker(const RasterConfig& cfg, const AdderDivider& divider)
     : cfg_(cfg), w_(unit_widths(cfg)), divider_(divider) {}
 
-DivideResult EdgeWalker::divide(int64_t n, int64_t d, const char* what) {
-  const DivideResult r = divider_.divide(n, d, tri_, what);
+DivideResult EdgeWalker::divide(int64_t n, int64_t d, const char* what, char along) {
+  // Adaptive: a quotient of 2^bits > the box's extent already means "beyond the box", so
+  // bits(extent) + 1 quotient bits give the same result as the full Q (docs/unit.md, section 3).
+  int bits = 0;
+  if (cfg_.divider == DividerMode::Adaptive)
+    bits = unsigned_bits(uint64_t(along == 'x' ? Xmax_ : Ymax_)) + 1;
+  const DivideResult r = divider_.divide(n, d, tri_, what, bits);
   ++work_.divisions;
   work_.divider_iterations += uint64_t(r.iterations);
   return r;
@@ -22,7 +29,7 @@ void EdgeWalker::start(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax, uint
   work_ = EdgeWork{};
   // 1. Slope s / D (not for a horizontal edge: it has no x bound to step).
   if (!n_.horizontal) {
-    const DivideResult slope = divide(n_.s, n_.D, "slope s");
+    const DivideResult slope = divide(n_.s, n_.D, "slope s", 'x');
     st_.q_s = slope.quotient;
     st_.r_s = slope.remainder;
     st_.slope_saturated = slope.saturated;
@@ -70,7 +77,7 @@ int64_t EdgeWalker::traverse_divide() {
     } else {
       if (n_.s == 0) return 0;  // vertical and outside: never enters
       // First j with T + j*s >= 0: -T = q*s + r, j = q + (r != 0).
-      const DivideResult d = divide(-n_.T, n_.s, "entry row -T");
+      const DivideResult d = divide(-n_.T, n_.s, "entry row -T", 'y');
       if (d.saturated) return 0;
       j = d.quotient + (d.remainder != 0 ? 1 : 0);
       v = d.remainder == 0 ? 0 : n_.s - d.remainder;
@@ -82,7 +89,7 @@ int64_t EdgeWalker::traverse_divide() {
     } else {
       if (n_.s == 0) return 0;  // cannot happen for dir -, kept for safety
       // First j with T1 - j*s < 0: T1 = q*s + r, j = q + 1, value r - s.
-      const DivideResult d = divide(n_.T1, n_.s, "entry row T1");
+      const DivideResult d = divide(n_.T1, n_.s, "entry row T1", 'y');
       if (d.saturated) return 0;
       j = d.quotient + 1;
       v = d.remainder - n_.s;
@@ -103,7 +110,7 @@ void EdgeWalker::entry_x(int64_t value) {
   }
   if (n_.dir_down) {
     // dir +: N >= 0 on column 0; X' = floor(N / D), e = N mod D.
-    const DivideResult d = divide(value, n_.D, "entry x N");
+    const DivideResult d = divide(value, n_.D, "entry x N", 'x');
     if (d.saturated) {
       st_.entry_state = EdgeRowState::Clear;  // beyond the box: already clear
       return;
@@ -113,7 +120,7 @@ void EdgeWalker::entry_x(int64_t value) {
     st_.entry_state = st_.entry_X >= Xmax_ ? EdgeRowState::Clear : EdgeRowState::Bound;
   } else {
     // dir -: G < 0 on column Xmax; X'' = floor(G / D) by dividing -G and restoring the sign.
-    const DivideResult d = divide(-value, n_.D, "entry x -G");
+    const DivideResult d = divide(-value, n_.D, "entry x -G", 'x');
     if (d.saturated) {
       st_.entry_state = EdgeRowState::Out;  // far beyond the box's left: already out
       return;

@@ -69,7 +69,9 @@ class EdgeWalker {
   void entry_x(int64_t value);
   // One Bresenham step of X' and e.
   void bresenham_step();
-  DivideResult divide(int64_t n, int64_t d, const char* what);
+  // `along` says which box dimension bounds the quotient: 'x' (slope, entry x) or 'y' (entry
+  // row); in DividerMode::Adaptive the division runs only the bits that dimension needs.
+  DivideResult divide(int64_t n, int64_t d, const char* what, char along);
 
   RasterConfig cfg_;
   UnitWidths w_;

@@ -57,6 +57,7 @@ std::vector<OptionSpec> scene_options() {
       {"--threads", "N", "golden threads (0 = all cores)", "1"},
       {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
       {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
+      {"--divider", "MODE", "unit: divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
       {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:R:S | random:SEED:P", "none"},
@@ -76,6 +77,7 @@ RasterConfig config_from(const Args& a) {
   try {
     cfg.cull = parse_cull_mode(a.get("--cull"));
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
+    cfg.divider = parse_divider_mode(a.get("--divider"));
     cfg.validate();
   } catch (const std::invalid_argument& e) {
     throw UsageError("trirast " + a.command() + ": " + e.what());
@@ -143,6 +145,7 @@ Json config_json(const RasterConfig& cfg) {
       .set("cull", cull_mode_name(cfg.cull))
       .set("box_bits", cfg.box_bits)
       .set("boundary", boundary_mode_name(cfg.boundary))
+      .set("divider", divider_mode_name(cfg.divider))
       .set("endpoints", cfg.endpoints)
       .set("fifo_depth", cfg.fifo_depth)
       .set("sink_stall", cfg.sink_stall);

@@ -51,8 +51,30 @@ void expect_cycles(const TriangleCycles& c, uint64_t accept, uint64_t first, uin
   EXPECT_EQ(c.stall_cycles, stall);
 }
 
-TEST(ScCyclesHand, SingleTriangleStepMode) {
+// The hand derivations below take Q = 15 iterations per division: the fixed divider.
+RasterConfig fixed_divider() {
   RasterConfig cfg;
+  cfg.divider = DividerMode::Fixed;
+  return cfg;
+}
+
+// The adaptive divider (the default) runs bits(7) + 1 = 4 iterations for this 8 x 8 box:
+// step mode L = 1 + 4 + 4 = 9, h = 12, rows in 13..20, popped in 14..21;
+// divide mode L = 4 (entry row) + 4 + 4 = 12, h = 15, popped in 17..24.
+TEST(ScCyclesHand, AdaptiveDividerSingleTriangle) {
+  RasterConfig cfg;
+  EngineResult r = run_model({right_triangle()}, cfg);
+  ASSERT_EQ(r.cycles.size(), 1u);
+  expect_cycles(r.cycles[0], 0, 14, 21, 8, 36, 0);
+  EXPECT_EQ(r.total_cycles, 22u);
+  EXPECT_EQ(r.work.at("busy_cycles.setup"), 2u + 9u);
+  cfg.boundary = BoundaryMode::Divide;
+  r = run_model({right_triangle()}, cfg);
+  expect_cycles(r.cycles[0], 0, 17, 24, 8, 36, 0);
+}
+
+TEST(ScCyclesHand, SingleTriangleStepMode) {
+  RasterConfig cfg = fixed_divider();
   const EngineResult r = run_model({right_triangle()}, cfg);
   ASSERT_EQ(r.cycles.size(), 1u);
   // h = 3 + 31 = 34; row j processed in 35 + j, popped in 36 + j.
@@ -63,7 +85,7 @@ TEST(ScCyclesHand, SingleTriangleStepMode) {
 }
 
 TEST(ScCyclesHand, SingleTriangleDivideMode) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   cfg.boundary = BoundaryMode::Divide;
   const EngineResult r = run_model({right_triangle()}, cfg);
   // h = 3 + 45 = 48.
@@ -72,7 +94,7 @@ TEST(ScCyclesHand, SingleTriangleDivideMode) {
 
 TEST(ScCyclesHand, EndpointsTwoAndFour) {
   for (int n : {2, 4}) {
-    RasterConfig cfg;
+    RasterConfig cfg = fixed_divider();
     cfg.endpoints = n;
     const EngineResult r = run_model({right_triangle()}, cfg);
     // Groups of n rows from cycle 35; the sink still takes one span per cycle: pops 36..43.
@@ -82,7 +104,7 @@ TEST(ScCyclesHand, EndpointsTwoAndFour) {
 }
 
 TEST(ScCyclesHand, FifoFullWithFourEndpoints) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   cfg.endpoints = 4;
   cfg.fifo_depth = 4;
   const EngineResult r = run_model({right_triangle()}, cfg);
@@ -93,7 +115,7 @@ TEST(ScCyclesHand, FifoFullWithFourEndpoints) {
 }
 
 TEST(ScCyclesHand, PeriodicSinkAndShallowFifo) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   cfg.fifo_depth = 2;
   cfg.sink_stall = "periodic:1:1";  // ready in even cycles
   const EngineResult r = run_model({right_triangle()}, cfg);
@@ -104,7 +126,7 @@ TEST(ScCyclesHand, PeriodicSinkAndShallowFifo) {
 }
 
 TEST(ScCyclesHand, BackToBackSetupOverlapsWalk) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   const EngineResult r = run_model({right_triangle(), right_triangle(20)}, cfg);
   ASSERT_EQ(r.cycles.size(), 2u);
   expect_cycles(r.cycles[0], 0, 36, 43, 8, 36, 0);
@@ -115,7 +137,7 @@ TEST(ScCyclesHand, BackToBackSetupOverlapsWalk) {
 }
 
 TEST(ScCyclesHand, WalkBoundPairHoldsTheSetup) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   cfg.fifo_depth = 1;
   cfg.sink_stall = "periodic:1:9";  // one ready cycle in ten: the walk crawls
   const EngineResult r = run_model({right_triangle(), right_triangle(20)}, cfg);
@@ -131,7 +153,7 @@ TEST(ScCyclesHand, WalkBoundPairHoldsTheSetup) {
 }
 
 TEST(ScCyclesHand, EmptyBoxRetiresInSetup) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   // No pixel centre in the box: x and y centres 1.5 lie outside [1.1, 1.4].
   const EngineResult r = run_model({tri(1.1, 1.1, 1.4, 1.1, 1.1, 1.4), right_triangle()}, cfg);
   ASSERT_EQ(r.cycles.size(), 2u);
@@ -140,7 +162,7 @@ TEST(ScCyclesHand, EmptyBoxRetiresInSetup) {
 }
 
 TEST(ScCyclesHand, TriangleWithoutSpansRetiresInItsLastRow) {
-  RasterConfig cfg;
+  RasterConfig cfg = fixed_divider();
   // One-pixel box (centre 1.5, 1.5) that the sliver misses.
   const InputTriangle sliver = tri(1, 1, 1.3, 2, 2, 2.4);
   const SetupResult setup = setup_scene({sliver}, cfg);
@@ -292,6 +314,7 @@ TEST(ScCyclesReference, ImprovedAllConfigurations) {
           cfg.fifo_depth = depth;
           cfg.sink_stall = sink;
           cfg.boundary = mode;
+          cfg.divider = depth == 8 ? DividerMode::Fixed : DividerMode::Adaptive;
           compare_with_reference(false, tris, cfg,
                                  "N=" + std::to_string(n) + " depth=" + std::to_string(depth) +
                                      " sink=" + sink + " " + boundary_mode_name(mode));
