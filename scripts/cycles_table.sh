@@ -29,17 +29,18 @@ one, so a triangle costs about \`max(setup, walk)\` cycles (the "cyc/tri" column
 and the two stages' busy cycles per triangle):
 
 - The improved unit's set-up is \`3 + L\` cycles, with \`L\` the slowest edge lane: a slope division
-  and an entry-x division of \`Q = 15\` iterations each, plus the boundary steps — at least 33
-  cycles for almost every triangle. Its walk is one cycle per row (per N rows).
+  and an entry-x division, plus the boundary steps. With the default adaptive divider a division
+  runs \`bits(box extent) + 1\` iterations (4 for an 8-pixel box), with the fixed one always
+  \`Q = 15\` (last column). Its walk is one cycle per row (per N rows).
 - The traditional unit's set-up is 3 cycles (no divider), and its walk costs, per row, the Bresenham
   steps of the busier of its two edge walkers (at least one cycle): x-major edges cost a cycle per
   pixel of edge, and it walks every row of the triangle, also off-screen.
 
 So the improved unit wins where triangles are large or have long x-major edges (near scenes,
 low-poly meshes, whole-screen and off-screen parts), and loses where triangles are a few pixels
-(high-poly far, dense meshes), where its fixed division cost per triangle dominates. N = 4 changes
-little while the set-up is the bottleneck; \`divide\` mode trades boundary steps for a third
-division, which helps tall boxes only.
+(high-poly far, dense meshes), where even a short division per edge costs more than the
+traditional unit's few steps. N = 4 changes little while the set-up is the bottleneck; \`divide\`
+mode trades boundary steps for a third division, which helps tall boxes only.
 DOC
 mv "$tmp" "$out"
 echo "cycles_table: wrote $out"

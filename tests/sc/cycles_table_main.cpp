@@ -51,8 +51,9 @@ int sc_main(int argc, char** argv) {
   };
   std::printf(
       "| scene | triangles | improved cycles | trad cycles | improved vs trad | improved cyc/tri "
-      "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide |\n");
-  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|\n");
+      "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide | "
+      "improved fixed divider |\n");
+  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|\n");
   uint64_t sum_i = 0, sum_t = 0;
   for (const Entry& e : scenes) {
     RasterConfig cfg;
@@ -75,17 +76,22 @@ int sc_main(int argc, char** argv) {
     RasterConfig cfgd = cfg;
     cfgd.boundary = BoundaryMode::Divide;
     const Run id = run(*model, setup, cfgd);
+    RasterConfig cfgf = cfg;
+    cfgf.divider = DividerMode::Fixed;
+    const Run ifx = run(*model, setup, cfgf);
     sum_i += i.cycles;
     sum_t += t.cycles;
     std::printf(
-        "| %s | %zu | %llu | %llu | %s | %.1f (%.1f, %.1f) | %.1f (%.1f, %.1f) | %llu | %llu |\n",
+        "| %s | %zu | %llu | %llu | %s | %.1f (%.1f, %.1f) | %.1f (%.1f, %.1f) | %llu | %llu | "
+        "%llu |\n",
         e.label.c_str(), setup.tris.size(), (unsigned long long)i.cycles,
         (unsigned long long)t.cycles, pct(double(i.cycles), double(t.cycles)).c_str(),
         double(i.cycles) / n, double(i.setup_busy) / n, double(i.walk_busy) / n,
         double(t.cycles) / n, double(t.setup_busy) / n, double(t.walk_busy) / n,
-        (unsigned long long)i4.cycles, (unsigned long long)id.cycles);
+        (unsigned long long)i4.cycles, (unsigned long long)id.cycles,
+        (unsigned long long)ifx.cycles);
   }
-  std::printf("| **all** | | %llu | %llu | %s | | | | |\n", (unsigned long long)sum_i,
+  std::printf("| **all** | | %llu | %llu | %s | | | | | |\n", (unsigned long long)sum_i,
               (unsigned long long)sum_t, pct(double(sum_i), double(sum_t)).c_str());
   return 0;
 }
