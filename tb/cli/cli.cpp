@@ -513,6 +513,8 @@ void print_usage() {
       "  scenes    list the built-in scenes\n"
       "  engines   list the engines\n"
       "  fuzz      random scenes through several engines; a disagreement becomes a .tri reproducer\n"
+      "  sweep     engines x configurations x scenes: cycles, area and time against error\n"
+      "  fit       the smallest configuration that is exact (or within an error budget) on a scene\n"
       "\n"
       "exit status: 0 success, 1 an exact engine disagrees with the golden, 2 bad input or usage\n";
 }
@@ -535,6 +537,8 @@ int run_cli(int argc, char** argv) {
     if (cmd == "scenes") return cmd_scenes(argc, argv);
     if (cmd == "engines") return cmd_engines(argc, argv);
     if (cmd == "fuzz") return cmd_fuzz(argc, argv);
+    if (cmd == "sweep") return cmd_sweep(argc, argv);
+    if (cmd == "fit") return cmd_fit(argc, argv);
     throw UsageError("trirast: unknown command '" + cmd + "' (see trirast --help)");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "%s\n", e.what());

@@ -170,6 +170,7 @@ int cmd_fuzz(int argc, char** argv) {
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   double next_report = 1.0;
   uint64_t scenes = 0, triangles = 0, pixels = 0, disagreements = 0, written = 0;
+  std::vector<uint64_t> skips(engines.size(), 0);  // scenes an engine's build does not cover
   auto progress = [&] {
     std::fprintf(stderr, "fuzz: %.1f s, %llu triangles, %llu disagreements\n", elapsed(),
                  (unsigned long long)triangles, (unsigned long long)disagreements);
@@ -182,7 +183,11 @@ int cmd_fuzz(int argc, char** argv) {
     const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris));
     triangles += tris.size();
     uint64_t golden_pixels = 0;
-    const std::vector<FuzzDisagreement> found = check_engines(tris, cfg, engines, &golden_pixels);
+    std::vector<std::string> skipped;
+    const std::vector<FuzzDisagreement> found =
+        check_engines(tris, cfg, engines, &golden_pixels, &skipped);
+    for (const std::string& name : skipped)
+      for (size_t i = 0; i < engines.size(); ++i) skips[i] += engines[i]->name == name;
     pixels += golden_pixels;
     if (!found.empty()) {
       ++disagreements;
@@ -223,6 +228,10 @@ int cmd_fuzz(int argc, char** argv) {
   std::printf("  ran        %.1f s, %llu scenes, %llu triangles, %llu golden pixels (%.0f triangles/s)\n",
               total, (unsigned long long)scenes, (unsigned long long)triangles,
               (unsigned long long)pixels, total > 0 ? double(triangles) / total : 0.0);
+  for (size_t i = 0; i < engines.size(); ++i)
+    if (skips[i])
+      std::printf("  skipped    %s: %llu of %llu scenes had a configuration its build does not cover\n",
+                  names[i].c_str(), (unsigned long long)skips[i], (unsigned long long)scenes);
   std::printf("  result     %llu disagreements%s\n", (unsigned long long)disagreements,
               disagreements ? (", " + std::to_string(written) + " reproducers in " + out_dir).c_str()
                             : "");
