@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
-./scripts/build.sh
+./scripts/build.sh trirast
 out=out/demo
 mkdir -p "$out"
 scene="builtin:mixed"

@@ -39,6 +39,10 @@ struct RasterConfig {
   int box_bits = 14;         // unsigned bits of a box-relative pixel coordinate (box <= 2^box_bits)
   BoundaryMode boundary = BoundaryMode::Step;
   DividerMode divider = DividerMode::Adaptive;
+  // Quotient truncation (the sweep's "divider width", docs/speed-vs-error.md): 0 = automatic (the
+  // exact default: Q, or the bits the box needs); K > 0 caps every division at K quotient bits,
+  // so a quotient >= 2^K saturates (read as "beyond the box") and the unit is no longer exact.
+  int divider_quotient_bits = 0;
 
   // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
   int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)

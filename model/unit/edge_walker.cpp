@@ -1,5 +1,7 @@
 #include "unit/edge_walker.hpp"
 
+#include <algorithm>
+
 #include "core/fixed_point.hpp"
 
 namespace trirast {
@@ -13,6 +15,9 @@ DivideResult EdgeWalker::divide(int64_t n, int64_t d, const char* what, char alo
   int bits = 0;
   if (cfg_.divider == DividerMode::Adaptive)
     bits = unsigned_bits(uint64_t(along == 'x' ? Xmax_ : Ymax_)) + 1;
+  // Truncation: a K-bit divider saturates above 2^K - 1 (inexact unless the box fits K bits).
+  const int cap = cfg_.divider_quotient_bits;
+  if (cap > 0 && (bits == 0 || bits > cap)) bits = std::min(cap, divider_.quotient_bits());
   const DivideResult r = divider_.divide(n, d, tri_, what, bits);
   ++work_.divisions;
   work_.divider_iterations += uint64_t(r.iterations);

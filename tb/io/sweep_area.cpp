@@ -1,0 +1,229 @@
+#include "io/sweep_area.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace trirast {
+
+const char* unit_kind_name(UnitKind k) {
+  switch (k) {
+    case UnitKind::Improved: return "improved";
+    case UnitKind::Trad: return "trad";
+    case UnitKind::Cpu: return "cpu";
+    default: return "golden";
+  }
+}
+
+namespace {
+
+constexpr int kTagBits = 32;  // the triangle tag carried with every span (docs/synth.md)
+
+double log2_ceil(int v) { return v <= 1 ? 0.0 : std::ceil(std::log2(double(v))); }
+
+// The span FIFO: DEPTH entries of tag, y, x_begin, x_end (pixel coordinates: coord bits each).
+AreaTerms fifo_terms(const RasterConfig& cfg, int write_ports) {
+  const double entry = kTagBits + 3.0 * cfg.coord_int_bits;
+  AreaTerms t;
+  t.ffs = cfg.fifo_depth * entry + 2 * (log2_ceil(cfg.fifo_depth) + 1);
+  t.luts = entry * (log2_ceil(cfg.fifo_depth) / 2.0 + write_ports);
+  return t;
+}
+
+std::string trim(const std::string& s) {
+  const size_t a = s.find_first_not_of(" \t\r\n\"");
+  if (a == std::string::npos) return "";
+  const size_t b = s.find_last_not_of(" \t\r\n\"");
+  return s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, sep)) out.push_back(trim(item));
+  return out;
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+// Improved unit, from docs/unit.md "Widths": p = coord + F, edge values 2p + 2, steps and
+// remainders p + F, box box_bits, quotient Q (or the truncated K), walker X' Q + 2.
+// Flip-flops: every register of the stages; LUTs: one per adder / comparator bit, one per 2:1 mux
+// bit (the nine corner-value products are DSPs on Xilinx and not counted).
+AreaTerms improved_area_terms(const RasterConfig& cfg) {
+  const double F = cfg.frac_bits(), p = cfg.coord_int_bits + F, c = cfg.coord_int_bits;
+  const double A = p + 1, D = p + F, E = 2 * p + 2, bb = cfg.box_bits;
+  const int qfull = cfg.box_bits + 1;
+  const double Q = cfg.divider_quotient_bits > 0 ? std::min(cfg.divider_quotient_bits, qfull) : qfull;
+  const double X = Q + 2, N = cfg.endpoints;
+  AreaTerms t;
+  // Flip-flops.
+  t.ffs += 6 * p + 3 * (2 * A + E + 1);                     // triangle register (v, A, B, C, bias)
+  t.ffs += 4 * c + 2 * bb + 3 * 2 * E;                      // interface: box, Xmax, Ymax, E_L, E_R
+  t.ffs += 3 * (2 * E + 2 * D + E + Q + log2_ceil(qfull + 1) + E + Q + D + bb + X + D + 6);
+  //        lanes: T, T1, D, s, remainder, quotient, counter, boundary value, results, flags
+  t.ffs += 3 * (X + D + 2) + bb + 4 * c + 4;               // walk stage: X', e, state; row; box
+  // LUTs.
+  t.luts += 10 * p + 6 * E;                                 // box min/max/rounding, corner sums
+  t.luts += 3 * (2 * E + 2 * D);                            // normalizers: negate / mirror
+  t.luts += 3 * (2 * E + E + E + Q);                        // divider, saturation, boundary step
+  t.luts += 3 * N * (3 * X + 3 * D);                        // Bresenham steps, N rows per cycle
+  t.luts += N * (5 * X + 2 * c);                            // span generator, N rows
+  const AreaTerms f = fifo_terms(cfg, cfg.endpoints);
+  t.ffs += f.ffs;
+  t.luts += f.luts;
+  return t;
+}
+
+// Traditional unit (docs/timing.md, "The traditional unit"): integer pixel vertices (coord bits
+// c), three Bresenham lines (x, y, dx, dy, error), two walkers, the span filler, the same FIFO.
+AreaTerms trad_area_terms(const RasterConfig& cfg) {
+  const double F = cfg.frac_bits(), p = cfg.coord_int_bits + F, c = cfg.coord_int_bits;
+  const double cp = c + 1;
+  AreaTerms t;
+  t.ffs += 6 * p + 6 * c + 6 * c;                           // input, quantized, sorted vertices
+  t.ffs += 3 * (2 * c + 2 * cp + (cp + 1) + 2);             // three lines: x, y, dx, dy, err, dirs
+  t.ffs += 2 * (2 * c + cp + 1) + 2 * c + c + 4;            // walkers, span min/max, row, state
+  t.luts += 3 * c + 12 * c + 2 * cp;                        // sort, collinearity
+  t.luts += 3 * (2 * c + 2 * c + cp);                       // line set-up: deltas, abs, err init
+  t.luts += 2 * (2 * cp + 2 * c + c + 2 * c);               // walkers: err, x, y, compares, muxes
+  t.luts += 6 * c;                                          // span filler: min/max, clip
+  const AreaTerms f = fifo_terms(cfg, 1);
+  t.ffs += f.ffs;
+  t.luts += f.luts;
+  return t;
+}
+
+AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_script) {
+  // Configuration names -> widths: scripts/synth.sh's CONFIGS line, else the names it used.
+  std::map<std::string, std::vector<int>> widths = {
+      {"default", {8, 16, 14}}, {"small", {4, 12, 10}}, {"wide", {8, 20, 14}}};
+  {
+    std::ifstream script(synth_script);
+    std::string line;
+    while (std::getline(script, line)) {
+      const size_t at = line.find("CONFIGS=\"");
+      if (at != 0) continue;
+      const std::string list = line.substr(9, line.find('"', 9) - 9);
+      for (const std::string& item : split(list, ' ')) {
+        const auto f = split(item, ':');
+        if (f.size() != 4) continue;
+        try {
+          widths[f[0]] = {std::stoi(f[1]), std::stoi(f[2]), std::stoi(f[3])};
+        } catch (const std::exception&) {
+        }
+      }
+    }
+  }
+  std::ifstream in(synth_csv);
+  if (!in) return;  // no synthesis yet: estimates only
+  std::string line;
+  int lineno = 0;
+  std::map<std::string, int> col;
+  while (std::getline(in, line)) {
+    ++lineno;
+    if (trim(line).empty()) continue;
+    const auto f = split(line, ',');
+    if (col.empty()) {
+      for (size_t i = 0; i < f.size(); ++i) col[lower(f[i])] = int(i);
+      for (const char* need : {"unit", "config", "target", "luts", "ffs"})
+        if (!col.count(need))
+          throw std::runtime_error(synth_csv + ":1: no column '" + need + "'");
+      continue;
+    }
+    auto get = [&](const char* name) -> std::string {
+      const size_t i = size_t(col[name]);
+      return i < f.size() ? f[i] : "";
+    };
+    SynthRow r;
+    r.unit = lower(get("unit"));
+    r.config = get("config");
+    r.target = get("target");
+    try {
+      r.luts = std::stod(get("luts"));
+      r.ffs = std::stod(get("ffs"));
+    } catch (const std::exception&) {
+      continue;  // a row without numbers (a failed synthesis) is skipped
+    }
+    auto w = widths.find(r.config);
+    if (w == widths.end()) continue;  // a configuration the sweep cannot place
+    r.subpixel_bits = w->second[0];
+    r.coord_bits = w->second[1];
+    r.box_bits = w->second[2];
+    rows_.push_back(r);
+  }
+  // One target for every number: Xilinx 7 when present (the paper's FPGA LUTs), else the first.
+  for (const SynthRow& r : rows_)
+    if (lower(r.target).find("xilinx") != std::string::npos || lower(r.target).find("xc7") == 0) {
+      target_ = r.target;
+      break;
+    }
+  if (target_.empty() && !rows_.empty()) target_ = rows_.front().target;
+  rows_.erase(std::remove_if(rows_.begin(), rows_.end(),
+                             [&](const SynthRow& r) { return r.target != target_; }),
+              rows_.end());
+  // Calibrate the estimate to the synthesized default improved unit.
+  const RasterConfig def;
+  if (const SynthRow* d = find("improved", def)) {
+    const AreaTerms t = improved_area_terms(def);
+    lut_scale_ = d->luts / t.luts;
+    ff_scale_ = d->ffs / t.ffs;
+  }
+}
+
+const SynthRow* AreaModel::find(const std::string& unit, const RasterConfig& cfg) const {
+  for (const SynthRow& r : rows_)
+    if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
+        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits)
+      return &r;
+  return nullptr;
+}
+
+Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
+  Area a;
+  if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;  // no hardware
+  const RasterConfig synth_like;  // what synthesis fixes: N = 1, FIFO 8, no truncation
+  const bool fixed_match = cfg.endpoints == synth_like.endpoints &&
+                           cfg.fifo_depth == synth_like.fifo_depth &&
+                           (kind == UnitKind::Trad || cfg.divider_quotient_bits == 0);
+  if (fixed_match)
+    if (const SynthRow* r = find(unit_kind_name(kind), cfg)) {
+      a.luts = r->luts;
+      a.ffs = r->ffs;
+      a.source = "synth:" + r->target;
+      return a;
+    }
+  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
+  a.luts = std::round(t.luts * lut_scale_);
+  a.ffs = std::round(t.ffs * ff_scale_);
+  a.source = "estimate";
+  return a;
+}
+
+std::string AreaModel::formula_text() const {
+  std::ostringstream s;
+  s << "Estimate (tb/io/sweep_area.cpp): flip-flops = the bits of every register of the stages; "
+       "LUTs = one per adder, comparator and 2:1 multiplexer bit; from the widths of docs/unit.md "
+       "(p = coord + F, edge values 2p + 2, steps and remainders p + F, box bits, quotient Q or the "
+       "truncated K, walker Q + 2), the walker adders and span generator counted N times for N "
+       "endpoints, a span FIFO of DEPTH x (32-bit tag + 3 x coord) bits; the traditional unit from "
+       "integer pixel coordinates (three Bresenham lines, two walkers, span filler, the same "
+       "FIFO). ";
+  if (lut_scale_ != 1 || ff_scale_ != 1)
+    s << "Scaled to the synthesized default improved unit (" << target_ << "): LUT x "
+      << lut_scale_ << ", FF x " << ff_scale_ << ".";
+  else
+    s << "Unscaled (no synthesis of the default improved unit was found).";
+  return s.str();
+}
+
+}  // namespace trirast

@@ -1,0 +1,426 @@
+// The Verilated RTL (rtl/, engine "rtl"): spans identical to the golden on the hard cases, 10,000
+// random triangles and the meshes; cycles equal to docs/timing.md, both in closed form and against
+// an independent cycle-by-cycle reference written from that document (below); configuration
+// errors; the FST trace of a window read back with fst2vcd.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/setup.hpp"
+#include "core/sink_pattern.hpp"
+#include "golden/golden.hpp"
+#include "rtl_engine.hpp"
+#include "scene/scene.hpp"
+#include "support/reference_raster.hpp"
+#include "trirast_rtl_params.hpp"
+#include "unit/improved_unit.hpp"
+#include "unit/unit_widths.hpp"
+
+namespace trirast {
+namespace {
+
+RasterConfig default_cfg() {
+  RasterConfig cfg;
+  cfg.validate();
+  return cfg;
+}
+
+EngineResult run_rtl(const SetupResult& setup, const RasterConfig& cfg, uint32_t seed = 1) {
+  EngineResult r;
+  rtl::RtlRunOptions opt;
+  opt.x_seed = seed;
+  rtl::run_rtl(setup, cfg, opt, r);
+  return r;
+}
+
+SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
+  EngineResult r;
+  make_golden_engine()->run(setup, cfg, r);
+  sort_spans(r.spans);
+  return r.spans;
+}
+
+void expect_golden(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
+  EngineResult r = run_rtl(setup, cfg);
+  sort_spans(r.spans);
+  const SpanList g = golden_spans(setup, cfg);
+  ASSERT_EQ(r.spans.size(), g.size()) << what;
+  for (size_t i = 0; i < g.size(); ++i)
+    ASSERT_EQ(r.spans[i], g[i]) << what << ": span " << i << " (triangle " << g[i].tri << ")";
+  ASSERT_EQ(r.cycles.size(), setup.tris.size()) << what;
+}
+
+SetupResult builtin(const std::string& name, const RasterConfig& cfg) {
+  return setup_scene(make_builtin(name, cfg, CameraOptions{}).tris, cfg);
+}
+
+// ---- an independent cycle reference, written from docs/timing.md ----
+
+struct RefTriangle {
+  bool empty;
+  uint64_t L;             // max over the lanes of boundary_steps_k + divider_iterations_k
+  int64_t rows;           // Ymax + 1
+  std::vector<bool> has;  // has[j]: row j has a span
+};
+
+std::vector<RefTriangle> ref_triangles(const SetupResult& setup, const RasterConfig& cfg) {
+  ImprovedUnit unit(cfg);
+  std::vector<RefTriangle> out;
+  for (const TriangleSetup& t : setup.tris) {
+    SpanList spans;
+    const UnitTriangleResult r = unit.run_triangle(t, spans);
+    RefTriangle rt{r.iface.empty, 0, 0, {}};
+    if (!rt.empty) {
+      for (int k = 0; k < 3; ++k)
+        rt.L = std::max(rt.L, r.work.edge[k].boundary_steps + r.work.edge[k].divider_iterations);
+      rt.rows = r.iface.Ymax + 1;
+      rt.has.assign(size_t(rt.rows), false);
+      for (const Span& s : spans) rt.has[size_t(s.y - r.iface.y0)] = true;
+    }
+    out.push_back(rt);
+  }
+  return out;
+}
+
+std::vector<TriangleCycles> reference_cycles(const SetupResult& setup, const RasterConfig& cfg) {
+  const std::vector<RefTriangle> tris = ref_triangles(setup, cfg);
+  const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);
+  const size_t n = tris.size();
+  const int64_t N = cfg.endpoints;
+  const size_t depth = size_t(cfg.fifo_depth);
+  std::vector<TriangleCycles> out(n);
+  for (size_t p = 0; p < n; ++p) out[p] = TriangleCycles{setup.tris[p].index, 0, 0, 0, 0, 0, 0};
+  enum { Idle, Box, Edge, Lanes, Hold } setup_st = Idle;
+  size_t next = 0, cur = 0;  // next to accept; the one in setup
+  uint64_t hold_from = 0;
+  bool walking = false;
+  size_t wtri = 0;
+  int64_t wrow = 0;
+  bool wany = false;
+  std::deque<size_t> fifo;
+  for (uint64_t c = 0; c < (uint64_t(1) << 32); ++c) {
+    const size_t count0 = fifo.size();  // occupancy at the start of the cycle
+    const bool walk_idle = !walking;
+    // Sink: pop the oldest span.
+    if (count0 > 0 && sink.ready(c)) {
+      TriangleCycles& tc = out[fifo.front()];
+      if (tc.spans == 0) tc.first_span_cycle = c;
+      tc.done_cycle = c;
+      ++tc.spans;
+      fifo.pop_front();
+    }
+    // Walk stage: a group when count <= DEPTH - N at the start of the cycle, else a stall.
+    std::vector<size_t> pushes;
+    if (walking) {
+      const RefTriangle& t = tris[wtri];
+      if (count0 + size_t(N) <= depth) {
+        for (int64_t r = 0; r < N && wrow <= t.rows - 1; ++r, ++wrow)
+          if (t.has[size_t(wrow)]) pushes.push_back(wtri);
+        wany = wany || !pushes.empty();
+        if (wrow >= t.rows) {
+          walking = false;  // idle from c + 1
+          if (!wany) out[wtri].first_span_cycle = out[wtri].done_cycle = c;
+        }
+      } else {
+        ++out[wtri].stall_cycles;
+      }
+    }
+    for (size_t p : pushes) fifo.push_back(p);
+    // Setup stage.
+    switch (setup_st) {
+      case Idle:
+        if (next < n) {
+          cur = next++;
+          out[cur].accept_cycle = c;
+          setup_st = Box;
+        }
+        break;
+      case Box:
+        if (tris[cur].empty) {
+          out[cur].first_span_cycle = out[cur].done_cycle = c;
+          setup_st = Idle;
+        } else {
+          setup_st = Edge;
+        }
+        break;
+      case Edge:
+        hold_from = c + 1 + tris[cur].L;  // a + 3 + L
+        setup_st = tris[cur].L > 0 ? Lanes : Hold;
+        break;
+      case Lanes:
+        if (c + 1 >= hold_from) setup_st = Hold;
+        break;
+      case Hold:
+        if (walk_idle) {  // hand-off at the end of c; the walk stage walks from c + 1
+          walking = true;
+          wtri = cur;
+          wrow = 0;
+          wany = false;
+          setup_st = Idle;
+        }
+        break;
+    }
+    // Everything accepted, setup idle, walk idle, FIFO empty.
+    if (next == n && setup_st == Idle && !walking && fifo.empty()) break;
+  }
+  return out;
+}
+
+void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
+  const std::vector<TriangleCycles> ref = reference_cycles(setup, cfg);
+  const EngineResult r = run_rtl(setup, cfg);
+  ASSERT_EQ(r.cycles.size(), ref.size()) << what;
+  for (size_t p = 0; p < ref.size(); ++p) {
+    const TriangleCycles &a = r.cycles[p], &b = ref[p];
+    ASSERT_EQ(a.tri, b.tri) << what;
+    ASSERT_EQ(a.accept_cycle, b.accept_cycle) << what << ": triangle " << a.tri;
+    ASSERT_EQ(a.first_span_cycle, b.first_span_cycle) << what << ": triangle " << a.tri;
+    ASSERT_EQ(a.done_cycle, b.done_cycle) << what << ": triangle " << a.tri;
+    ASSERT_EQ(a.spans, b.spans) << what << ": triangle " << a.tri;
+    ASSERT_EQ(a.stall_cycles, b.stall_cycles) << what << ": triangle " << a.tri;
+  }
+}
+
+InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
+  InputTriangle t{};
+  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
+  return t;
+}
+
+std::vector<InputTriangle> random_tris(uint64_t seed, int count, double max_size) {
+  test::TestRng rng(seed);
+  return test::random_grid_triangles(rng, count, -40.0, 1064.0, -40.0, 808.0, 8, max_size);
+}
+
+// ---- parameters ----
+
+TEST(RtlParams, GeneratedWidthsEqualTheModels) {
+  const UnitWidths w = unit_widths(default_cfg());
+  EXPECT_EQ(rtl::kFracBits, w.frac);
+  EXPECT_EQ(rtl::kVertexBits, w.vertex);
+  EXPECT_EQ(rtl::kCoefBits, w.edge_coef);
+  EXPECT_EQ(rtl::kStepBits, w.step);
+  EXPECT_EQ(rtl::kEdgeBits, w.edge_value);
+  EXPECT_EQ(rtl::kBoxBits, w.box);
+  EXPECT_EQ(rtl::kQuotBits, w.quotient);
+  EXPECT_EQ(rtl::kRemBits, w.remainder);
+  EXPECT_EQ(rtl::kWalkerXBits, w.walker_x);
+  EXPECT_EQ(rtl::kNumerBits, w.numerator);
+  EXPECT_EQ(rtl::kSubpixelBits, default_cfg().subpixel_bits);
+  EXPECT_EQ(rtl::kCoordIntBits, default_cfg().coord_int_bits);
+}
+
+TEST(RtlConfig, UnbuiltWidthsAreRejectedNamingTheOption) {
+  const RasterConfig base = default_cfg();
+  const SetupResult setup = setup_scene({tri(1, 1, 9, 2, 3, 8)}, base);
+  auto message = [&](RasterConfig cfg) {
+    try {
+      run_rtl(setup, cfg);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  RasterConfig c = base;
+  c.subpixel_bits = 4;
+  EXPECT_NE(message(c).find("--subpixel-bits"), std::string::npos) << message(c);
+  c = base;
+  c.coord_int_bits = 12;
+  EXPECT_NE(message(c).find("--coord-bits"), std::string::npos) << message(c);
+  c = base;
+  c.box_bits = 10;
+  EXPECT_NE(message(c).find("--box-bits"), std::string::npos) << message(c);
+}
+
+// ---- spans against the golden ----
+
+TEST(RtlGolden, HardCases) { expect_golden(builtin("hard-all", default_cfg()), default_cfg(), "hard-all"); }
+
+TEST(RtlGolden, TenThousandRandomTriangles) {
+  const RasterConfig cfg = default_cfg();
+  const SetupResult setup = setup_scene(random_tris(0x7269a5u, 10000, 120.0), cfg);
+  expect_golden(setup, cfg, "random 10000");
+}
+
+TEST(RtlGolden, Meshes) {
+  const RasterConfig cfg = default_cfg();
+  for (const char* m : {"sphere", "torus", "mixed"}) expect_golden(builtin(m, cfg), cfg, m);
+}
+
+TEST(RtlGolden, DivideBoundaryFixedDividerFourEndpoints) {
+  RasterConfig cfg = default_cfg();
+  cfg.boundary = BoundaryMode::Divide;
+  cfg.divider = DividerMode::Fixed;
+  cfg.endpoints = 4;
+  cfg.sink_stall = "random:3:40";
+  expect_golden(builtin("hard-all", cfg), cfg, "hard-all divide/fixed/N=4");
+}
+
+TEST(RtlGolden, IndependentOfTheXSeed) {
+  const RasterConfig cfg = default_cfg();
+  const SetupResult setup = builtin("hard-tiny", cfg);
+  const EngineResult a = run_rtl(setup, cfg, 1), b = run_rtl(setup, cfg, 12345);
+  ASSERT_EQ(a.spans.size(), b.spans.size());
+  for (size_t i = 0; i < a.spans.size(); ++i) EXPECT_EQ(a.spans[i], b.spans[i]);
+  EXPECT_EQ(a.total_cycles, b.total_cycles);
+}
+
+// ---- cycles: closed form (docs/timing.md, "Closed form for one triangle") ----
+
+TEST(RtlCycles, LoneTriangleClosedForm) {
+  const RasterConfig cfg = default_cfg();
+  for (const InputTriangle& t : {tri(10.2, 10.7, 30.5, 14.1, 17.3, 40.9), tri(100, 100, 160, 103, 90, 190),
+                                 tri(5, 5, 6.5, 5, 5, 300), tri(0.1, 0.1, 900, 2, 300, 700)}) {
+    const SetupResult setup = setup_scene({t}, cfg);
+    ASSERT_EQ(setup.tris.size(), 1u);
+    const RefTriangle rt = ref_triangles(setup, cfg)[0];
+    ASSERT_FALSE(rt.empty);
+    const uint64_t h = 3 + rt.L;
+    int64_t jf = -1, jl = -1;
+    for (int64_t j = 0; j < rt.rows; ++j)
+      if (rt.has[size_t(j)]) {
+        if (jf < 0) jf = j;
+        jl = j;
+      }
+    ASSERT_GE(jf, 0);
+    const EngineResult r = run_rtl(setup, cfg);
+    ASSERT_EQ(r.cycles.size(), 1u);
+    EXPECT_EQ(r.cycles[0].accept_cycle, 0u);
+    EXPECT_EQ(r.cycles[0].first_span_cycle, h + 2 + uint64_t(jf));
+    EXPECT_EQ(r.cycles[0].done_cycle, h + 2 + uint64_t(jl));
+    EXPECT_EQ(r.cycles[0].stall_cycles, 0u);
+    EXPECT_EQ(r.total_cycles, h + 3 + uint64_t(jl));
+  }
+}
+
+TEST(RtlCycles, BackToBackPairAcceptsTheSecondAfterTheHandOff) {
+  const RasterConfig cfg = default_cfg();
+  const SetupResult setup =
+      setup_scene({tri(10, 10, 40, 12, 20, 50), tri(100, 20, 130, 25, 110, 28)}, cfg);
+  const RefTriangle t0 = ref_triangles(setup, cfg)[0];
+  const EngineResult r = run_rtl(setup, cfg);
+  EXPECT_EQ(r.cycles[1].accept_cycle, 3 + t0.L + 1);  // h0 + 1
+  expect_cycles(setup, cfg, "pair");
+}
+
+TEST(RtlCycles, EmptyBoxRetiresInTheBoxCycle) {
+  const RasterConfig cfg = default_cfg();
+  // Off screen, then a sub-pixel triangle between centres, then a visible one.
+  const SetupResult setup = setup_scene(
+      {tri(-50, -50, -40, -45, -45, -30), tri(3.6, 3.6, 3.9, 3.6, 3.6, 3.9), tri(1, 1, 9, 2, 3, 8)},
+      cfg);
+  ASSERT_EQ(setup.tris.size(), 3u);
+  const EngineResult r = run_rtl(setup, cfg);
+  EXPECT_EQ(r.cycles[0].accept_cycle, 0u);
+  EXPECT_EQ(r.cycles[0].done_cycle, 1u);
+  EXPECT_EQ(r.cycles[0].first_span_cycle, 1u);
+  EXPECT_EQ(r.cycles[1].accept_cycle, 2u);
+  EXPECT_EQ(r.cycles[1].done_cycle, 3u);
+  EXPECT_EQ(r.cycles[2].accept_cycle, 4u);
+  expect_cycles(setup, cfg, "empty boxes");
+}
+
+// ---- cycles: against the reference, many configurations ----
+
+TEST(RtlCycles, HardTinyEmptyBoxesAndTrianglesWithoutSpans) {
+  RasterConfig cfg = default_cfg();
+  expect_cycles(builtin("hard-tiny", cfg), cfg, "hard-tiny");
+  cfg.sink_stall = "periodic:2:3";
+  expect_cycles(builtin("hard-tiny", cfg), cfg, "hard-tiny periodic");
+}
+
+TEST(RtlCycles, RandomTrianglesAllSinksAndEndpoints) {
+  const std::vector<InputTriangle> tris = random_tris(0xc1c1e5u, 1500, 60.0);
+  for (int N : {1, 2, 4})
+    for (const char* sink : {"none", "periodic:3:2", "random:11:35"})
+      for (int depth : {N, 8}) {
+        RasterConfig cfg = default_cfg();
+        cfg.endpoints = N;
+        cfg.fifo_depth = depth;
+        cfg.sink_stall = sink;
+        expect_cycles(setup_scene(tris, cfg), cfg,
+                      "N=" + std::to_string(N) + " depth=" + std::to_string(depth) + " " + sink);
+      }
+}
+
+TEST(RtlCycles, BoundaryAndDividerModes) {
+  for (BoundaryMode b : {BoundaryMode::Step, BoundaryMode::Divide})
+    for (DividerMode d : {DividerMode::Adaptive, DividerMode::Fixed}) {
+      RasterConfig cfg = default_cfg();
+      cfg.boundary = b;
+      cfg.divider = d;
+      cfg.sink_stall = "random:5:20";
+      cfg.endpoints = 2;
+      expect_cycles(builtin("hard-all", cfg), cfg,
+                    std::string(boundary_mode_name(b)) + "/" + divider_mode_name(d));
+    }
+}
+
+TEST(RtlCycles, BackPressureStalls) {
+  RasterConfig cfg = default_cfg();
+  cfg.sink_stall = "periodic:1:7";
+  cfg.fifo_depth = 2;
+  const SetupResult setup = setup_scene({tri(10, 10, 200, 14, 30, 120)}, cfg);
+  const EngineResult r = run_rtl(setup, cfg);
+  EXPECT_GT(r.cycles[0].stall_cycles, 50u);
+  expect_cycles(setup, cfg, "back-pressure");
+}
+
+// ---- the trace ----
+
+std::string read_file(const std::string& path) {
+  std::ifstream f(path);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  return ss.str();
+}
+
+TEST(RtlTrace, FstWindowOfALargeSceneHasTheHandshakes) {
+  RasterConfig cfg = default_cfg();
+  const std::string dir = testing::TempDir();
+  const std::string fst = dir + "/rtl_window.fst", vcd = dir + "/rtl_window_readback.vcd";
+  cfg.trace_path = fst;
+  cfg.trace_first = 1000;
+  cfg.trace_last = 1010;
+  const SetupResult setup = builtin("sphere", cfg);
+  ASSERT_GT(setup.tris.size(), 1100u);
+  const EngineResult r = run_rtl(setup, cfg);
+  ASSERT_EQ(std::system(("fst2vcd -f '" + fst + "' -o '" + vcd + "'").c_str()), 0);
+  const std::string text = read_file(vcd);
+  for (const char* sig : {"tri_valid_i", "tri_ready_o", "span_valid_o", "span_ready_i", "clk_i"})
+    EXPECT_NE(text.find(std::string(" ") + sig + " "), std::string::npos) << sig;
+  // Only the window: its first timestamp is the cycle triangle 1000 is on the port.
+  size_t p1000 = 0;
+  while (setup.tris[p1000].index < 1000) ++p1000;
+  const uint64_t first = 2 * (r.cycles[p1000 - 1].accept_cycle + 1);
+  const size_t t = text.find("\n#");
+  ASSERT_NE(t, std::string::npos);
+  EXPECT_EQ(std::stoull(text.substr(t + 2)), first);
+  // ... and its last one the cycle after triangle 1010 is done.
+  size_t p1010 = p1000;
+  while (p1010 + 1 < setup.tris.size() && setup.tris[p1010 + 1].index <= 1010) ++p1010;
+  const size_t last = text.rfind("\n#");
+  const uint64_t last_t = std::stoull(text.substr(last + 2));
+  EXPECT_GE(last_t, 2 * r.cycles[p1010].done_cycle + 1);
+  EXPECT_LE(last_t, 2 * r.cycles[p1010].done_cycle + 4);
+}
+
+TEST(RtlTrace, VcdOutputIsConverted) {
+  RasterConfig cfg = default_cfg();
+  cfg.trace_path = testing::TempDir() + "/rtl_small.vcd";
+  const SetupResult setup = setup_scene({tri(1, 1, 9, 2, 3, 8)}, cfg);
+  run_rtl(setup, cfg);
+  const std::string text = read_file(cfg.trace_path);
+  EXPECT_NE(text.find("$enddefinitions"), std::string::npos);
+  EXPECT_NE(text.find(" span_valid_o "), std::string::npos);
+}
+
+}  // namespace
+}  // namespace trirast

@@ -1,0 +1,367 @@
+// Speed against error (issue 6): the sweep's outputs, its determinism, the error measurements,
+// the fit, the quotient truncation of the unit, and the area model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "core/engine.hpp"
+#include "io/sweep.hpp"
+#include "io/sweep_area.hpp"
+#include "scene/scene.hpp"
+#include "support/run_command.hpp"
+
+namespace trirast {
+namespace {
+
+using test::CommandResult;
+using test::file_exists;
+using test::run_command;
+using test::TempDir;
+using test::write_file;
+
+const std::string kBin = TRIRAST_BIN;
+const std::string kSource = TRIRAST_SOURCE_DIR;
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  bool quoted = false;
+  for (char c : s) {
+    if (c == '"') quoted = !quoted;
+    if (c == sep && !quoted) {
+      out.push_back(cur);
+      cur.clear();
+    } else {
+      cur += c;
+    }
+  }
+  out.push_back(cur);
+  return out;
+}
+
+// A CSV as rows of column -> value.
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::istringstream in(slurp(path));
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    const auto f = split(line, ',');
+    if (header.empty()) {
+      header = f;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (size_t i = 0; i < header.size() && i < f.size(); ++i) row[header[i]] = f[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+const std::map<std::string, std::string>* find_row(
+    const std::vector<std::map<std::string, std::string>>& rows, const std::string& engine,
+    const std::string& config, const std::string& scene = "") {
+  for (const auto& r : rows)
+    if (r.at("engine") == engine && r.at("config") == config &&
+        (scene.empty() || r.at("scene") == scene))
+      return &r;
+  return nullptr;
+}
+
+// The CSV without its timing columns (the only ones allowed to change between runs).
+std::string without_timings(const std::string& path) {
+  const auto rows = read_csv(path);
+  std::string out;
+  for (const auto& r : rows) {
+    for (const auto& [k, v] : r)
+      if (k != "wall_seconds" && k != "wall_ratio") out += k + "=" + v + ";";
+    out += "\n";
+  }
+  return out;
+}
+
+bool is_png(const std::string& path) {
+  const std::string s = slurp(path);
+  return s.size() > 1000 && s.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0;
+}
+
+// ---- the one command, quick mode --------------------------------------------------------------
+
+TEST(SweepScript, QuickModeWritesEveryOutput) {
+  TempDir dir;
+  const CommandResult r = run_command("TRIRAST_BIN=" + kBin + " " + kSource +
+                                      "/scripts/sweep.sh --quick --out " + dir.path());
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* f : {"data/sweep.csv", "data/sweep_configs.csv", "data/sweep.json",
+                        "data/fit_1.json", "data/fit_2.json", "data/fit_3.json",
+                        "data/fit_4.json", "speed-vs-error.md"})
+    EXPECT_TRUE(file_exists(dir.file(f)) && !slurp(dir.file(f)).empty()) << f;
+  for (const char* png : {"cycles_vs_error.png", "area_vs_error.png", "error_vs_subpixel.png",
+                          "improved_vs_trad.png"})
+    EXPECT_TRUE(is_png(dir.file(std::string("img/speed-vs-error/") + png))) << png;
+  const std::string md = slurp(dir.file("speed-vs-error.md"));
+  // Every image the report shows exists, relative to the report.
+  size_t at = 0;
+  int images = 0;
+  while ((at = md.find("](img/", at)) != std::string::npos) {
+    const size_t end = md.find(')', at);
+    const std::string rel = md.substr(at + 2, end - at - 2);
+    EXPECT_TRUE(is_png(dir.file(rel))) << rel;
+    ++images;
+    at = end;
+  }
+  EXPECT_EQ(images, 4);
+  for (const char* needle :
+       {"Pareto", "cycles front", "area front", "Improved vs traditional", "32%", "3,120", "4,653",
+        "3,728", "6,936", "float scanline", "Cracks and double hits", "trirast fit",
+        "builtin:sphere:tess=12", "builtin:lowpoly-near", "builtin:hard-tiny", "estimate",
+        "quick mode"})
+    EXPECT_NE(md.find(needle), std::string::npos) << "report lacks: " << needle;
+}
+
+// ---- the sweep itself -------------------------------------------------------------------------
+
+class QuickSweep : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = new TempDir;
+    one_ = run_command(kBin + " sweep --quick --no-progress --jobs 1 --out " + dir_->file("j1"));
+    two_ = run_command(kBin + " sweep --quick --no-progress --jobs 2 --out " + dir_->file("j2"));
+  }
+  static void TearDownTestSuite() { delete dir_; }
+  static TempDir* dir_;
+  static CommandResult one_, two_;
+};
+TempDir* QuickSweep::dir_ = nullptr;
+CommandResult QuickSweep::one_, QuickSweep::two_;
+
+TEST_F(QuickSweep, ParallelRunEqualsSerialExceptTimings) {
+  ASSERT_EQ(one_.status, 0) << one_.err;
+  ASSERT_EQ(two_.status, 0) << two_.err;
+  for (const char* f : {"sweep.csv", "sweep_configs.csv"}) {
+    const std::string a = without_timings(dir_->file(std::string("j1/") + f));
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, without_timings(dir_->file(std::string("j2/") + f))) << f;
+  }
+}
+
+TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
+  ASSERT_EQ(one_.status, 0) << one_.err;
+  const auto cfgs = read_csv(dir_->file("j1/sweep_configs.csv"));
+  // The default improved unit and the golden are exact and watertight.
+  for (const auto& [engine, config] : std::vector<std::pair<std::string, std::string>>{
+           {"golden", "S8 c16"}, {"model", "S8 c16 b14 K- N1"}, {"model", "S8 c16 b14 K- N4"},
+           {"model", "S8 c16 b14 K- N1 fixed"}}) {
+    const auto* r = find_row(cfgs, engine, config);
+    ASSERT_NE(r, nullptr) << engine << " " << config;
+    EXPECT_EQ(r->at("exact"), "1") << config;
+    EXPECT_EQ(r->at("cracks"), "0") << config;
+    EXPECT_EQ(r->at("doubles"), "0") << config;
+    EXPECT_EQ(r->at("failures"), "0") << config;
+  }
+  // Fewer subpixel bits, quotient truncation, a narrow box: measurable error, no failure.
+  for (const char* config : {"S0 c16 b14 K- N1", "S8 c16 b14 K6 N1", "S8 c16 b8 K- N1"}) {
+    const auto* r = find_row(cfgs, "model", config);
+    ASSERT_NE(r, nullptr) << config;
+    EXPECT_EQ(r->at("exact"), "0") << config;
+    EXPECT_GT(std::stod(r->at("error_ppm")), 0.0) << config;
+    EXPECT_EQ(r->at("failures"), "0") << config;
+  }
+  EXPECT_GT(std::stoi(find_row(cfgs, "model", "S8 c16 b8 K- N1")->at("rejected")), 0);
+  // Truncating the quotient saves divider iterations: fewer cycles than the default.
+  EXPECT_LT(std::stol(find_row(cfgs, "model", "S8 c16 b14 K6 N1")->at("total_cycles")),
+            std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("total_cycles")));
+  // The fixed divider runs Q iterations: more cycles than the adaptive default.
+  EXPECT_GT(std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1 fixed")->at("total_cycles")),
+            std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("total_cycles")));
+  // The traditional unit and the float scanline are not exact; trad has double hits.
+  EXPECT_EQ(find_row(cfgs, "trad", "S8 c16")->at("exact"), "0");
+  EXPECT_GT(std::stol(find_row(cfgs, "trad", "S8 c16")->at("doubles")), 0);
+  EXPECT_NE(find_row(cfgs, "float-scanline", "S8 c16"), nullptr);
+  // Per scene: on the near low-poly sphere the improved unit beats the traditional one.
+  const auto rows = read_csv(dir_->file("j1/sweep.csv"));
+  const auto* imp = find_row(rows, "model", "S8 c16 b14 K- N1", "builtin:lowpoly-near");
+  const auto* trad = find_row(rows, "trad", "S8 c16", "builtin:lowpoly-near");
+  ASSERT_TRUE(imp && trad);
+  EXPECT_LT(std::stol(imp->at("total_cycles")), std::stol(trad->at("total_cycles")));
+  // The RTL, when it is in the build, has the model's cycles.
+  if (const auto* rtl = find_row(rows, "rtl", "S8 c16 b14 K- N1", "builtin:lowpoly-near")) {
+    EXPECT_EQ(rtl->at("total_cycles"), imp->at("total_cycles"));
+  }
+  // Some configuration lies on each Pareto front, and the exact default's area is known.
+  int front_c = 0, front_a = 0;
+  for (const auto& r : cfgs) {
+    front_c += r.at("pareto_cycles") == "1";
+    front_a += r.at("pareto_area") == "1";
+  }
+  EXPECT_GT(front_c, 0);
+  EXPECT_GT(front_a, 0);
+  EXPECT_FALSE(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("luts").empty());
+}
+
+TEST(SweepCli, BadUsageIsOneLine) {
+  TempDir dir;
+  for (const std::string& args :
+       {std::string("sweep --jobs 0 --out ") + dir.file("x"),
+        std::string("sweep --engines nope --out ") + dir.file("x"),
+        std::string("sweep --scenes '' --out ") + dir.file("x"), std::string("fit"),
+        std::string("fit --scene builtin:sphere --error-budget -1"),
+        std::string("fit --scene builtin:sphere --endpoints 3"),
+        std::string("fit --scene builtin:nosuchscene")}) {
+    const CommandResult r = run_command(kBin + " " + args);
+    EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+  }
+  EXPECT_EQ(run_command(kBin + " sweep --help").status, 0);
+  EXPECT_EQ(run_command(kBin + " fit --help").status, 0);
+}
+
+// ---- fit --------------------------------------------------------------------------------------
+
+std::string json_field(const std::string& json, const std::string& object, const std::string& key) {
+  const size_t o = json.find("\"" + object + "\": {");
+  if (o == std::string::npos) return "";
+  const size_t k = json.find("\"" + key + "\": ", o);
+  if (k == std::string::npos) return "";
+  const size_t v = k + key.size() + 4;
+  return json.substr(v, json.find_first_of(",\n}", v) - v);
+}
+
+TEST(Fit, FloatMeshNeedsEightSubpixelBits) {
+  TempDir dir;
+  const CommandResult r = run_command(kBin + " fit --scene builtin:sphere:tess=12 --cull back " +
+                                      "--report " + dir.file("fit.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string j = slurp(dir.file("fit.json"));
+  EXPECT_EQ(json_field(j, "fit", "subpixel_bits"), "8") << j;
+  EXPECT_EQ(json_field(j, "fit", "missing"), "0");
+  EXPECT_EQ(json_field(j, "fit", "extra"), "0");
+  EXPECT_EQ(json_field(j, "fit", "coord_bits"), "11");  // the 1024-pixel viewport's minimum
+  EXPECT_EQ(json_field(j, "default", "subpixel_bits"), "8");
+  EXPECT_LT(std::stod(json_field(j, "fit", "luts")), std::stod(json_field(j, "default", "luts")));
+}
+
+TEST(Fit, IntegerVerticesFitTheSmallestWidths) {
+  // Integer-pixel vertices are exact at S = 0; boxes of at most 10 x 10 centres need 4 box bits
+  // (Xmax = 9 < 16); a 64 x 64 viewport needs coordinates of 7 bits ([-64, 64)).
+  TempDir dir;
+  write_file(dir.file("ints.tri"),
+             "0 0 10 0 0 10\n10 0 10 10 0 10\n20 20 30 25 22 30\n40 40 50 41 41 50\n");
+  const CommandResult r = run_command(kBin + " fit --width 64 --height 64 --scene " +
+                                      dir.file("ints.tri") + " --report " + dir.file("fit.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string j = slurp(dir.file("fit.json"));
+  EXPECT_EQ(json_field(j, "fit", "subpixel_bits"), "0") << j;
+  EXPECT_EQ(json_field(j, "fit", "coord_bits"), "7") << j;
+  EXPECT_EQ(json_field(j, "fit", "box_bits"), "4") << j;
+  EXPECT_EQ(json_field(j, "fit", "error_ppm"), "0") << j;
+}
+
+TEST(Fit, ABudgetAllowsFewerBits) {
+  TempDir dir;
+  const std::string scene = " --scene builtin:mixed:objects=2,tess=8";
+  ASSERT_EQ(run_command(kBin + " fit" + scene + " --report " + dir.file("exact.json")).status, 0);
+  ASSERT_EQ(run_command(kBin + " fit" + scene + " --error-budget 1000000 --report " +
+                        dir.file("loose.json")).status, 0);
+  const std::string exact = slurp(dir.file("exact.json")), loose = slurp(dir.file("loose.json"));
+  EXPECT_EQ(json_field(exact, "fit", "subpixel_bits"), "8");
+  EXPECT_LT(std::stoi(json_field(loose, "fit", "subpixel_bits")), 8);
+  EXPECT_LT(std::stod(json_field(loose, "fit", "luts")), std::stod(json_field(exact, "fit", "luts")));
+}
+
+// ---- the library: closed-mesh counting, truncation, area --------------------------------------
+
+TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
+  RasterConfig cfg;
+  const Scene scene = make_builtin("fan:n=8", cfg, CameraOptions{});
+  const SetupResult setup = setup_scene(scene.tris, cfg);
+  EngineResult golden;
+  find_engine("golden")->make()->run(setup, cfg, golden);
+  sort_spans(golden.spans);
+  ClosedCount c = count_closed(setup, golden.spans, cfg);
+  EXPECT_EQ(c.cracks, 0);
+  EXPECT_EQ(c.doubles, 0);
+  // Drop a span from the middle of the list (an inner row of some triangle): a crack of its size.
+  SpanList cracked = golden.spans;
+  const size_t mid = cracked.size() / 2;
+  const int64_t gap = cracked[mid].pixels();
+  cracked.erase(cracked.begin() + long(mid));
+  c = count_closed(setup, cracked, cfg);
+  EXPECT_EQ(c.cracks, gap);
+  EXPECT_EQ(c.doubles, 0);
+  // Draw a span twice: as many double hits as it has pixels.
+  SpanList doubled = golden.spans;
+  doubled.push_back(golden.spans[mid]);
+  c = count_closed(setup, doubled, cfg);
+  EXPECT_EQ(c.cracks, 0);
+  EXPECT_EQ(c.doubles, gap);
+}
+
+TEST(QuotientTruncation, DefaultUntouchedSmallKInexactNeverThrows) {
+  RasterConfig cfg;
+  const Scene scene = make_builtin("lowpoly-near", cfg, CameraOptions{});
+  const SetupResult setup = setup_scene(scene.tris, cfg);
+  auto run = [&](int K) {
+    RasterConfig c = cfg;
+    c.divider_quotient_bits = K;
+    EngineResult r;
+    find_engine("unit")->make()->run(setup, c, r);
+    sort_spans(r.spans);
+    return r;
+  };
+  const EngineResult def = run(0), full = run(15), wide = run(40), k4 = run(4);
+  EXPECT_EQ(def.spans, full.spans);  // K = Q is the untruncated divider
+  EXPECT_EQ(def.spans, wide.spans);  // a cap above Q changes nothing
+  EXPECT_EQ(def.work.at("divider_iterations"), full.work.at("divider_iterations"));
+  EXPECT_NE(def.spans, k4.spans);    // 4 quotient bits cannot hold these boxes
+  EXPECT_LT(k4.work.at("divider_iterations"), def.work.at("divider_iterations"));
+}
+
+TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
+  TempDir dir;
+  const AreaModel none(dir.file("missing.csv"), dir.file("missing.sh"));
+  EXPECT_FALSE(none.have_synth());
+  RasterConfig def;
+  EXPECT_EQ(none.area(UnitKind::Improved, def).source, "estimate");
+  EXPECT_EQ(none.area(UnitKind::Cpu, def).source, "");
+  write_file(dir.file("synth.csv"),
+             "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
+             "improved,default,ice40,15982,2896,3400,0,0,\n"
+             "improved,default,xilinx7,6605,2320,818,0,9,\n"
+             "improved,small,xilinx7,4500,1612,573,0,9,\n");
+  const AreaModel synth(dir.file("synth.csv"), dir.file("missing.sh"));
+  ASSERT_TRUE(synth.have_synth());
+  EXPECT_EQ(synth.target(), "xilinx7");
+  const Area d = synth.area(UnitKind::Improved, def);
+  EXPECT_EQ(d.source, "synth:xilinx7");
+  EXPECT_EQ(d.luts, 6605);
+  EXPECT_EQ(d.ffs, 2320);
+  RasterConfig small;
+  small.subpixel_bits = 4;
+  small.coord_int_bits = 12;
+  small.box_bits = 10;
+  EXPECT_EQ(synth.area(UnitKind::Improved, small).luts, 4500);
+  // N = 4 or a truncated quotient is not what was synthesized: an estimate, calibrated so that
+  // the formula meets synthesis at the default, and larger for N = 4.
+  RasterConfig n4;
+  n4.endpoints = 4;
+  const Area e = synth.area(UnitKind::Improved, n4);
+  EXPECT_EQ(e.source, "estimate");
+  EXPECT_GT(e.luts, d.luts);
+  EXPECT_EQ(synth.area(UnitKind::Trad, def).source, "estimate");
+  write_file(dir.file("bad.csv"), "unit,config,luts\nimproved,default,1\n");
+  EXPECT_THROW(AreaModel(dir.file("bad.csv"), ""), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace trirast
