@@ -74,6 +74,13 @@ void check_config(const RasterConfig& cfg) {
        kHwEndpoints, "at most");
   need(cfg.fifo_depth >= cfg.endpoints && cfg.fifo_depth <= kHwFifoDepth, "--fifo-depth",
        cfg.fifo_depth, kHwFifoDepth, "at most");
+  // The sweep's quotient truncation (RasterConfig::divider_quotient_bits, K): the RTL's divider
+  // always runs the exact Q (or adaptive) iterations; it has no truncation.
+  if (cfg.divider_quotient_bits != 0)
+    throw std::invalid_argument(
+        "divider_quotient_bits: " + std::to_string(cfg.divider_quotient_bits) +
+        " is not covered by the rtl engine (the RTL has no quotient truncation; only 0, the exact "
+        "divider, is)");
 }
 
 bool ends_with(const std::string& s, const std::string& suffix) {

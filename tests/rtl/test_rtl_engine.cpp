@@ -239,6 +239,25 @@ TEST(RtlConfig, UnbuiltWidthsAreRejectedNamingTheOption) {
   EXPECT_NE(message(c).find("--box-bits"), std::string::npos) << message(c);
 }
 
+TEST(RtlConfig, QuotientTruncationIsRejectedNamingTheOption) {
+  const RasterConfig base = default_cfg();
+  const SetupResult setup = setup_scene({tri(1, 1, 9, 2, 3, 8)}, base);
+  RasterConfig c = base;
+  c.divider_quotient_bits = 6;
+  std::string msg = "no error";
+  try {
+    run_rtl(setup, c);
+  } catch (const std::invalid_argument& e) {
+    msg = e.what();
+  }
+  EXPECT_NE(msg.find("divider_quotient_bits"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("6"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;  // one line
+  // 0 (the exact divider) still runs.
+  c.divider_quotient_bits = 0;
+  EXPECT_NO_THROW(run_rtl(setup, c));
+}
+
 // ---- spans against the golden ----
 
 TEST(RtlGolden, HardCases) { expect_golden(builtin("hard-all", default_cfg()), default_cfg(), "hard-all"); }
