@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <stdexcept>
+#include <utility>
 
 #include "core/setup.hpp"
 #include "core/span_diff.hpp"
@@ -268,6 +269,62 @@ TEST(GoldenParallel, SameSpansInSameOrderForAnyThreadCount) {
   EngineResult dflt;
   make_golden_engine()->run(setup, cfg, dflt);
   EXPECT_EQ(dflt.spans, reference);
+}
+
+// Scenes of >= 100,000 triangles, as the 2-thread target measures them, and lopsided ones whose
+// cost sits at one end, so that the writer thread has to take chunks from the helpers' range and
+// the helpers from the writer's: every thread count gives the one-thread list, span for span.
+TEST(GoldenParallel, LargeScenesSameAsOneThread) {
+  TestRng rng(202);
+  RasterConfig cfg;
+  const auto small = test::random_grid_triangles(rng, 120000, -20, 1044, -20, 788, 8, 14);
+  const auto big = test::random_grid_triangles(rng, 400, -200, 1224, -200, 968, 8, 900);
+  std::vector<std::pair<const char*, std::vector<InputTriangle>>> scenes;
+  scenes.emplace_back("120000 small", small);
+  std::vector<InputTriangle> big_first = big;
+  big_first.insert(big_first.end(), small.begin(), small.end());
+  scenes.emplace_back("big first", big_first);
+  std::vector<InputTriangle> big_last = small;
+  big_last.insert(big_last.end(), big.begin(), big.end());
+  scenes.emplace_back("big last", big_last);
+  scenes.emplace_back("highpoly-near", make_builtin("highpoly-near", cfg, CameraOptions{}).tris);
+  for (const auto& [name, tris] : scenes) {
+    SCOPED_TRACE(name);
+    const SetupResult setup = setup_scene(tris, cfg);
+    ASSERT_GE(setup.tris.size(), 100000u);
+    for (Traversal tr : {Traversal::Auto, Traversal::Scanline}) {
+      SCOPED_TRACE(traversal_name(tr));
+      EngineResult one;
+      make_golden_engine(tr, 1)->run(setup, cfg, one);
+      ASSERT_GT(one.spans.size(), setup.tris.size());
+      for (int threads : {2, 3, 4}) {
+        SCOPED_TRACE(std::to_string(threads) + " threads");
+        auto engine = make_golden_engine(tr, threads);
+        for (int round = 0; round < 2; ++round) {  // the second run reuses the chunk lists
+          EngineResult many;
+          engine->run(setup, cfg, many);
+          ASSERT_EQ(many.spans.size(), one.spans.size());
+          EXPECT_TRUE(many.spans == one.spans);
+        }
+      }
+    }
+  }
+}
+
+// The engine appends to what the result already holds, as the single-threaded one does.
+TEST(GoldenParallel, AppendsToExistingSpans) {
+  TestRng rng(203);
+  RasterConfig cfg;
+  const auto tris = test::random_grid_triangles(rng, 5000, -20, 1044, -20, 788, 8, 40);
+  const SetupResult setup = setup_scene(tris, cfg);
+  const Span marker{7, 1, 2, 3};
+  EngineResult one, two;
+  one.spans.assign(3, marker);
+  two.spans.assign(3, marker);
+  make_golden_engine(Traversal::Auto, 1)->run(setup, cfg, one);
+  make_golden_engine(Traversal::Auto, 2)->run(setup, cfg, two);
+  EXPECT_GT(one.spans.size(), 3u);
+  EXPECT_EQ(two.spans, one.spans);
 }
 
 TEST(GoldenParallel, FewTrianglesAndEmptyScene) {

@@ -1,10 +1,27 @@
-// The golden engines: one traversal over every triangle, on one thread or several. Several threads
-// take chunks of consecutive triangles from a shared counter (so a few huge triangles cannot leave
-// one thread with all the work); each chunk has its own span list, and the lists are joined in
-// chunk order, so the output is the single-threaded one, span for span, for any thread count.
+// The golden engines: one traversal over every triangle, on one thread or several.
+//
+// Several threads: the calling thread is the writer, the only one that touches the output list;
+// the others are helpers. The triangles are cut into chunks of consecutive triangles, and the
+// chunks into two ranges: a front range [0, split) and a back range [split, chunks). The writer
+// rasterizes the front range from its first chunk on, straight into the output (no copy: the
+// spans land where the single-threaded engine puts them). The helpers rasterize the back range
+// from its first chunk on, each chunk into a span list of its own. When the writer has done its
+// range it appends the helpers' finished chunks in order, one copy each, while the helpers are
+// still rasterizing later ones. Either side that runs out of work takes chunks from the far end
+// of the other's range (the writer from the end of the back range, the helpers from the end of
+// the front range), into a chunk list that the writer copies when its turn comes; so neither side
+// idles while the other has work, whatever the split. The split is chosen so that the writer's
+// share of rasterizing plus its copying of the helpers' share takes as long as the helpers' share.
+//
+// The output is the single-threaded list, span for span and in the same order, for any thread
+// count: every chunk's spans are appended exactly once, in chunk order. Nothing is merged or
+// sorted, and the output is never zero-filled or resized: it is reserved once (at most one span
+// per row of each box) and grows by push_back and by appending whole chunks.
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <exception>
+#include <memory>
 #include <thread>
 
 #include "golden/golden.hpp"
@@ -13,14 +30,64 @@ namespace trirast {
 
 namespace {
 
-constexpr size_t kChunkTriangles = 256;
-
 // At most one span per row of each box: reserving this up front spares the lists their regrowth.
 size_t max_spans(const std::vector<TriangleSetup>& tris, size_t first, size_t last) {
   size_t n = 0;
   for (size_t k = first; k < last; ++k) n += size_t(tris[k].box.height());
   return n;
 }
+
+// Chunks of consecutive triangles: at most 256 triangles, and at least 16 chunks per thread when
+// the scene is small, so that a few big triangles still spread over the threads.
+constexpr size_t kMaxChunkTriangles = 256;
+constexpr size_t kChunksPerThread = 16;
+
+// Copying a span into the output costs about this fraction of rasterizing it (measured with
+// scanline bounds on 10..60-pixel triangles: a 22 MB append against 48 ms of traversal); it sets
+// the split only, the stealing at the ends corrects a wrong guess.
+constexpr double kCopyCost = 0.07;
+
+// A range of chunk indices [lo, hi) that two sides take from its two ends, lock-free: both bounds
+// live in one 64-bit word. On a cache line of its own, so that claims from one range do not slow
+// down claims from the other.
+class alignas(64) ChunkRange {
+ public:
+  void reset(uint32_t lo, uint32_t hi) { bounds_.store(pack(lo, hi), std::memory_order_relaxed); }
+  bool take_front(uint32_t& chunk) {
+    uint64_t b = bounds_.load(std::memory_order_relaxed);
+    for (;;) {
+      const uint32_t lo = uint32_t(b), hi = uint32_t(b >> 32);
+      if (lo >= hi) return false;
+      if (bounds_.compare_exchange_weak(b, pack(lo + 1, hi), std::memory_order_relaxed)) {
+        chunk = lo;
+        return true;
+      }
+    }
+  }
+  bool take_back(uint32_t& chunk) {
+    uint64_t b = bounds_.load(std::memory_order_relaxed);
+    for (;;) {
+      const uint32_t lo = uint32_t(b), hi = uint32_t(b >> 32);
+      if (lo >= hi) return false;
+      if (bounds_.compare_exchange_weak(b, pack(lo, hi - 1), std::memory_order_relaxed)) {
+        chunk = hi - 1;
+        return true;
+      }
+    }
+  }
+
+ private:
+  static uint64_t pack(uint32_t lo, uint32_t hi) { return uint64_t(hi) << 32 | lo; }
+  std::atomic<uint64_t> bounds_{0};
+};
+
+// One chunk rasterized off the writer: its spans and whether they are complete. A cache line (or
+// more) each, so that a helper filling one chunk does not share a line with the writer copying
+// the previous one.
+struct alignas(64) ChunkSpans {
+  SpanList spans;
+  std::atomic<bool> ready{false};
+};
 
 class GoldenEngine : public Engine {
  public:
@@ -30,60 +97,119 @@ class GoldenEngine : public Engine {
 
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
     const std::vector<TriangleSetup>& tris = setup.tris;
-    const size_t chunks = (tris.size() + kChunkTriangles - 1) / kChunkTriangles;
-    const size_t threads = std::min<size_t>(size_t(threads_), chunks);
-    if (threads <= 1) {
-      out.spans.reserve(out.spans.size() + max_spans(tris, 0, tris.size()));
+    const size_t n = tris.size();
+    const size_t threads = size_t(threads_);
+    const size_t per_chunk =
+        std::clamp<size_t>(n / (threads * kChunksPerThread), 1, kMaxChunkTriangles);
+    const size_t chunks = (n + per_chunk - 1) / per_chunk;
+    if (threads <= 1 || chunks < 2) {
+      out.spans.reserve(out.spans.size() + max_spans(tris, 0, n));
       for (const TriangleSetup& t : tris) golden_triangle(t, cfg, traversal_, out.spans);
       return;
     }
-    // Chunk lists live in the engine, so a second run reuses their memory.
-    std::vector<SpanList>& parts = parts_;
-    if (parts.size() < chunks) parts.resize(chunks);
-    std::atomic<size_t> next{0};
-    std::vector<std::exception_ptr> errors(threads);
-    auto rasterize = [&](size_t id) {
-      try {
-        for (size_t c; (c = next.fetch_add(1, std::memory_order_relaxed)) < chunks;) {
-          const size_t end = std::min(tris.size(), (c + 1) * kChunkTriangles);
-          parts[c].clear();
-          parts[c].reserve(max_spans(tris, c * kChunkTriangles, end));
-          for (size_t k = c * kChunkTriangles; k < end; ++k)
-            golden_triangle(tris[k], cfg, traversal_, parts[c]);
-        }
-      } catch (...) {
-        errors[id] = std::current_exception();
-        next.store(chunks);  // the others stop at their next chunk
-      }
-    };
-    run_on_threads(threads, rasterize);
-    for (const std::exception_ptr& e : errors)
-      if (e) std::rethrow_exception(e);
-    // Join the chunks' lists in triangle order: offsets first, then the copies in parallel.
-    std::vector<size_t> offset(chunks + 1);
-    offset[0] = out.spans.size();
-    for (size_t c = 0; c < chunks; ++c) offset[c + 1] = offset[c] + parts[c].size();
-    out.spans.resize(offset[chunks]);
-    next.store(0);
-    run_on_threads(threads, [&](size_t) {
-      for (size_t c; (c = next.fetch_add(1, std::memory_order_relaxed)) < chunks;)
-        std::copy(parts[c].begin(), parts[c].end(), out.spans.begin() + ptrdiff_t(offset[c]));
-    });
+    run_parallel(tris, cfg, std::min(threads, chunks), per_chunk, chunks, out.spans);
   }
 
  private:
-  // Runs fn(0) on the calling thread and fn(1..threads-1) on new ones; returns when all are done.
-  template <class Fn>
-  static void run_on_threads(size_t threads, Fn&& fn) {
+  void run_parallel(const std::vector<TriangleSetup>& tris, const RasterConfig& cfg,
+                    size_t threads, size_t per_chunk, size_t chunks, SpanList& out) {
+    const size_t n = tris.size();
+    auto first = [&](size_t c) { return std::min(n, c * per_chunk); };
+    auto rasterize = [&](size_t c, SpanList& spans) {
+      for (size_t k = first(c), end = first(c + 1); k < end; ++k)
+        golden_triangle(tris[k], cfg, traversal_, spans);
+    };
+    if (chunk_capacity_ < chunks) {
+      chunk_ = std::make_unique<ChunkSpans[]>(chunks);
+      chunk_capacity_ = chunks;
+    }
+    for (size_t c = 0; c < chunks; ++c) chunk_[c].ready.store(false, std::memory_order_relaxed);
+    // The writer's share x of the chunks: x + kCopyCost * (1 - x) = (1 - x) / helpers.
+    const double helpers = double(threads - 1);
+    const double x = (1 - kCopyCost * helpers) / (1 + helpers - kCopyCost * helpers);
+    const size_t split = std::clamp<size_t>(size_t(x * double(chunks) + 0.5), 1, chunks - 1);
+    front_.reset(0, uint32_t(split));
+    back_.reset(uint32_t(split), uint32_t(chunks));
+    std::atomic<bool> stop{false};
+    // The back range's span bound, from the first helper (-1 until known).
+    std::atomic<int64_t> back_bound{-1};
+    // A failure anywhere stops every thread at its next chunk; the one of the lowest chunk wins.
+    struct Failure {
+      size_t chunk = SIZE_MAX;
+      std::exception_ptr error;
+    };
+    std::vector<Failure> failures(threads);
+
+    auto helper = [&](size_t id) {
+      uint32_t c = 0;
+      bool busy = false;
+      try {
+        if (id == 1) back_bound.store(int64_t(max_spans(tris, first(split), n)));
+        while (!stop.load(std::memory_order_relaxed) &&
+               (back_.take_front(c) || front_.take_back(c))) {
+          busy = true;
+          ChunkSpans& mine = chunk_[c];
+          mine.spans.clear();
+          mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
+          rasterize(c, mine.spans);
+          mine.ready.store(true, std::memory_order_release);
+          busy = false;
+        }
+      } catch (...) {
+        failures[id] = Failure{busy ? c : 0, std::current_exception()};
+        stop.store(true);
+      }
+    };
+
     std::vector<std::thread> pool;
-    for (size_t id = 1; id < threads; ++id) pool.emplace_back(fn, id);
-    fn(0);
+    pool.reserve(threads - 1);
+    for (size_t id = 1; id < threads; ++id) pool.emplace_back(helper, id);
+
+    // The writer.
+    size_t next = 0;  // the next chunk to append to the output
+    uint32_t c = 0;
+    try {
+      size_t bound = max_spans(tris, 0, first(split));
+      const int64_t back = back_bound.load();
+      bound += back >= 0 ? size_t(back) : max_spans(tris, first(split), n);
+      out.reserve(out.size() + bound);
+      while (next < chunks && !stop.load(std::memory_order_relaxed)) {
+        if (chunk_[next].ready.load(std::memory_order_acquire)) {
+          const SpanList& done = chunk_[next].spans;
+          out.insert(out.end(), done.begin(), done.end());
+          ++next;
+        } else if (front_.take_front(c)) {
+          // The front range's first chunk is always the next one: straight into the output.
+          rasterize(c, out);
+          ++next;
+        } else if (back_.take_back(c)) {
+          ChunkSpans& mine = chunk_[c];
+          mine.spans.clear();
+          mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
+          rasterize(c, mine.spans);
+          mine.ready.store(true, std::memory_order_relaxed);
+        } else {
+          std::this_thread::yield();  // the next chunk is a helper's, still being rasterized
+        }
+      }
+    } catch (...) {
+      failures[0] = Failure{c, std::current_exception()};
+      stop.store(true);
+    }
     for (std::thread& th : pool) th.join();
+    const Failure* worst = nullptr;
+    for (const Failure& f : failures)
+      if (f.error && (!worst || f.chunk < worst->chunk)) worst = &f;
+    if (worst) std::rethrow_exception(worst->error);
   }
 
   Traversal traversal_;
   int threads_;
-  std::vector<SpanList> parts_;
+  // Chunk span lists of the helpers (and the writer's stolen chunks), kept between runs so that a
+  // second run reuses their memory.
+  std::unique_ptr<ChunkSpans[]> chunk_;
+  size_t chunk_capacity_ = 0;
+  ChunkRange front_, back_;
 };
 
 class FloatScanlineEngine : public Engine {
