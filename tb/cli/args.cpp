@@ -1,5 +1,6 @@
 #include "cli/args.hpp"
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -79,7 +80,11 @@ long Args::get_int(const std::string& name, long lo, long hi) const {
   errno = 0;
   char* end = nullptr;
   const long v = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno != 0)
+  // strtol skips leading blanks and takes a '+': the option's value is the digits alone.
+  const bool digits_first =
+      !text.empty() && (std::isdigit((unsigned char)text[0]) ||
+                        (text[0] == '-' && text.size() > 1 && std::isdigit((unsigned char)text[1])));
+  if (!digits_first || *end != '\0' || errno != 0)
     throw UsageError("trirast " + command_ + ": " + name + ": '" + text + "' is not an integer");
   if (v < lo || v > hi)
     throw UsageError("trirast " + command_ + ": " + name + ": " + text + " is outside " +
@@ -91,7 +96,8 @@ double Args::get_double(const std::string& name) const {
   const std::string text = get(name);
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
+  // strtod skips leading blanks: a value that starts with one is refused like trailing ones.
+  if (text.empty() || std::isspace((unsigned char)text[0]) || *end != '\0' || !std::isfinite(v))
     throw UsageError("trirast " + command_ + ": " + name + ": '" + text + "' is not a number");
   return v;
 }

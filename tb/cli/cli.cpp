@@ -151,13 +151,15 @@ Json config_json(const RasterConfig& cfg) {
       .set("sink_stall", cfg.sink_stall);
 }
 
-const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd) {
+// `option` is the option the name came from ("--engine", "--engines"), for the message.
+const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd,
+                                  const std::string& option) {
   const EngineInfo* info = find_engine(name);
   if (!info) {
     std::string known;
     for (const EngineInfo& e : engine_registry()) known += (known.empty() ? "" : ", ") + e.name;
-    throw UsageError("trirast " + cmd + ": --engine: unknown engine '" + name + "' (known: " +
-                     known + ")");
+    throw UsageError("trirast " + cmd + ": " + option + ": unknown engine '" + name +
+                     "' (known: " + known + ")");
   }
   return *info;
 }
@@ -260,7 +262,7 @@ int cmd_raster(int argc, char** argv) {
     return 0;
   }
   RasterConfig cfg = config_from(a);
-  const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster");
+  const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster", "--engine");
   if (a.has("--trace")) {
     check_output_path(a.get("--trace"), "--trace");
     cfg.trace_path = a.get("--trace");
@@ -356,12 +358,17 @@ int cmd_raster(int argc, char** argv) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
 std::vector<std::string> split_list(const std::string& s) {
   std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(item);
-  return out;
+  if (s.empty()) return out;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
 }
 
 int cmd_compare(int argc, char** argv) {
@@ -385,18 +392,29 @@ int cmd_compare(int argc, char** argv) {
   // claims exactness, so any difference from the golden fails the comparison.
   std::vector<EngineInfo> file_engines;
   std::vector<std::string> names = split_list(a.get("--engines"));
-  for (const std::string& name : names)
+  for (const std::string& name : names) {
+    if (name.empty())
+      throw UsageError("trirast compare: --engines: empty engine name in '" + a.get("--engines") +
+                       "'");
     if (name.rfind("file:", 0) == 0) file_engines.push_back({name, "recorded spans", true, nullptr});
+  }
   std::vector<const EngineInfo*> engines;
   size_t next_file = 0;
   for (const std::string& name : names)
     engines.push_back(name.rfind("file:", 0) == 0 ? &file_engines[next_file++]
-                                                   : &engine_or_throw(name, "compare"));
+                                                   : &engine_or_throw(name, "compare", "--engines"));
   if (engines.empty()) throw UsageError("trirast compare: --engines: empty list");
   if (a.has("--diff-image")) check_output_path(a.get("--diff-image"), "--diff-image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
 
+  // Every input is read and checked before anything is printed: the scene, then the recorded
+  // spans files, so a bad one is a one-line error with nothing on stdout.
   LoadedScene ls = load_and_setup(a, cfg);
+  std::vector<SpanList> recorded(file_engines.size());
+  for (size_t i = 0; i < file_engines.size(); ++i) {
+    recorded[i] = read_spans_file(file_engines[i].name.substr(5));
+    sort_spans(recorded[i]);
+  }
   const GoldenOptions golden_options = golden_options_from(a);
   EngineRun golden = run_engine(*find_engine("golden"), ls, cfg, golden_options);
   const int64_t golden_pixels = count_pixels(golden.result.spans);
@@ -416,8 +434,7 @@ int cmd_compare(int argc, char** argv) {
     if (info->name == "golden") {
       run = golden;
     } else if (!info->make) {
-      run.result.spans = read_spans_file(info->name.substr(5));
-      sort_spans(run.result.spans);
+      run.result.spans = std::move(recorded[size_t(info - file_engines.data())]);
     } else {
       run = run_engine(*info, ls, cfg, golden_options);
     }

@@ -1,5 +1,6 @@
 // trirast fuzz (issue 7): random scenes biased toward hard-cases.md, run through several engines
 // and held against the golden; every disagreement is written to a .tri reproducer.
+#include <cctype>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -41,12 +42,17 @@ class FaultyEngine : public Engine {
   std::unique_ptr<Engine> inner_;
 };
 
+// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
 std::vector<std::string> split_commas(const std::string& s) {
   std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ',')) out.push_back(item);
-  return out;
+  if (s.empty()) return out;
+  size_t start = 0;
+  for (;;) {
+    const size_t comma = s.find(',', start);
+    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return out;
+    start = comma + 1;
+  }
 }
 
 std::string exact_engine_names() {
@@ -68,7 +74,7 @@ uint64_t parse_seed(const std::string& text) {
   errno = 0;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  if (text.empty() || text[0] == '-' || *end != '\0' || errno != 0)
+  if (text.empty() || !std::isdigit((unsigned char)text[0]) || *end != '\0' || errno != 0)
     throw UsageError("trirast fuzz: --seed: '" + text + "' is not a non-negative integer");
   return v;
 }
@@ -117,6 +123,8 @@ int cmd_fuzz(int argc, char** argv) {
   std::vector<std::string> names;
   std::vector<const EngineInfo*> engines;
   for (const std::string& name : split_commas(a.get("--engines"))) {
+    if (name.empty())
+      throw UsageError("trirast fuzz: --engines: empty engine name in '" + a.get("--engines") + "'");
     const EngineInfo* info = find_engine(name);
     if (!info) {
       std::string known;
