@@ -6,6 +6,7 @@ namespace trirast {
 std::unique_ptr<Engine> make_golden_engine();
 std::unique_ptr<Engine> make_unit_engine();
 std::unique_ptr<Engine> make_rtl_engine();
+std::unique_ptr<Engine> make_rtl_trad_engine();
 std::unique_ptr<Engine> make_trad_engine();
 std::unique_ptr<Engine> make_float_scanline_engine();
 std::unique_ptr<Engine> make_model_engine();
@@ -23,6 +24,9 @@ const std::vector<EngineInfo>& engine_registry() {
       {"trad", "traditional Bresenham unit (GR3, seed 001 sec. 2.1), SystemC model with cycles; "
                "its own coverage, not the rule",
        false, make_trad_model_engine},
+      {"rtl-trad", "Verilated RTL of the traditional unit (rtl/trirast_trad_*.sv): trad's spans "
+                   "and cycles",
+       false, make_rtl_trad_engine},
       {"float-scanline", "float scanline of seed 002, top-left via ceil(x - 0.5): a CPU baseline, "
                          "not exact",
        false, make_float_scanline_engine},

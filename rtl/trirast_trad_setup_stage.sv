@@ -1,0 +1,149 @@
+// The setup stage of the traditional-Bresenham unit (docs/timing.md, "The traditional unit"):
+// FSM StIdle -> StSort -> StLine -> StHold -> StIdle.
+//   StIdle : tri_ready_o; the handshake registers the triangle's vertices (accept_cycle).
+//   StSort : the quantizer (integer pixels, collinearity, sort); collinear pixels retire the
+//            triangle here (retire_o), else the sorted pixels are registered.
+//   StLine : Bresenham set-up of the lines p0->p2 (long), p0->p1, p1->p2, registered.
+//   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
+module trirast_trad_setup_stage (
+  input  logic                                    clk_i,
+  input  logic                                    rst_ni,
+  // ---- triangle port ----
+  input  logic                                    tri_valid_i,
+  output logic                                    tri_ready_o,
+  input  logic [trirast_pkg::TagBits-1:0]         tri_tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]    tri_vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]    tri_vy_i,
+  // ---- collinear retirement (StSort) ----
+  output logic                                    retire_o,
+  output logic [trirast_pkg::TagBits-1:0]         retire_tag_o,
+  // ---- hand-off to the walk stage (valid in StHold) ----
+  output logic                                    hand_valid_o,
+  input  logic                                    hand_ready_i,   // the walk stage is idle
+  output logic [trirast_pkg::TagBits-1:0]         hand_tag_o,
+  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_px_o,      // sorted pixels p0, p1, p2
+  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_py_o,
+  output logic [2:0]                              hand_sx_neg_o,  // line e: 0 long, 1, 2 short
+  output logic [2:0]                              hand_x_major_o,
+  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_dmaj_o,
+  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_dmin_o,
+  output logic [3*(trirast_pkg::CoordIntBits+3)-1:0] hand_d0_o,
+  // ---- observation ----
+  output logic [2:0]                              state_o
+);
+  localparam int VertexBits = trirast_pkg::VertexBits;
+  localparam int TagBits = trirast_pkg::TagBits;
+  localparam int CBits = trirast_pkg::CoordIntBits;
+  localparam int DecBits = CBits + 3;
+
+  // Numbered as in the SystemC model's trace (0, 1, 2, 4).
+  typedef enum logic [2:0] {
+    StIdle = 3'd0,
+    StSort = 3'd1,
+    StLine = 3'd2,
+    StHold = 3'd4
+  } trad_setup_state_e;
+
+  trad_setup_state_e state_q, state_d;
+  logic accept, sort_en, line_en, collinear;
+
+  logic [TagBits-1:0] tag_q, tag_d;
+  logic [3*VertexBits-1:0] vx_q, vx_d, vy_q, vy_d;
+  logic [3*CBits-1:0] px_q, px_d, py_q, py_d, sort_px, sort_py;
+  logic [2:0] sx_neg, x_major, sx_neg_q, sx_neg_d, x_major_q, x_major_d;
+  logic [3*CBits-1:0] dmaj, dmin, dmaj_q, dmaj_d, dmin_q, dmin_d;
+  logic [3*DecBits-1:0] d0, d0_q, d0_d;
+
+  trirast_trad_quantizer u_quantizer (
+    .vx_i        (vx_q),
+    .vy_i        (vy_q),
+    .collinear_o (collinear),
+    .px_o        (sort_px),
+    .py_o        (sort_py)
+  );
+
+  // Line e runs from pixel la[e] to pixel lb[e]: p0->p2, p0->p1, p1->p2.
+  for (genvar e = 0; e < 3; e++) begin : g_line
+    localparam int A = (e == 2) ? 1 : 0;
+    localparam int B = (e == 1) ? 1 : 2;
+    trirast_trad_line_setup u_line_setup (
+      .ax_i      (px_q[A*CBits +: CBits]),
+      .ay_i      (py_q[A*CBits +: CBits]),
+      .bx_i      (px_q[B*CBits +: CBits]),
+      .by_i      (py_q[B*CBits +: CBits]),
+      .sx_neg_o  (sx_neg[e]),
+      .x_major_o (x_major[e]),
+      .dmaj_o    (dmaj[e*CBits +: CBits]),
+      .dmin_o    (dmin[e*CBits +: CBits]),
+      .d0_o      (d0[e*DecBits +: DecBits])
+    );
+  end
+
+  always_comb begin
+    tri_ready_o  = state_q == StIdle;
+    accept       = tri_valid_i && tri_ready_o;
+    sort_en      = state_q == StSort;
+    line_en      = state_q == StLine;
+    retire_o     = sort_en && collinear;
+    retire_tag_o = tag_q;
+    hand_valid_o = state_q == StHold;
+    state_d      = state_q;
+    case (state_q)
+      StIdle:  if (accept) state_d = StSort;
+      StSort: begin  // (if/else, not ?:, for Icarus 11's enum casts)
+        if (collinear) state_d = StIdle;
+        else state_d = StLine;
+      end
+      StLine:  state_d = StHold;
+      StHold:  if (hand_ready_i) state_d = StIdle;
+      default: state_d = StIdle;
+    endcase
+  end
+
+  // Datapath registers, each written in its own state.
+  always_comb begin
+    tag_d     = accept ? tri_tag_i : tag_q;
+    vx_d      = accept ? tri_vx_i : vx_q;
+    vy_d      = accept ? tri_vy_i : vy_q;
+    px_d      = sort_en ? sort_px : px_q;
+    py_d      = sort_en ? sort_py : py_q;
+    sx_neg_d  = line_en ? sx_neg : sx_neg_q;
+    x_major_d = line_en ? x_major : x_major_q;
+    dmaj_d    = line_en ? dmaj : dmaj_q;
+    dmin_d    = line_en ? dmin : dmin_q;
+    d0_d      = line_en ? d0 : d0_q;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= StIdle;
+    end else begin
+      state_q <= state_d;
+    end
+  end
+
+  // Datapath registers: no reset (written before they are read).
+  always_ff @(posedge clk_i) begin
+    tag_q     <= tag_d;
+    vx_q      <= vx_d;
+    vy_q      <= vy_d;
+    px_q      <= px_d;
+    py_q      <= py_d;
+    sx_neg_q  <= sx_neg_d;
+    x_major_q <= x_major_d;
+    dmaj_q    <= dmaj_d;
+    dmin_q    <= dmin_d;
+    d0_q      <= d0_d;
+  end
+
+  assign hand_tag_o     = tag_q;
+  assign hand_px_o      = px_q;
+  assign hand_py_o      = py_q;
+  assign hand_sx_neg_o  = sx_neg_q;
+  assign hand_x_major_o = x_major_q;
+  assign hand_dmaj_o    = dmaj_q;
+  assign hand_dmin_o    = dmin_q;
+  assign hand_d0_o      = d0_q;
+  assign state_o        = state_q;
+
+endmodule
