@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/setup.hpp"
@@ -115,6 +116,31 @@ void bench_threads(benchmark::State& state, std::string name, Traversal traversa
   state.counters["spans"] = benchmark::Counter(double(spans));
 }
 
+// The floor of any 2-thread golden: two threads (one started per run, as the engine does), each
+// rasterizing half of the triangles into a list of its own, kept between runs; no output list, no
+// order, no balancing. Its speed-up over one thread is what the machine gives two threads at the
+// time of the run (on the shared machine, other jobs take their share of the cores).
+void bench_halves(benchmark::State& state, std::string name, Traversal traversal) {
+  const BenchScene& s = scene(name);
+  const RasterConfig cfg = bench_config();
+  const size_t half = s.setup.tris.size() / 2;
+  SpanList lists[2];
+  for (SpanList& l : lists) l.reserve(1 << 21);
+  auto part = [&](size_t id) {
+    lists[id].clear();
+    const size_t first = id == 0 ? 0 : half, last = id == 0 ? half : s.setup.tris.size();
+    for (size_t k = first; k < last; ++k) golden_triangle(s.setup.tris[k], cfg, traversal, lists[id]);
+  };
+  for (auto _ : state) {
+    std::thread other(part, size_t(1));
+    part(0);
+    other.join();
+    benchmark::DoNotOptimize(lists[0].data());
+    benchmark::DoNotOptimize(lists[1].data());
+  }
+  set_counters(state, s);
+}
+
 // Setup alone (snap, orient, edge functions, box), for scale.
 void bench_setup(benchmark::State& state, std::string name) {
   const BenchScene& s = scene(name);
@@ -155,6 +181,15 @@ const bool registered = [] {
             ->Repetitions(kThreadRepetitions)
             ->UseRealTime();
       }
+  for (const char* sc : {"highpoly-near", "random100k"})
+    for (Traversal tr : {Traversal::Auto, Traversal::Incremental, Traversal::Simple})
+      benchmark::RegisterBenchmark(
+          (std::string("halves/") + sc + "/" + traversal_name(tr)).c_str(), bench_halves,
+          std::string(sc), tr)
+          ->Unit(benchmark::kMillisecond)
+          ->MinTime(0.2)
+          ->Repetitions(kThreadRepetitions)
+          ->UseRealTime();
   for (const char* sc : {"tri10", "highpoly-near", "random100k"})
     benchmark::RegisterBenchmark((std::string("setup/") + sc).c_str(), bench_setup,
                                  std::string(sc))
