@@ -22,6 +22,7 @@
 #include <cstdint>
 #include <exception>
 #include <memory>
+#include <system_error>
 #include <thread>
 
 #include "golden/golden.hpp"
@@ -175,7 +176,11 @@ class GoldenEngine : public Engine {
 
     std::vector<std::thread> pool;
     pool.reserve(threads - 1);
-    for (size_t id = 1; id < threads; ++id) pool.emplace_back(helper, id);
+    try {
+      for (size_t id = 1; id < threads; ++id) pool.emplace_back(helper, id);
+    } catch (const std::system_error&) {
+      // No more threads to be had: the writer takes whatever the helpers started leave.
+    }
 
     // The writer (its reservation overlaps with the helpers' first chunks).
     size_t next = 0;  // the next chunk to append to the output
