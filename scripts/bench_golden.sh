@@ -182,11 +182,13 @@ w("- **The 2-thread engine, what changed and why.** The previous engine (chunks 
   "split gives the writer (1 - c) / (2 - c) of the chunks, c = 0.07 being the copy's cost relative "
   "to rasterizing, so both finish together; chunks taken from the far ends absorb a wrong guess, "
   "a late thread start or a thread that the scheduler holds back. The extra work over one "
-  "thread is the copy of about half the spans, so the bound on idle cores is about "
-  "2 / (1 + c / 2), 1.9x or better; the total CPU time of a 2-thread run, measured on a loaded "
-  "machine, was 4..7% above one thread on `random100k` and 11..15% on `highpoly-near` (where "
-  "it includes the writer's waits for a descheduled helper). Starting and joining the helper "
-  "costs about 10 us.")
+  "thread is the copy of the helper's half of the spans, c / 2 (3.5%) of one thread's time, "
+  "which bounds the engine at 2 / (1 + c / 2) = 1.93x on idle cores. The total CPU time of a "
+  "2-thread run, measured on the loaded machine (load 6..8), was 4..7% above one thread's on "
+  "`random100k` and 11..15% on `highpoly-near`, bounds of 1.74..1.92x; those figures include "
+  "the chunks the writer took over, with their extra copy, while the scheduler held the helper "
+  "back, which idle cores would not see. Starting and joining the helper costs about 10 us "
+  "(0.7% of a 2-thread `highpoly-near` run).")
 worst_floor = min(floors.values())
 met = min(speedups.values()) >= 1.8
 if not met:
