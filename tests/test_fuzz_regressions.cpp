@@ -9,6 +9,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -343,7 +344,9 @@ TEST(FuzzCli, ShortRunOverAllEnginesAgreesAndReportsProgress) {
   // Every exact engine of the build by default, progress once a second on stderr.
   for (const EngineInfo* e : exact_engines())
     EXPECT_NE(r.out.find(e->name), std::string::npos) << e->name << "\n" << r.out;
-  EXPECT_NE(r.err.find("fuzz: 1.0 s, "), std::string::npos) << r.err;
+  // The progress line's clock reads whatever a loaded machine gives (1.0 s, 1.3 s, ...).
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("(^|\n)fuzz: [0-9]+\\.[0-9] s, ")))
+      << r.err;
   EXPECT_NE(r.err.find(" triangles, 0 disagreements\n"), std::string::npos) << r.err;
   EXPECT_GE(count_lines(r.err), 3);
   EXPECT_NE(r.out.find("0 disagreements"), std::string::npos) << r.out;

@@ -57,6 +57,7 @@ void TradSetupStage::process_run() {
     x.verts = quantizer_->run(t);
     if (x.verts.empty) {  // collinear integer vertices: retires in a + 1
       ++counters.busy;
+      ++r.out->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
       rec.first_span_cycle = rec.done_cycle = a + 1;
       if (tr) {
         tr->value(sig_.setup_state, a + 2, StTradIdle);

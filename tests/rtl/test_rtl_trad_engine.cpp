@@ -51,6 +51,7 @@ size_t expect_trad(const SetupResult& setup, const RasterConfig& cfg, const std:
     }
   }
   EXPECT_EQ(rtl.work["trad_collinear"], cpp.work["trad_collinear"]) << what;
+  EXPECT_EQ(sc.work["trad_collinear"], cpp.work["trad_collinear"]) << what;
   EXPECT_EQ(rtl.cycles.size(), setup.tris.size()) << what;
   EXPECT_EQ(sc.cycles.size(), setup.tris.size()) << what;
   size_t mismatches = 0;
