@@ -8,6 +8,11 @@ namespace trirast::sc {
 
 using sc_core::sc_module_name;
 
+namespace {
+// The setup stage synchronizes with SystemC time at least once per this many cycles.
+constexpr uint64_t kQuantumCycles = uint64_t(1) << 16;
+}  // namespace
+
 // ---- setup stage -------------------------------------------------------------------------------
 
 SetupStage::SetupStage(sc_module_name name)
@@ -52,7 +57,8 @@ void SetupStage::process_run() {
   const std::vector<TriangleSetup>& tris = r.setup->tris;
   uint64_t a = r.now();  // the cycle the next triangle is accepted in
   for (size_t pos = 0; pos < tris.size() && !r.error; ++pos) {
-    r.wait_until(a);
+    // The stage keeps its own cycle a (the accept) ahead of SystemC time; the walk stage is
+    // called in this process at the hand-off (HandoffTransport).
     const TriangleSetup& t = tris[pos];
     TriangleCycles& rec = r.tri(pos);
     rec = TriangleCycles{t.index, a, 0, 0, 0, 0, 0};
@@ -96,25 +102,26 @@ void SetupStage::process_run() {
       tr->value(sig_.setup_state, a + 3 + L, StHold);
     }
     // From a + 3 + L, StHold: hand the triangle over in the first cycle the walk stage is idle.
-    r.wait_until(a + 3 + L);
-    out->put(&x);
-    const uint64_t h = r.now();
+    const uint64_t h = out->put(&x, a + 3 + L);
     counters.stall += h - (a + 3 + L);
     cur_ ^= 1;
     if (tr) {
       tr->value(sig_.setup_state, h + 1, StIdle);
       tr->value(sig_.setup_tri, h + 1, VcdRecorder::kX);
     }
+    // Temporal decoupling: the stage runs ahead of SystemC time (every cycle is stamped on the
+    // data) and synchronizes once per quantum.
+    if (h + 1 >= r.now() + kQuantumCycles) r.wait_until(h + 1);
     a = h + 1;
   }
+  // The run ends in SystemC time when the unit's last stage is idle.
+  r.wait_until(std::max(a, out->walk_idle_from()));
 }
 
 // ---- walk stage --------------------------------------------------------------------------------
 
 WalkStage::WalkStage(sc_module_name name)
-    : sc_core::sc_module(name), in("in"), spans("spans"), span_generator("span_generator") {
-  SC_THREAD(thread);
-}
+    : sc_core::sc_module(name), spans("spans"), span_generator("span_generator") {}
 
 void WalkStage::begin_run(RunState* run, const ImprovedTraceSignals& sig) {
   run_ = run;
@@ -122,22 +129,13 @@ void WalkStage::begin_run(RunState* run, const ImprovedTraceSignals& sig) {
   counters = {};
   span_generator.counters = {};
   for (auto& r : rows_stepped) r = 0;
+  work_sum_ = TriangleWork{};
+  any_work_ = false;
+  idle_from_ = 0;
 }
 
-void WalkStage::thread() {
-  for (;;) {
-    EdgeSetupTxn* x = in->get();  // idle from now; returns in the hand-off cycle h
-    RunState& r = *run_;
-    if (r.error) continue;
-    uint64_t t_last;
-    try {
-      t_last = walk(*x, r.now());
-    } catch (...) {
-      if (!r.error) r.error = std::current_exception();
-      continue;
-    }
-    r.wait_until(t_last + 1);  // StWalkIdle from t_last + 1
-  }
+void WalkStage::end_run() {
+  if (any_work_) add_work(work_sum_, run_->out->work);
 }
 
 uint64_t WalkStage::walk(EdgeSetupTxn& x, uint64_t h) {
@@ -195,7 +193,17 @@ uint64_t WalkStage::walk(EdgeSetupTxn& x, uint64_t h) {
     work.edge[k] = x.walker[k].work();
     rows_stepped[k] += work.edge[k].rows_stepped;
   }
-  add_work(work, r.out->work);
+  // add_work() goes through a string-keyed map: once per run (end_run), not per triangle.
+  for (int k = 0; k < 3; ++k) {
+    work_sum_.edge[k].divisions += work.edge[k].divisions;
+    work_sum_.edge[k].divider_iterations += work.edge[k].divider_iterations;
+    work_sum_.edge[k].boundary_steps += work.edge[k].boundary_steps;
+    work_sum_.edge[k].rows_stepped += work.edge[k].rows_stepped;
+  }
+  work_sum_.rows_visited += work.rows_visited;
+  work_sum_.spans += work.spans;
+  work_sum_.pixels += work.pixels;
+  any_work_ = true;
   return t_last;
 }
 
@@ -209,7 +217,7 @@ ImprovedUnitSc::ImprovedUnitSc(sc_module_name name)
       setup("setup"),
       walk("walk") {
   setup.out(handoff);
-  walk.in(handoff);
+  handoff.walk(walk);
   walk.spans(fifo);
 }
 
@@ -238,6 +246,7 @@ void ImprovedUnitSc::run(RunState& r) {
   walk.begin_run(&r, sig);
   setup.begin_run(&r, sig);
   sc_core::sc_start();
+  walk.end_run();
 }
 
 }  // namespace trirast::sc

@@ -19,6 +19,7 @@
 #include "unit/adder_divider.hpp"
 #include "unit/edge_normalizer.hpp"
 #include "unit/edge_walker.hpp"
+#include "unit/improved_unit.hpp"
 #include "unit/interface.hpp"
 #include "unit/span_generator.hpp"
 
@@ -94,7 +95,7 @@ class SetupStage : public sc_core::sc_module {
   SC_HAS_PROCESS(SetupStage);
   explicit SetupStage(sc_core::sc_module_name name);
 
-  sc_core::sc_port<HandoffPutIf<EdgeSetupTxn>> out;
+  sc_core::sc_port<HandoffTransportIf<EdgeSetupTxn>> out;
 
   // Prepares a run (datapath objects for cfg, counters cleared) and releases the process.
   void begin_run(RunState* run, const ImprovedTraceSignals& sig);
@@ -121,26 +122,33 @@ class SpanGeneratorModule : public sc_core::sc_module {
   StageCounters counters;
 };
 
-class WalkStage : public sc_core::sc_module {
+// The walk stage: a target of the hand-off (WalkLoadIf). Loaded in cycle h, it computes the
+// triangle's rows at once, stamps each group of N rows with its cycle, and is idle from
+// t_last + 1; it needs no process of its own.
+class WalkStage : public sc_core::sc_module, public WalkLoadIf<EdgeSetupTxn> {
  public:
-  SC_HAS_PROCESS(WalkStage);
   explicit WalkStage(sc_core::sc_module_name name);
 
-  sc_core::sc_port<HandoffGetIf<EdgeSetupTxn>> in;
   sc_core::sc_port<SpanPushIf> spans;
 
   void begin_run(RunState* run, const ImprovedTraceSignals& sig);
+  // Adds the run's datapath work (summed over its triangles) into the run's work map.
+  void end_run();
+  uint64_t idle_from() const override { return idle_from_; }
+  void load(EdgeSetupTxn* x, uint64_t h) override { idle_from_ = walk(*x, h) + 1; }
   StageCounters counters;
   SpanGeneratorModule span_generator;
   uint64_t rows_stepped[3] = {0, 0, 0};
 
  private:
-  void thread();
   // Walks the triangle loaded in cycle h; returns the cycle of its last group.
   uint64_t walk(EdgeSetupTxn& x, uint64_t h);
 
   RunState* run_ = nullptr;
   ImprovedTraceSignals sig_;
+  uint64_t idle_from_ = 0;  // the run's first cycle the stage is idle (StWalkIdle)
+  TriangleWork work_sum_;   // the walked triangles' work, summed field by field
+  bool any_work_ = false;   // a triangle was walked (add_work was due at least once)
 };
 
 // The whole unit. Elaborated once per process; every run goes through the same modules.
@@ -152,7 +160,7 @@ class ImprovedUnitSc : public sc_core::sc_module {
 
   SpanSink sink;
   SpanFifo fifo;
-  Handoff<EdgeSetupTxn> handoff;
+  HandoffTransport<EdgeSetupTxn> handoff;
   SetupStage setup;
   WalkStage walk;
 };

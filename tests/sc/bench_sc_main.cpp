@@ -1,11 +1,19 @@
 // Speed of the SystemC models on the built-in benchmark scenes (scripts/bench_sim.sh): triangles
 // per second and simulated cycles per second of the improved unit's model, the traditional unit's
-// model beside it, and, when this build has an "rtl" engine, the model/RTL wall-time ratio.
-// Usage: trirast_sc_bench [--repeat R] [scene ...]   (default: the five seed-000 scenes)
+// model beside it, and, when this build has an "rtl" engine, the Verilated RTL's time on the same
+// scene in the same run and the RTL/model time ratio (target: the model >= 20x faster).
+// Runs alternate (model, trad, rtl, model, trad, rtl, ...) so that a change of the machine's load
+// hits all of them; each time is the best of its runs. Wall time and process CPU time are both
+// measured: on a shared machine the CPU-time ratio is the steadier of the two.
+// Usage: trirast_sc_bench [--repeat R] [--rtl-repeat R] [--model-only] [scene ...]
+//        (default: the five seed-000 benchmark scenes, R = 5, RTL R = 3)
+#include <time.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 #include <systemc>  // declares sc_main extern "C"
 #include <vector>
@@ -19,62 +27,90 @@ using namespace trirast;
 
 namespace {
 
+double cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 struct Timing {
-  double seconds = 0;  // best wall time of one run
+  double wall = 1e30;  // best wall time of one run
+  double cpu = 1e30;   // best process CPU time of one run
   uint64_t cycles = 0;
+  int runs = 0;
 };
 
-Timing time_engine(Engine& e, const SetupResult& setup, const RasterConfig& cfg, int repeat) {
-  Timing t;
-  t.seconds = 1e30;
-  for (int i = 0; i < repeat; ++i) {
-    EngineResult r;
-    const auto t0 = std::chrono::steady_clock::now();
-    e.run(setup, cfg, r);
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    t.seconds = std::min(t.seconds, s);
-    t.cycles = r.total_cycles;
-  }
-  return t;
+void time_once(Engine& e, const SetupResult& setup, const RasterConfig& cfg, Timing& t) {
+  EngineResult r;
+  const double c0 = cpu_seconds();
+  const auto t0 = std::chrono::steady_clock::now();
+  e.run(setup, cfg, r);
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double c = cpu_seconds() - c0;
+  t.wall = std::min(t.wall, s);
+  t.cpu = std::min(t.cpu, c);
+  t.cycles = r.total_cycles;
+  ++t.runs;
 }
 
 }  // namespace
 
 int sc_main(int argc, char** argv) {
-  int repeat = 5;
+  int repeat = 5, rtl_repeat = 3;
+  bool model_only = false;
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--repeat" && i + 1 < argc)
       repeat = std::max(1, std::atoi(argv[++i]));
-    else
+    else if (a == "--rtl-repeat" && i + 1 < argc)
+      rtl_repeat = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--model-only")  // for profiling: no trad, no rtl
+      model_only = true;
+    else if (!a.empty() && a[0] == '-') {
+      std::fprintf(stderr, "trirast_sc_bench: unknown option %s\n", a.c_str());
+      return 2;
+    } else
       scenes.push_back(a);
   }
   if (scenes.empty())
     scenes = {"lowpoly-far", "lowpoly-near", "highpoly-far", "highpoly-near", "mixed"};
-  const EngineInfo* rtl = find_engine("rtl");
+  const EngineInfo* rtl = model_only ? nullptr : find_engine("rtl");
   RasterConfig cfg;
-  std::printf("SystemC model speed, best of %d runs, 1024x768, S=8, N=1, FIFO 8, sink ready\n",
-              repeat);
-  std::printf("%-15s %9s %11s %9s %12s %14s %11s %14s", "scene", "triangles", "cycles", "model s",
-              "model tri/s", "model cycles/s", "trad s", "trad cycles/s");
-  if (rtl) std::printf(" %9s %10s", "rtl s", "rtl/model");
+  std::printf("SystemC model speed, 1024x768, S=8, N=1, FIFO 8, sink ready; best of %d runs (RTL %d), "
+              "runs alternating\n",
+              repeat, rtl ? rtl_repeat : 0);
+  std::printf("%-14s %7s %9s %8s %9s %10s %8s %10s", "scene", "tris", "cycles", "model s",
+              "model tri/s", "model cyc/s", "trad s", "trad cyc/s");
+  if (rtl)
+    std::printf(" %8s %10s %9s %8s", "rtl s", "rtl cyc/s", "rtl/model", "cpu ratio");
   std::printf("\n");
   for (const std::string& name : scenes) {
     const Scene scene = make_builtin(name, cfg, CameraOptions{});
     const SetupResult setup = setup_scene(scene.tris, cfg);
     auto model = make_model_engine();
     auto trad = make_trad_model_engine();
-    const Timing m = time_engine(*model, setup, cfg, repeat);
-    const Timing t = time_engine(*trad, setup, cfg, repeat);
+    std::unique_ptr<Engine> r = rtl ? rtl->make() : nullptr;
+    Timing m, t, rt;
+    for (int i = 0; i < std::max(repeat, rtl ? rtl_repeat : 0); ++i) {
+      if (i < repeat) time_once(*model, setup, cfg, m);
+      if (i < repeat && !model_only) time_once(*trad, setup, cfg, t);
+      if (r && i < rtl_repeat) time_once(*r, setup, cfg, rt);
+    }
     const double tris = double(setup.tris.size());
-    std::printf("%-15s %9zu %11llu %9.4f %12.0f %14.0f %11.4f %14.0f", name.c_str(),
-                setup.tris.size(), (unsigned long long)m.cycles, m.seconds, tris / m.seconds,
-                double(m.cycles) / m.seconds, t.seconds, double(t.cycles) / t.seconds);
+    std::printf("%-14s %7zu %9llu %8.4f %9.3gM %9.3gM", name.c_str(), setup.tris.size(),
+                (unsigned long long)m.cycles, m.wall, tris / m.wall * 1e-6,
+                double(m.cycles) / m.wall * 1e-6);
+    if (model_only)
+      std::printf(" %8s %10s", "-", "-");
+    else
+      std::printf(" %8.4f %9.3gM", t.wall, double(t.cycles) / t.wall * 1e-6);
     if (rtl) {
-      auto r = rtl->make();
-      const Timing rt = time_engine(*r, setup, cfg, 1);
-      std::printf(" %9.4f %10.1f", rt.seconds, rt.seconds / m.seconds);
+      if (rt.cycles != m.cycles)
+        std::fprintf(stderr, "trirast_sc_bench: %s: rtl cycles %llu != model cycles %llu\n",
+                     name.c_str(), (unsigned long long)rt.cycles, (unsigned long long)m.cycles);
+      std::printf(" %8.4f %9.3gM %9.1f %8.1f", rt.wall, double(rt.cycles) / rt.wall * 1e-6,
+                  rt.wall / m.wall, rt.cpu / m.cpu);
     }
     std::printf("\n");
     std::fflush(stdout);
