@@ -5,14 +5,16 @@
 // Runs alternate (model, trad, rtl, model, trad, rtl, ...) so that a change of the machine's load
 // hits all of them; each time is the best of its runs. Wall time and process CPU time are both
 // measured: on a shared machine the CPU-time ratio is the steadier of the two.
-// Usage: trirast_sc_bench [--repeat R] [--rtl-repeat R] [--model-only] [scene ...]
-//        (default: the five seed-000 benchmark scenes, R = 5, RTL R = 3)
+// Usage: trirast_sc_bench [--repeat R] [--rtl-repeat R] [--model-only] [--md FILE] [scene ...]
+//        (default: the five seed-000 benchmark scenes, R = 5, RTL R = 3; --md also writes the
+//        table as Markdown, for docs/sc-model.md)
 #include <time.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <systemc>  // declares sc_main extern "C"
@@ -58,6 +60,7 @@ void time_once(Engine& e, const SetupResult& setup, const RasterConfig& cfg, Tim
 int sc_main(int argc, char** argv) {
   int repeat = 5, rtl_repeat = 3;
   bool model_only = false;
+  std::string md_path;
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -67,6 +70,8 @@ int sc_main(int argc, char** argv) {
       rtl_repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--model-only")  // for profiling: no trad, no rtl
       model_only = true;
+    else if (a == "--md" && i + 1 < argc)
+      md_path = argv[++i];
     else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "trirast_sc_bench: unknown option %s\n", a.c_str());
       return 2;
@@ -85,6 +90,20 @@ int sc_main(int argc, char** argv) {
   if (rtl)
     std::printf(" %8s %10s %9s %8s", "rtl s", "rtl cyc/s", "rtl/model", "cpu ratio");
   std::printf("\n");
+  std::ofstream md;
+  if (!md_path.empty()) {
+    md.open(md_path);
+    md << "| scene | triangles | cycles | model s | model tri/s | model cycles/s | trad s | "
+          "trad cycles/s";
+    if (rtl) md << " | RTL s | RTL cycles/s | **RTL / model wall** | RTL / model CPU";
+    md << " |\n|---|---:|---:|---:|---:|---:|---:|---:" << (rtl ? "|---:|---:|---:|---:" : "")
+       << "|\n";
+  }
+  auto num = [](double v, const char* fmt) {
+    char b[64];
+    std::snprintf(b, sizeof b, fmt, v);
+    return std::string(b);
+  };
   for (const std::string& name : scenes) {
     const Scene scene = make_builtin(name, cfg, CameraOptions{});
     const SetupResult setup = setup_scene(scene.tris, cfg);
@@ -114,6 +133,19 @@ int sc_main(int argc, char** argv) {
     }
     std::printf("\n");
     std::fflush(stdout);
+    if (md.is_open()) {
+      md << "| " << name << " | " << setup.tris.size() << " | " << m.cycles << " | "
+         << num(m.wall, "%.4f") << " | " << num(tris / m.wall * 1e-6, "%.3g M") << " | "
+         << num(double(m.cycles) / m.wall * 1e-6, "%.3g M") << " | ";
+      if (model_only)
+        md << "- | -";
+      else
+        md << num(t.wall, "%.4f") << " | " << num(double(t.cycles) / t.wall * 1e-6, "%.3g M");
+      if (rtl)
+        md << " | " << num(rt.wall, "%.4f") << " | " << num(double(rt.cycles) / rt.wall * 1e-6, "%.3g M")
+           << " | **" << num(rt.wall / m.wall, "%.1f") << "** | " << num(rt.cpu / m.cpu, "%.1f");
+      md << " |\n";
+    }
   }
   return 0;
 }
