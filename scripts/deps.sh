@@ -5,6 +5,7 @@ set -euo pipefail
 
 PACKAGES=(
   cmake g++ make pkg-config               # build
+  clang libclang-rt-14-dev                # libFuzzer target (scripts/fuzz.sh): clang++, its runtimes
   libgtest-dev libbenchmark-dev           # GoogleTest, Google Benchmark
   libsystemc-dev                          # SystemC 2.3.4 (transaction-level model)
   verilator iverilog                      # RTL simulation

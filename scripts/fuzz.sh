@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The libFuzzer target (tb/fuzz/): builds it with clang++ -fsanitize=fuzzer,address,undefined in
-# build-fuzz/, runs it for SECONDS (default 600, one process) over the
+# build-fuzz/ (or $TRIRAST_FUZZ_BUILD), runs it for SECONDS (default 600, one process) over the
 # corpus build-fuzz/corpus (kept between runs, never in git), and prints executions per second.
+# The compiler is $TRIRAST_FUZZ_CXX (default clang++); without it the build fails, and so does
+# this script (the test suite runs it as fuzz_libfuzzer_60s: it fails, it never skips).
 # TRIRAST_FUZZ_INJECT_FAULT=1 makes the unit drop a pixel: the run must then fail (self-test).
 # Exit status 0: no finding; otherwise the fuzzer's (a crash file crash-* is left in build-fuzz/).
 #
@@ -14,10 +16,15 @@ if ! [[ "$seconds" =~ ^[0-9]+$ ]] || [ "$seconds" -lt 1 ]; then
   echo "fuzz.sh: SECONDS must be a positive integer, got '$seconds'" >&2
   exit 2
 fi
-build=build-fuzz
+build="${TRIRAST_FUZZ_BUILD:-build-fuzz}"
+cxx="${TRIRAST_FUZZ_CXX:-clang++}"
+if ! command -v "$cxx" >/dev/null 2>&1; then
+  echo "fuzz.sh: no $cxx: install clang and libclang-rt-14-dev (scripts/deps.sh)" >&2
+  exit 1
+fi
 mkdir -p "$build"
 log="$build/build.log"
-if ! { cmake -S tb/fuzz -B "$build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo &&
+if ! { cmake -S tb/fuzz -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo &&
        cmake --build "$build" -j2; } >"$log" 2>&1; then
   tail -n 40 "$log" >&2
   echo "fuzz.sh: build failed (full log: $log)" >&2

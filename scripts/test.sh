@@ -1,10 +1,24 @@
 #!/usr/bin/env bash
-# The whole suite: install what is missing, configure, build with -j2, run every test through
-# ctest. The exit status is the suite's.
+# The whole suite, twice: install what is missing, configure, build with -j2 and run every test
+# through ctest in build/ (this includes one minute of the libFuzzer target), then the same suite
+# built with AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/
+# (scripts/test_sanitize.sh). The exit status is non-zero if either suite fails. Extra arguments
+# go to both ctest runs (e.g. -R cli). TRIRAST_SKIP_SANITIZE=1 runs the first suite only (local
+# use; CI runs both).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
+start=$SECONDS
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2
-cd build
-ctest --output-on-failure -j2 "$@"
+status=0
+( cd build && ctest --output-on-failure -j2 "$@" ) || status=1
+echo "test.sh: suite $([ $status -eq 0 ] && echo passed || echo FAILED) in build/ ($((SECONDS - start)) s)"
+if [ "${TRIRAST_SKIP_SANITIZE:-0}" != 1 ]; then
+  start=$SECONDS
+  sanitize=0
+  ./scripts/test_sanitize.sh "$@" || sanitize=1
+  echo "test.sh: sanitizer suite $([ $sanitize -eq 0 ] && echo passed || echo FAILED) in build-asan/ ($((SECONDS - start)) s)"
+  [ $sanitize -eq 0 ] || status=1
+fi
+exit $status
