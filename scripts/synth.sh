@@ -281,6 +281,15 @@ OUT="$ROOT/docs/synth.md"
   if [[ " $UNITS " == *" trad "* ]]; then
     echo "| traditional, this RTL, Xilinx 7 default | $(cell trad default xilinx7 5) | $(cell trad default xilinx7 4) |"
   fi
+  if [[ " $UNITS " == *" trad "* ]]; then
+    li=$(cell improved default xilinx7 4); lt=$(cell trad default xilinx7 4)
+    echo
+    echo "This RTL's traditional unit is the smaller one ($lt against $li LUTs on Xilinx 7), the"
+    echo "opposite of the paper's Table 1: it draws Bresenham lines between integer pixel vertices"
+    echo "(no subpixel arithmetic, no divider, no corner-value products), as docs/timing.md"
+    echo "specifies it; the paper does not describe its traditional design in enough detail to"
+    echo "reproduce the extra area it reports."
+  fi
   echo
   echo "## Fmax (nextpnr-ice40, HX8K ct256, seed 1)"
   echo
@@ -330,8 +339,9 @@ OUT="$ROOT/docs/synth.md"
   echo "  (\`state_q == StWalkIdle\`) are register decodes; the bundle is the interface's and the lanes'"
   echo "  registers (\`entry_state_o\` is a 2:1 mux of lane registers and \`enters_o\` an AND of two)."
   echo "  So a crossing path is register -> at most one LUT in the setup stage -> the walkers' load"
-  echo "  multiplexers -> register; the walk-stage wrapper times it from its input registers, missing"
-  echo "  at most that one LUT level and the longer wire between the stages."
+  echo "  logic (multiplexers and the row-0 test \`j_entry == 0\`) -> register; the walk-stage"
+  echo "  wrapper times it from its input registers, missing at most that one LUT level and the"
+  echo "  longer wire between the stages."
   echo "- **Walk -> span FIFO**: *combinational*. \`push\`/\`push_data\` are computed in the cycle from"
   echo "  the walkers' registers through the span generator and the row test, and feed the FIFO's"
   echo "  write pointer, count and storage enables; the FIFO's \`count_o\` (a register) feeds the walk"
