@@ -192,7 +192,18 @@ w("- **The 2-thread engine, what changed and why.** The previous engine (chunks 
 worst_floor = min(floors.values())
 met = min(speedups.values()) >= 1.8
 if not met:
-    w("- **The gap to 1.8x in this run.** " + (
+    below = [k for k in speedups if floors[k] < speedups[k]]
+    if below:
+      w("- **The gap to 1.8x in this run.** The target is missed on "
+        + ", ".join(f"`{x}` on `{s}` ({speedups[(s, x)]:.2f}x)" for (s, x) in speedups if speedups[(s, x)] < 1.8)
+        + ". The floor (two threads rasterizing halves into lists of their own) came out below the "
+        "engine on " + ", ".join(f"`{x}` on `{s}` ({floors[(s, x)]:.2f}x vs {speedups[(s, x)]:.2f}x)" for (s, x) in below)
+        + ", so in this run it is not a bound: it splits the triangles into two halves by count, "
+        "with no balancing, while the engine balances by taking chunks from the other's end, and "
+        "the load (above) took time from some runs. This run does not separate the engine's own "
+        "gap from the machine's; a run on idle cores decides it.")
+    else:
+     w("- **The gap to 1.8x in this run.** " + (
       f"The floor (two threads rasterizing halves, with nothing to join) reached only "
       f"{worst_floor:.2f}..{max(floors.values()):.2f}x in the same run, so the machine did not give "
       "the benchmark two cores: with a load average above 2 on 2 cores, each thread gets a fraction "
