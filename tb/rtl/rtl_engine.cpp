@@ -18,6 +18,7 @@
 
 #include "Vtrirast_top.h"
 #include "core/sink_pattern.hpp"
+#include "harness_util.hpp"
 #include "trirast_rtl_params.hpp"
 #include "unit/improved_unit.hpp"
 
@@ -36,25 +37,7 @@ namespace {
 constexpr int kHwEndpoints = TRIRAST_RTL_ENDPOINTS;
 constexpr int kHwFifoDepth = TRIRAST_RTL_FIFO_DEPTH;
 
-// A little-endian bit buffer for the wide ports.
-struct Bits {
-  uint32_t w[8] = {};
-  void put(int lsb, int width, int64_t v) {
-    const uint64_t u = uint64_t(v);
-    for (int b = 0; b < width; ++b) {
-      const int pos = lsb + b;
-      const uint32_t bit = b < 64 ? uint32_t((u >> b) & 1u) : uint32_t(u >> 63);
-      w[pos / 32] = (w[pos / 32] & ~(1u << (pos % 32))) | (bit << (pos % 32));
-    }
-  }
-};
-
-template <class Port>
-void drive(Port& port, const Bits& b, int words) {
-  for (int i = 0; i < words; ++i) port[i] = b.w[i];
-}
-
-constexpr int words(int bits) { return (bits + 31) / 32; }
+using PortBits = Bits<8>;  // up to 256-bit ports
 
 void check_config(const RasterConfig& cfg) {
   auto need = [](bool ok, const std::string& opt, int got, int built, const char* how) {
@@ -81,10 +64,6 @@ void check_config(const RasterConfig& cfg) {
         "divider_quotient_bits: " + std::to_string(cfg.divider_quotient_bits) +
         " is not covered by the rtl engine (the RTL has no quotient truncation; only 0, the exact "
         "divider, is)");
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 // Per-triangle progress, by setup position.
@@ -138,7 +117,7 @@ void run_rtl(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOpti
   if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
-    fst_path = ends_with(cfg.trace_path, ".vcd") ? cfg.trace_path + ".tmp.fst" : cfg.trace_path;
+    fst_path = fst_recording_path(cfg.trace_path);
   }
   // The trace window: setup positions of triangles trace_first..trace_last (scene indices).
   size_t win_a = n, win_b = 0;
@@ -181,7 +160,7 @@ void run_rtl(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOpti
       return;
     }
     const TriangleSetup& t = tris[p];
-    Bits vx, vy, a, b, c;
+    PortBits vx, vy, a, b, c;
     uint32_t bias = 0;
     for (int k = 0; k < 3; ++k) {
       vx.put(k * kVertexBits, kVertexBits, t.v[k].x);
@@ -294,14 +273,7 @@ void run_rtl(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOpti
     fst->close();
   }
   top->final();
-  if (tracing && fst_path != cfg.trace_path) {
-    const std::string cmd = "fst2vcd -f '" + fst_path + "' -o '" + cfg.trace_path + "' >/dev/null";
-    const int rc = std::system(cmd.c_str());
-    std::remove(fst_path.c_str());
-    if (rc != 0)
-      throw std::runtime_error("--trace " + cfg.trace_path +
-                               ": fst2vcd failed (the rtl engine records FST and converts)");
-  }
+  if (tracing) finish_trace(fst_path, cfg.trace_path, "rtl");
 
   uint64_t total = 0, spans = 0, pixels = 0;
   for (const TriangleCycles& tc : out.cycles) {

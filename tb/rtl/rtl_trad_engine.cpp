@@ -17,6 +17,7 @@
 
 #include "Vtrirast_trad_top.h"
 #include "core/sink_pattern.hpp"
+#include "harness_util.hpp"
 #include "trirast_rtl_params.hpp"
 #include "unit/unit_widths.hpp"
 
@@ -31,25 +32,7 @@ namespace {
 #endif
 constexpr int kHwFifoDepth = TRIRAST_RTL_FIFO_DEPTH;
 
-// A little-endian bit buffer for the wide ports.
-struct Bits {
-  uint32_t w[4] = {};
-  void put(int lsb, int width, int64_t v) {
-    const uint64_t u = uint64_t(v);
-    for (int b = 0; b < width; ++b) {
-      const int pos = lsb + b;
-      const uint32_t bit = b < 64 ? uint32_t((u >> b) & 1u) : uint32_t(u >> 63);
-      w[pos / 32] = (w[pos / 32] & ~(1u << (pos % 32))) | (bit << (pos % 32));
-    }
-  }
-};
-
-template <class Port>
-void drive(Port& port, const Bits& b, int words) {
-  for (int i = 0; i < words; ++i) port[i] = b.w[i];
-}
-
-constexpr int words(int bits) { return (bits + 31) / 32; }
+using PortBits = Bits<4>;  // up to 128-bit ports
 static_assert(words(3 * kVertexBits) <= 4, "Bits holds up to 128 bits");
 
 std::string trad_configuration() {
@@ -71,10 +54,6 @@ void check_config(const RasterConfig& cfg) {
        "built for");
   need(cfg.fifo_depth >= 1 && cfg.fifo_depth <= kHwFifoDepth, "--fifo-depth", cfg.fifo_depth,
        kHwFifoDepth, "at most");
-}
-
-bool ends_with(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 struct TriState {
@@ -114,7 +93,7 @@ void run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, const RtlRu
   if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
-    fst_path = ends_with(cfg.trace_path, ".vcd") ? cfg.trace_path + ".tmp.fst" : cfg.trace_path;
+    fst_path = fst_recording_path(cfg.trace_path);
   }
   // The trace window: setup positions of triangles trace_first..trace_last (scene indices).
   size_t win_a = n, win_b = 0;
@@ -154,7 +133,7 @@ void run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, const RtlRu
       return;
     }
     const TriangleSetup& t = tris[p];
-    Bits vx, vy;
+    PortBits vx, vy;
     for (int k = 0; k < 3; ++k) {
       vx.put(k * kVertexBits, kVertexBits, t.v[k].x);
       vy.put(k * kVertexBits, kVertexBits, t.v[k].y);
@@ -260,14 +239,7 @@ void run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, const RtlRu
     fst->close();
   }
   top->final();
-  if (tracing && fst_path != cfg.trace_path) {
-    const std::string cmd = "fst2vcd -f '" + fst_path + "' -o '" + cfg.trace_path + "' >/dev/null";
-    const int rc = std::system(cmd.c_str());
-    std::remove(fst_path.c_str());
-    if (rc != 0)
-      throw std::runtime_error("--trace " + cfg.trace_path +
-                               ": fst2vcd failed (the rtl-trad engine records FST and converts)");
-  }
+  if (tracing) finish_trace(fst_path, cfg.trace_path, "rtl-trad");
 
   uint64_t total = 0, spans = 0, pixels = 0;
   for (const TriangleCycles& tc : out.cycles) {
