@@ -2,9 +2,10 @@
 # The whole suite, twice: install what is missing, configure, build with -j2 and run every test
 # through ctest in build/ (this includes one minute of the libFuzzer target), then the same suite
 # built with AddressSanitizer and UndefinedBehaviorSanitizer in build-asan/
-# (scripts/test_sanitize.sh). The exit status is non-zero if either suite fails. Extra arguments
-# go to both ctest runs (e.g. -R cli). TRIRAST_SKIP_SANITIZE=1 runs the first suite only (local
-# use; CI runs both).
+# (scripts/test_sanitize.sh), then the multi-threaded golden's tests under ThreadSanitizer in
+# build-tsan/ (scripts/test_tsan.sh). The exit status is non-zero if any of them fails. Extra
+# arguments go to both ctest runs (e.g. -R cli). TRIRAST_SKIP_SANITIZE=1 runs the first suite only
+# (local use; CI runs all three).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
@@ -20,5 +21,10 @@ if [ "${TRIRAST_SKIP_SANITIZE:-0}" != 1 ]; then
   ./scripts/test_sanitize.sh "$@" || sanitize=1
   echo "test.sh: sanitizer suite $([ $sanitize -eq 0 ] && echo passed || echo FAILED) in build-asan/ ($((SECONDS - start)) s)"
   [ $sanitize -eq 0 ] || status=1
+  start=$SECONDS
+  tsan=0
+  ./scripts/test_tsan.sh || tsan=1
+  echo "test.sh: thread sanitizer run $([ $tsan -eq 0 ] && echo passed || echo FAILED) in build-tsan/ ($((SECONDS - start)) s)"
+  [ $tsan -eq 0 ] || status=1
 fi
 exit $status

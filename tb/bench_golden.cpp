@@ -6,8 +6,15 @@
 // separately ("setup/...").
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
 #include <map>
+#include <mutex>
 #include <random>
 #include <string>
 #include <thread>
@@ -97,48 +104,240 @@ void bench_traversal(benchmark::State& state, std::string name, Traversal traver
   set_counters(state, s);
 }
 
-// The golden engine on `threads` threads, wall-clock time of everything a caller of
-// Engine::run pays for: thread start and join, the chunk lists, and a fresh output list (its
-// allocation and growth included) holding every span in triangle order. Setup is not included:
-// the caller has done it before run() for any engine; "setup/<scene>" measures it on its own.
-void bench_threads(benchmark::State& state, std::string name, Traversal traversal, int threads) {
-  const BenchScene& s = scene(name);
-  const RasterConfig cfg = bench_config();
-  auto engine = make_golden_engine(traversal, threads);
-  size_t spans = 0;
-  for (auto _ : state) {
-    EngineResult r;
-    engine->run(s.setup, cfg, r);
-    benchmark::DoNotOptimize(r.spans.data());
-    spans = r.spans.size();
-  }
-  set_counters(state, s);
-  state.counters["spans"] = benchmark::Counter(double(spans));
+// ---- Threads: one thread against two, and the machine's ceiling ---------------------------------
+//
+// The machine is shared: what other jobs take from it drifts over seconds, so two medians taken
+// at different moments (even interleaved) differ by 10-20% on the same code. So each iteration of
+// a thread benchmark runs, a few milliseconds apart, in an order that rotates from one iteration
+// to the next:
+//   one   the golden engine on one thread,
+//   two   the golden engine on two threads,
+//   solo  the "twin" workload on one thread: every triangle rasterized twice, into two lists,
+//   twin  the twin workload on two threads: each rasterizes every triangle once, into its list.
+// The twin workload is the golden's own work with nothing to balance, order, copy or join (both
+// threads do the same work, into lists of their own kept between runs, each on a cache line of
+// its own): solo / twin is what the machine gave two threads of this very workload (its memory
+// traffic and instruction mix included) at that moment, the ceiling of any 2-thread golden.
+// Reported: medians of each time, of the engine's speed-up one / two ("speedup"), of the
+// ceiling solo / twin ("ceiling") and of the engine's share of the ceiling, the ratio of the two
+// taken within each iteration ("of_ceiling").
+
+double seconds_of(const std::function<void()>& work) {
+  const auto t0 = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The floor of any 2-thread golden: two threads (one started per run, as the engine does), each
-// rasterizing half of the triangles into a list of its own, kept between runs; no output list, no
-// order, no balancing. Its speed-up over one thread is what the machine gives two threads at the
-// time of the run (on the shared machine, other jobs take their share of the cores).
-void bench_halves(benchmark::State& state, std::string name, Traversal traversal) {
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
+}
+
+// A second thread for the ceilings, started once and asleep between runs, as the engine's helper
+// is: run(mine, theirs) wakes it to do `theirs` while the caller does `mine`, and returns when
+// both are done. So the ceiling pays what the engine pays to start its helper (a wake-up), not a
+// thread's creation.
+class Partner {
+ public:
+  Partner() : thread_([this] { serve(); }) {}
+  ~Partner() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      quit_ = true;
+    }
+    wake_.notify_one();
+    thread_.join();
+  }
+  void run(const std::function<void()>& mine, const std::function<void()>& theirs) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      job_ = &theirs;
+      done_.store(false, std::memory_order_relaxed);
+    }
+    wake_.notify_one();
+    mine();
+    while (!done_.load(std::memory_order_acquire)) std::this_thread::yield();
+  }
+
+ private:
+  void serve() {
+    for (;;) {
+      const std::function<void()>* job = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return quit_ || job_ != nullptr; });
+        if (quit_) return;
+        job = job_;
+        job_ = nullptr;
+      }
+      (*job)();
+      done_.store(true, std::memory_order_release);
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  const std::function<void()>* job_ = nullptr;
+  bool quit_ = false;
+  std::atomic<bool> done_{true};
+  std::thread thread_;
+};
+
+void bench_threads(benchmark::State& state, std::string name, Traversal traversal) {
   const BenchScene& s = scene(name);
   const RasterConfig cfg = bench_config();
-  const size_t half = s.setup.tris.size() / 2;
-  SpanList lists[2];
-  for (SpanList& l : lists) l.reserve(1 << 21);
-  auto part = [&](size_t id) {
-    lists[id].clear();
-    const size_t first = id == 0 ? 0 : half, last = id == 0 ? half : s.setup.tris.size();
-    for (size_t k = first; k < last; ++k) golden_triangle(s.setup.tris[k], cfg, traversal, lists[id]);
+  auto engine1 = make_golden_engine(traversal, 1), engine2 = make_golden_engine(traversal, 2);
+  size_t spans = 0;
+  // The engine: the wall clock of everything a caller of Engine::run pays for: waking the helper,
+  // the chunk lists, and a fresh output list (its allocation and growth included) holding every
+  // span in triangle order. Setup is not included: the caller has done it before run() for any
+  // engine; "setup/<scene>" measures it on its own.
+  auto run = [&](Engine& engine) {
+    EngineResult r;
+    engine.run(s.setup, cfg, r);
+    benchmark::DoNotOptimize(r.spans.data());
+    spans = r.spans.size();
   };
+  struct alignas(64) OwnList {
+    SpanList spans;
+  } own[2];
+  for (OwnList& l : own) l.spans.reserve(1 << 21);
+  auto pass = [&](size_t id) {
+    own[id].spans.clear();
+    for (const TriangleSetup& t : s.setup.tris) golden_triangle(t, cfg, traversal, own[id].spans);
+    benchmark::DoNotOptimize(own[id].spans.data());
+  };
+  Partner partner;
+  const std::function<void()> work[4] = {
+      [&] { run(*engine1); },
+      [&] { run(*engine2); },
+      [&] {
+        pass(0);
+        pass(1);
+      },
+      [&] { partner.run([&] { pass(0); }, [&] { pass(1); }); }};
+  std::vector<double> t[4], speedup, ceiling, share;
+  size_t rotation = 0;
   for (auto _ : state) {
-    std::thread other(part, size_t(1));
-    part(0);
-    other.join();
-    benchmark::DoNotOptimize(lists[0].data());
-    benchmark::DoNotOptimize(lists[1].data());
+    double secs[4] = {0, 0, 0, 0}, total = 0;
+    for (size_t k = 0; k < 4; ++k) {
+      const size_t w = (rotation + k) % 4;
+      secs[w] = seconds_of(work[w]);
+      total += secs[w];
+    }
+    rotation = (rotation + 1) % 4;
+    for (size_t w = 0; w < 4; ++w) t[w].push_back(secs[w]);
+    speedup.push_back(secs[0] / secs[1]);
+    ceiling.push_back(secs[2] / secs[3]);
+    share.push_back(speedup.back() / ceiling.back());
+    state.SetIterationTime(total);
   }
-  set_counters(state, s);
+  state.counters["one_ms"] = median_of(t[0]) * 1e3;
+  state.counters["two_ms"] = median_of(t[1]) * 1e3;
+  state.counters["solo_ms"] = median_of(t[2]) * 1e3;
+  state.counters["twin_ms"] = median_of(t[3]) * 1e3;
+  state.counters["speedup"] = median_of(speedup);
+  state.counters["ceiling"] = median_of(ceiling);
+  state.counters["of_ceiling"] = median_of(share);
+  state.counters["iterations"] = double(speedup.size());
+  state.counters["tris"] = double(s.setup.tris.size());
+  state.counters["spans"] = double(spans);
+}
+
+// The ceiling for pure arithmetic: a chain of multiply-adds (no memory, nothing shared). Two idle
+// cores give 2x.
+uint64_t arithmetic(uint64_t steps, uint64_t seed) {
+  uint64_t x = seed;
+  for (uint64_t k = 0; k < steps; ++k) x = x * 6364136223846793005ull + 1442695040888963407ull;
+  return x;
+}
+
+// The same pairing for any work cut in two: one thread does both halves, against two threads one
+// half each (the second woken as above), one after the other in alternating order.
+void paired_halves(benchmark::State& state, const std::function<void()>& first,
+                   const std::function<void()>& second) {
+  Partner partner;
+  const std::function<void()> one = [&] {
+    first();
+    second();
+  };
+  const std::function<void()> two = [&] { partner.run(first, second); };
+  std::vector<double> t1, t2, ratio;
+  bool two_first = false;
+  for (auto _ : state) {
+    double a = 0, b = 0;
+    if (two_first) {
+      b = seconds_of(two);
+      a = seconds_of(one);
+    } else {
+      a = seconds_of(one);
+      b = seconds_of(two);
+    }
+    two_first = !two_first;
+    t1.push_back(a);
+    t2.push_back(b);
+    ratio.push_back(a / b);
+    state.SetIterationTime(a + b);
+  }
+  state.counters["one_ms"] = median_of(t1) * 1e3;
+  state.counters["two_ms"] = median_of(t2) * 1e3;
+  state.counters["speedup"] = median_of(ratio);
+  state.counters["iterations"] = double(ratio.size());
+}
+
+void bench_ceiling_arithmetic(benchmark::State& state, uint64_t steps) {
+  struct alignas(64) Result {
+    uint64_t value = 0;
+  } results[2];
+  paired_halves(
+      state, [&] { benchmark::DoNotOptimize(results[0].value = arithmetic(steps / 2, 1)); },
+      [&] { benchmark::DoNotOptimize(results[1].value = arithmetic(steps - steps / 2, 2)); });
+}
+
+// The ceiling for streaming memory: each half reads one array and writes a running sum into
+// another, 16 MB each (about a scene's triangles and spans), no array shared between halves.
+void bench_ceiling_stream(benchmark::State& state) {
+  constexpr size_t kWords = (16u << 20) / sizeof(uint64_t);
+  struct Arrays {
+    std::vector<uint64_t> in, out;
+  } arrays[2];
+  for (size_t h = 0; h < 2; ++h) {
+    arrays[h].in.assign(kWords, h + 1);
+    arrays[h].out.assign(kWords, 0);
+  }
+  auto half = [&](size_t h) {
+    uint64_t sum = 0;
+    const uint64_t* in = arrays[h].in.data();
+    uint64_t* out = arrays[h].out.data();
+    for (size_t k = 0; k < kWords; ++k) out[k] = sum += in[k];
+    benchmark::DoNotOptimize(out);
+    benchmark::ClobberMemory();
+  };
+  paired_halves(state, [&] { half(0); }, [&] { half(1); });
+}
+
+// Two of the engine's own costs, on their own: waking a sleeping second thread and waiting for it
+// to report back (a Partner with nothing to do: what starting the helper and learning that it
+// is done costs at least), and copying a scene's spans from one list to the end of another
+// (warm, reserved) one: the writer copies every chunk the helper rasterized this way.
+void bench_wake(benchmark::State& state) {
+  Partner partner;
+  for (auto _ : state) partner.run([] {}, [] {});
+}
+
+void bench_copy(benchmark::State& state, std::string name) {
+  const BenchScene& s = scene(name);
+  const RasterConfig cfg = bench_config();
+  SpanList all, to;
+  for (const TriangleSetup& t : s.setup.tris) golden_triangle(t, cfg, all);
+  to.reserve(all.size());
+  for (auto _ : state) {
+    to.clear();
+    to.insert(to.end(), all.begin(), all.end());
+    benchmark::DoNotOptimize(to.data());
+  }
+  state.counters["spans"] = double(all.size());
 }
 
 // Setup alone (snap, orient, edge functions, box), for scale.
@@ -152,10 +351,14 @@ void bench_setup(benchmark::State& state, std::string name) {
   set_counters(state, s);
 }
 
-// The thread benchmarks run this many times each; scripts/bench_golden.sh interleaves them in a
-// random order (--benchmark_enable_random_interleaving), so that a burst of load from other jobs
-// on the shared machine hits 1-thread and 2-thread runs alike, and reports medians.
-constexpr int kThreadRepetitions = 9;
+// Each thread benchmark runs this many batches of iterations (each batch at least kThreadSeconds
+// of measured time); scripts/bench_golden.sh reports the median batch and the range.
+constexpr int kThreadBatches = 3;
+constexpr double kThreadSeconds = 3.0;
+
+// The ceiling's amount of arithmetic: about 16 ms on one thread here, the order of the thread
+// benchmarks' one-thread times.
+constexpr uint64_t kCeilingSteps = 12000000;
 
 const bool registered = [] {
   const char* scenes[] = {"lowpoly-far", "lowpoly-near", "highpoly-far", "highpoly-near", "mixed",
@@ -171,25 +374,28 @@ const bool registered = [] {
           ->MinTime(0.3);
   for (const char* sc : {"highpoly-near", "random100k"})
     for (Traversal tr : {Traversal::Auto, Traversal::Incremental, Traversal::Simple})
-      for (int threads : {1, 2}) {
-        benchmark::RegisterBenchmark((std::string("threads/") + sc + "/" + traversal_name(tr) +
-                                      "/" + std::to_string(threads))
-                                         .c_str(),
-                                     bench_threads, std::string(sc), tr, threads)
-            ->Unit(benchmark::kMillisecond)
-            ->MinTime(0.2)
-            ->Repetitions(kThreadRepetitions)
-            ->UseRealTime();
-      }
-  for (const char* sc : {"highpoly-near", "random100k"})
-    for (Traversal tr : {Traversal::Auto, Traversal::Incremental, Traversal::Simple})
       benchmark::RegisterBenchmark(
-          (std::string("halves/") + sc + "/" + traversal_name(tr)).c_str(), bench_halves,
+          (std::string("threads/") + sc + "/" + traversal_name(tr)).c_str(), bench_threads,
           std::string(sc), tr)
           ->Unit(benchmark::kMillisecond)
-          ->MinTime(0.2)
-          ->Repetitions(kThreadRepetitions)
-          ->UseRealTime();
+          ->MinTime(kThreadSeconds)
+          ->Repetitions(kThreadBatches)
+          ->UseManualTime();
+  benchmark::RegisterBenchmark("ceiling/arithmetic", bench_ceiling_arithmetic, kCeilingSteps)
+      ->Unit(benchmark::kMillisecond)
+      ->MinTime(kThreadSeconds)
+      ->Repetitions(kThreadBatches)
+      ->UseManualTime();
+  benchmark::RegisterBenchmark("ceiling/stream", bench_ceiling_stream)
+      ->Unit(benchmark::kMillisecond)
+      ->MinTime(kThreadSeconds)
+      ->Repetitions(kThreadBatches)
+      ->UseManualTime();
+  benchmark::RegisterBenchmark("threads/wake", bench_wake)->Unit(benchmark::kMicrosecond);
+  for (const char* sc : {"highpoly-near", "random100k"})
+    benchmark::RegisterBenchmark((std::string("copy/") + sc).c_str(), bench_copy, std::string(sc))
+        ->Unit(benchmark::kMillisecond)
+        ->MinTime(0.3);
   for (const char* sc : {"tri10", "highpoly-near", "random100k"})
     benchmark::RegisterBenchmark((std::string("setup/") + sc).c_str(), bench_setup,
                                  std::string(sc))

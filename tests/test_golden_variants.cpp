@@ -311,6 +311,26 @@ TEST(GoldenParallel, LargeScenesSameAsOneThread) {
   }
 }
 
+// One engine object run on scene after scene: its helper threads sleep between runs and are
+// woken for the next one, whatever its size (a scene of a few chunks that the writer finishes
+// before a helper wakes, then a large one, then a small one again); destroying the engine with its
+// helpers asleep ends them.
+TEST(GoldenParallel, OneEngineManyScenes) {
+  TestRng rng(204);
+  RasterConfig cfg;
+  auto engine = make_golden_engine(Traversal::Auto, 3);
+  auto one = make_golden_engine(Traversal::Auto, 1);
+  for (int n : {40, 70000, 3, 500, 0, 20000, 64}) {
+    SCOPED_TRACE(std::to_string(n) + " triangles");
+    const auto tris = test::random_grid_triangles(rng, n, -20, 1044, -20, 788, 8, 60);
+    const SetupResult setup = setup_scene(tris, cfg);
+    EngineResult expect, got;
+    one->run(setup, cfg, expect);
+    engine->run(setup, cfg, got);
+    EXPECT_TRUE(got.spans == expect.spans);
+  }
+}
+
 // The engine appends to what the result already holds, as the single-threaded one does.
 TEST(GoldenParallel, AppendsToExistingSpans) {
   TestRng rng(203);

@@ -5,25 +5,31 @@
 // chunks into two ranges: a front range [0, split) and a back range [split, chunks). The writer
 // rasterizes the front range from its first chunk on, straight into the output (no copy: the
 // spans land where the single-threaded engine puts them). The helpers rasterize the back range
-// from its first chunk on, each chunk into a span list of its own. When the writer has done its
-// range it appends the helpers' finished chunks in order, one copy each, while the helpers are
-// still rasterizing later ones. Either side that runs out of work takes chunks from the far end
-// of the other's range (the writer from the end of the back range, the helpers from the end of
-// the front range), into a chunk list that the writer copies when its turn comes; so neither side
-// idles while the other has work, whatever the split. The split is chosen so that the writer's
-// share of rasterizing plus its copying of the helpers' share takes as long as the helpers' share.
+// from its first chunk on, each chunk into a span list of its own, which the writer appends in
+// order (one copy each) when it gets there. Whichever side runs out of work takes the lowest
+// chunk not yet taken from the other's range, so that both sides end together and the chunks
+// still to be copied at the end are the last one or two: the writer, having finished its range,
+// first copies the helpers' finished chunks and then works beside them on the chunks right
+// after theirs (straight into the output when a chunk is the next one in order, else into its
+// list). The split is set from an estimate of each triangle's cost (a sample of the boxes) so
+// that the writer's range plus its copying of the helpers' share takes as long as the helpers'
+// share: the better the guess, the fewer spans are copied.
 //
 // The output is the single-threaded list, span for span and in the same order, for any thread
 // count: every chunk's spans are appended exactly once, in chunk order. Nothing is merged or
-// sorted, and the output is never zero-filled or resized: it is reserved once (see
-// estimated_spans) and grows by push_back and by appending whole chunks.
+// sorted, and the output is never zero-filled or resized: it is reserved once (see Plan) and
+// grows by push_back and by appending whole chunks.
 #include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <exception>
+#include <functional>
 #include <memory>
+#include <mutex>
 #include <system_error>
 #include <thread>
+#include <vector>
 
 #include "golden/golden.hpp"
 
@@ -39,18 +45,59 @@ size_t max_spans(const std::vector<TriangleSetup>& tris, size_t first, size_t la
   return n;
 }
 
-// The output's reservation: the bound above from every 64th triangle, scaled up, plus an eighth.
-// Summing every box is a pass over the whole scene, a cache and TLB miss per triangle (about a
-// seventh of a one-thread run on 10-pixel triangles); the sample costs a 64th of that. The bound
-// exceeds the spans by 5..8% on the benchmark scenes, so the output rarely regrows; when it does
-// (a scene whose big triangles the sample missed), push_back and insert grow it geometrically.
-size_t estimated_spans(const std::vector<TriangleSetup>& tris) {
-  constexpr size_t kStride = 64;
-  size_t sampled = 0, n = 0;
-  for (size_t k = 0; k < tris.size(); k += kStride, ++sampled) n += size_t(tris[k].box.height());
-  if (sampled == 0) return 0;
-  const size_t scaled = size_t(double(n) * double(tris.size()) / double(sampled));
-  return scaled + scaled / 8 + 256;
+// A traversal's cost for one triangle, in units of one pixel tested, as a guess for balancing: a
+// fixed part (setup of the walk) plus its rows, or its box's pixels if fewer (small boxes are
+// walked pixel by pixel, large ones row by row). Only the split depends on it; the taking of
+// chunks from the other side corrects a wrong guess.
+constexpr int64_t kTriangleCost = 24;
+constexpr int64_t kRowCost = 12;
+int64_t cost_guess(const PixelBox& box) {
+  const int64_t rows = box.height();
+  return kTriangleCost + std::min(rows * box.width(), kRowCost * rows);
+}
+
+// Both from every 64th triangle: summing every box is a pass over the whole scene, a cache and
+// TLB miss per triangle (about a seventh of a one-thread run on 10-pixel triangles); the sample
+// costs a 64th of that.
+struct Plan {
+  // The output's reservation: at most one span per row of each box, scaled up from the sample,
+  // plus an eighth. The bound exceeds the spans by 5..8% on the benchmark scenes, so the output
+  // rarely regrows; when it does (a scene whose big triangles the sample missed), push_back and
+  // insert grow it geometrically.
+  size_t reserve = 0;
+  // The first chunk of the back range: the writer's range [0, split) holds `writer_share` of the
+  // scene's guessed cost.
+  size_t split = 0;
+};
+
+constexpr size_t kSampleStride = 64;
+
+Plan make_plan(const std::vector<TriangleSetup>& tris, size_t per_chunk, size_t chunks,
+               double writer_share) {
+  Plan plan;
+  size_t sampled = 0, rows = 0;
+  int64_t total = 0;
+  std::vector<int64_t> cost;  // the guessed cost of each sampled triangle
+  if (chunks > 1) cost.reserve(tris.size() / kSampleStride + 1);
+  for (size_t k = 0; k < tris.size(); k += kSampleStride, ++sampled) {
+    rows += size_t(tris[k].box.height());
+    if (chunks > 1) {
+      cost.push_back(cost_guess(tris[k].box));
+      total += cost.back();
+    }
+  }
+  if (sampled == 0) return plan;
+  const size_t scaled = size_t(double(rows) * double(tris.size()) / double(sampled));
+  plan.reserve = scaled + scaled / 8 + 256;
+  if (chunks > 1) {
+    // The sampled triangle where the writer's share of the cost is reached, and its chunk.
+    const int64_t target = int64_t(writer_share * double(total));
+    int64_t sum = 0;
+    size_t s = 0;
+    while (s < cost.size() && sum + cost[s] <= target) sum += cost[s++];
+    plan.split = std::clamp<size_t>((s * kSampleStride) / per_chunk, 1, chunks - 1);
+  }
+  return plan;
 }
 
 // Chunks of consecutive triangles: at most 256 triangles, and at least 16 chunks per thread when
@@ -63,38 +110,23 @@ constexpr size_t kChunksPerThread = 16;
 // the split only, the stealing at the ends corrects a wrong guess.
 constexpr double kCopyCost = 0.07;
 
-// A range of chunk indices [lo, hi) that two sides take from its two ends, lock-free: both bounds
-// live in one 64-bit word. On a cache line of its own, so that claims from one range do not slow
-// down claims from the other.
+// A range of chunk indices [next, end) that several threads take from its front, lock-free. On
+// a cache line of its own, so that claims from one range do not slow down claims from the other.
 class alignas(64) ChunkRange {
  public:
-  void reset(uint32_t lo, uint32_t hi) { bounds_.store(pack(lo, hi), std::memory_order_relaxed); }
-  bool take_front(uint32_t& chunk) {
-    uint64_t b = bounds_.load(std::memory_order_relaxed);
-    for (;;) {
-      const uint32_t lo = uint32_t(b), hi = uint32_t(b >> 32);
-      if (lo >= hi) return false;
-      if (bounds_.compare_exchange_weak(b, pack(lo + 1, hi), std::memory_order_relaxed)) {
-        chunk = lo;
-        return true;
-      }
-    }
+  void reset(uint32_t first, uint32_t end) {
+    next_.store(first, std::memory_order_relaxed);
+    end_ = end;
   }
-  bool take_back(uint32_t& chunk) {
-    uint64_t b = bounds_.load(std::memory_order_relaxed);
-    for (;;) {
-      const uint32_t lo = uint32_t(b), hi = uint32_t(b >> 32);
-      if (lo >= hi) return false;
-      if (bounds_.compare_exchange_weak(b, pack(lo, hi - 1), std::memory_order_relaxed)) {
-        chunk = hi - 1;
-        return true;
-      }
-    }
+  bool take(uint32_t& chunk) {
+    if (next_.load(std::memory_order_relaxed) >= end_) return false;  // spares a write when done
+    chunk = next_.fetch_add(1, std::memory_order_relaxed);
+    return chunk < end_;
   }
 
  private:
-  static uint64_t pack(uint32_t lo, uint32_t hi) { return uint64_t(hi) << 32 | lo; }
-  std::atomic<uint64_t> bounds_{0};
+  std::atomic<uint32_t> next_{0};
+  uint32_t end_ = 0;
 };
 
 // One chunk rasterized off the writer: its spans and whether they are complete. A cache line (or
@@ -103,6 +135,87 @@ class alignas(64) ChunkRange {
 struct alignas(64) ChunkSpans {
   SpanList spans;
   std::atomic<bool> ready{false};
+};
+
+// The helper threads of one engine: started by its first parallel run, asleep between runs, and
+// joined when the engine is destroyed. Starting a thread per run and joining it cost the writer
+// about 75 us and 70 us here (clone and exit on a virtual machine), 5% of a 3 ms run on 100,000
+// triangles; waking a sleeping helper costs the writer only the notify, and at the end of a run
+// the writer waits only for helpers to leave the job, not for threads to exit.
+class HelperPool {
+ public:
+  using Job = std::function<void(size_t)>;  // called with the helper's id, 1..count
+
+  HelperPool() = default;
+  HelperPool(const HelperPool&) = delete;
+  HelperPool& operator=(const HelperPool&) = delete;
+  ~HelperPool() {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      quit_ = true;
+    }
+    wake_.notify_all();
+    for (std::thread& t : threads_) t.join();
+  }
+
+  // Starts helpers until there are `count` (fewer if the system gives no more threads); returns
+  // how many there are.
+  size_t reserve(size_t count) {
+    while (threads_.size() < count) {
+      try {
+        const size_t id = threads_.size() + 1;
+        threads_.emplace_back([this, id] { serve(id); });
+      } catch (const std::system_error&) {
+        break;  // the writer takes whatever the helpers there are leave
+      }
+    }
+    return threads_.size();
+  }
+
+  // Runs job(id) on helpers 1..count (count <= reserve()'s answer) and returns at once; finish()
+  // must be called before `job` or anything it refers to goes away.
+  void start(const Job& job, size_t count) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      job_ = &job;
+      active_ = count;
+      finished_.store(0, std::memory_order_relaxed);
+      ++generation_;
+    }
+    wake_.notify_all();
+  }
+
+  // Waits until every helper of the job has returned from it.
+  void finish() {
+    while (finished_.load(std::memory_order_acquire) < active_) std::this_thread::yield();
+  }
+
+ private:
+  void serve(size_t id) {
+    uint64_t seen = 0;
+    for (;;) {
+      const Job* job = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        wake_.wait(lock, [&] { return quit_ || generation_ != seen; });
+        if (quit_) return;
+        seen = generation_;
+        if (id > active_) continue;  // not needed for this job
+        job = job_;
+      }
+      (*job)(id);
+      finished_.fetch_add(1, std::memory_order_release);
+    }
+  }
+
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::vector<std::thread> threads_;
+  const Job* job_ = nullptr;
+  size_t active_ = 0;
+  uint64_t generation_ = 0;
+  bool quit_ = false;
+  std::atomic<size_t> finished_{0};
 };
 
 class GoldenEngine : public Engine {
@@ -119,7 +232,7 @@ class GoldenEngine : public Engine {
         std::clamp<size_t>(n / (threads * kChunksPerThread), 1, kMaxChunkTriangles);
     const size_t chunks = (n + per_chunk - 1) / per_chunk;
     if (threads <= 1 || chunks < 2) {
-      out.spans.reserve(out.spans.size() + estimated_spans(tris));
+      out.spans.reserve(out.spans.size() + make_plan(tris, per_chunk, 1, 0).reserve);
       for (const TriangleSetup& t : tris) golden_triangle(t, cfg, traversal_, out.spans);
       return;
     }
@@ -140,13 +253,11 @@ class GoldenEngine : public Engine {
       chunk_capacity_ = chunks;
     }
     for (size_t c = 0; c < chunks; ++c) chunk_[c].ready.store(false, std::memory_order_relaxed);
-    // The writer's share x of the chunks: x + kCopyCost * (1 - x) = (1 - x) / helpers.
-    const double helpers = double(threads - 1);
+    const size_t helpers_here = std::min(threads - 1, helpers_.reserve(threads - 1));
+    // The writer's share x of the work: x + kCopyCost * (1 - x) = (1 - x) / helpers.
+    const double helpers = double(helpers_here);
     const double x = (1 - kCopyCost * helpers) / (1 + helpers - kCopyCost * helpers);
-    const size_t split = std::clamp<size_t>(size_t(x * double(chunks) + 0.5), 1, chunks - 1);
-    front_.reset(0, uint32_t(split));
-    back_.reset(uint32_t(split), uint32_t(chunks));
-    std::atomic<bool> stop{false};
+    std::atomic<bool> stop{false}, planned{false};
     // A failure anywhere stops every thread at its next chunk; the one of the lowest chunk wins.
     struct Failure {
       size_t chunk = SIZE_MAX;
@@ -154,12 +265,13 @@ class GoldenEngine : public Engine {
     };
     std::vector<Failure> failures(threads);
 
-    auto helper = [&](size_t id) {
+    const HelperPool::Job helper = [&](size_t id) {
       uint32_t c = 0;
       bool busy = false;
+      while (!planned.load(std::memory_order_acquire)) std::this_thread::yield();
       try {
         while (!stop.load(std::memory_order_relaxed) &&
-               (back_.take_front(c) || front_.take_back(c))) {
+               (back_.take(c) || front_.take(c))) {
           busy = true;
           ChunkSpans& mine = chunk_[c];
           mine.spans.clear();
@@ -174,34 +286,43 @@ class GoldenEngine : public Engine {
       }
     };
 
-    std::vector<std::thread> pool;
-    pool.reserve(threads - 1);
+    // Wake the helpers first: they take longer to wake (about 80 us here) than the writer takes
+    // to plan (about 30 us on 100,000 triangles).
+    if (helpers_here > 0) helpers_.start(helper, helpers_here);
+    Plan plan;
     try {
-      for (size_t id = 1; id < threads; ++id) pool.emplace_back(helper, id);
-    } catch (const std::system_error&) {
-      // No more threads to be had: the writer takes whatever the helpers started leave.
+      plan = make_plan(tris, per_chunk, chunks, x);
+    } catch (...) {  // out of memory for the sample: let the helpers go before giving up
+      stop.store(true);
+      planned.store(true, std::memory_order_release);
+      if (helpers_here > 0) helpers_.finish();
+      throw;
     }
+    front_.reset(0, uint32_t(plan.split));
+    back_.reset(uint32_t(plan.split), uint32_t(chunks));
+    planned.store(true, std::memory_order_release);
 
     // The writer (its reservation overlaps with the helpers' first chunks).
     size_t next = 0;  // the next chunk to append to the output
     uint32_t c = 0;
     try {
-      out.reserve(out.size() + estimated_spans(tris));
+      out.reserve(out.size() + plan.reserve);
       while (next < chunks && !stop.load(std::memory_order_relaxed)) {
         if (chunk_[next].ready.load(std::memory_order_acquire)) {
           const SpanList& done = chunk_[next].spans;
           out.insert(out.end(), done.begin(), done.end());
           ++next;
-        } else if (front_.take_front(c)) {
-          // The front range's first chunk is always the next one: straight into the output.
-          rasterize(c, out);
-          ++next;
-        } else if (back_.take_back(c)) {
-          ChunkSpans& mine = chunk_[c];
-          mine.spans.clear();
-          mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
-          rasterize(c, mine.spans);
-          mine.ready.store(true, std::memory_order_relaxed);
+        } else if (front_.take(c) || back_.take(c)) {
+          if (c == next) {
+            rasterize(c, out);  // the next chunk in order: straight into the output
+            ++next;
+          } else {
+            ChunkSpans& mine = chunk_[c];  // a later one, appended when its turn comes
+            mine.spans.clear();
+            mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
+            rasterize(c, mine.spans);
+            mine.ready.store(true, std::memory_order_relaxed);
+          }
         } else {
           std::this_thread::yield();  // the next chunk is a helper's, still being rasterized
         }
@@ -210,7 +331,7 @@ class GoldenEngine : public Engine {
       failures[0] = Failure{c, std::current_exception()};
       stop.store(true);
     }
-    for (std::thread& th : pool) th.join();
+    if (helpers_here > 0) helpers_.finish();
     const Failure* worst = nullptr;
     for (const Failure& f : failures)
       if (f.error && (!worst || f.chunk < worst->chunk)) worst = &f;
@@ -224,6 +345,7 @@ class GoldenEngine : public Engine {
   std::unique_ptr<ChunkSpans[]> chunk_;
   size_t chunk_capacity_ = 0;
   ChunkRange front_, back_;
+  HelperPool helpers_;  // last: destroyed (its threads joined) before what they use
 };
 
 class FloatScanlineEngine : public Engine {
