@@ -1,0 +1,237 @@
+// The per-cycle loop of the Verilator harnesses (rtl_engine.cpp for trirast_top,
+// rtl_trad_engine.cpp for trirast_trad_top): reset, triangles offered back to back, span_ready_i
+// from the --sink-stall pattern, the handshakes and observation outputs sampled into the spans
+// and per-triangle cycles of docs/timing.md, and the trace window. Both tops share these ports
+// (docs/rtl.md, "Harness"); what differs is given by the harness as a Unit:
+//
+//   void configure(Top&, const RasterConfig&)     its cfg_*_i ports beyond the viewport and FIFO
+//   void offer(Top&, const TriangleSetup&)        its triangle ports (tri_valid_i, tri_tag_i: here)
+//   bool early_retire(const Top&, size_t& tag)    a triangle leaving before the walk stage in this
+//                                                 cycle (no spans: a box outside the viewport,
+//                                                 a collinear triangle), and its tag
+//
+// Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
+// applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
+// can be sampled; then the rising edge c is evaluated. Cycle 0 is the first rising edge after
+// rst_ni went high.
+#pragma once
+
+#include <verilated.h>
+#include <verilated_fst_c.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/engine.hpp"
+#include "core/sink_pattern.hpp"
+#include "harness_util.hpp"
+
+namespace trirast {
+namespace rtl {
+
+struct CycleCounts {
+  uint64_t walk_stalls = 0;        // cycles the walk stage waited for FIFO room
+  uint64_t early_retirements = 0;  // triangles that left before the walk stage
+};
+
+// Runs every set-up triangle through a fresh instance of Top (named top_name in the trace) and
+// fills out.spans, out.cycles, out.total_cycles and the work counters triangles, spans, pixels,
+// walk_stall_cycles, total_cycles and rtl_x_seed. `engine` names the engine in errors.
+template <class Top, class Unit>
+CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
+                       const char* engine, const char* top_name, Unit& unit, EngineResult& out) {
+  const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);
+  const std::vector<TriangleSetup>& tris = setup.tris;
+  const size_t n = tris.size();
+  const std::string who = engine;
+
+  out.cycles.assign(n, TriangleCycles{});
+  for (size_t p = 0; p < n; ++p) out.cycles[p].tri = tris[p].index;
+  // Per-triangle progress, by setup position: its last group or row went through the walk stage
+  // (or it retired early), and it is done (its last span left, or it had none).
+  std::vector<uint8_t> walked(n, 0), done(n, 0);
+
+  // ---- the model ----
+  auto ctx = std::make_unique<VerilatedContext>();
+  ctx->randReset(2);  // --x-initial unique: random initial values from the seed below
+  ctx->randSeed(int(x_seed));
+  const bool tracing = !cfg.trace_path.empty();
+  if (tracing) ctx->traceEverOn(true);
+  auto top = std::make_unique<Top>(ctx.get(), top_name);
+  std::unique_ptr<VerilatedFstC> fst;
+  std::string fst_path;
+  if (tracing) {
+    fst = std::make_unique<VerilatedFstC>();
+    top->trace(fst.get(), 99);
+    fst_path = fst_recording_path(cfg.trace_path);
+  }
+  // The trace window: setup positions of triangles trace_first..trace_last (scene indices).
+  size_t win_a = n, win_b = 0;
+  for (size_t p = 0; p < n; ++p) {
+    const int64_t idx = tris[p].index;
+    if (idx >= cfg.trace_first && (cfg.trace_last < 0 || idx <= cfg.trace_last)) {
+      win_a = std::min(win_a, p);
+      win_b = std::max(win_b, p);
+    }
+  }
+  bool trace_open = false, trace_over = false;
+
+  // ---- configuration and reset ----
+  top->cfg_vp_xmax_i = uint32_t(cfg.width - 1);
+  top->cfg_vp_ymax_i = uint32_t(cfg.height - 1);
+  top->cfg_fifo_depth_i = uint32_t(cfg.fifo_depth);
+  unit.configure(*top, cfg);
+  top->tri_valid_i = 0;
+  top->span_ready_i = 0;
+  top->clk_i = 0;
+  top->rst_ni = 1;
+  top->eval();
+  top->rst_ni = 0;
+  top->eval();
+  for (int i = 0; i < 2; ++i) {
+    top->clk_i = 1;
+    top->eval();
+    top->clk_i = 0;
+    top->eval();
+  }
+  top->rst_ni = 1;
+  top->eval();
+
+  // Puts triangle p on the port.
+  auto offer = [&](size_t p) {
+    if (p >= n) {
+      top->tri_valid_i = 0;
+      return;
+    }
+    top->tri_valid_i = 1;
+    top->tri_tag_i = uint32_t(p);
+    unit.offer(*top, tris[p]);
+  };
+  auto known = [&](size_t p, const char* what) {
+    if (p >= n)
+      throw std::logic_error(who + ": " + what + " with an unknown tag " + std::to_string(p));
+    return p;
+  };
+
+  CycleCounts counts;
+  size_t next = 0;  // the triangle on the port
+  offer(next);
+  uint64_t last_progress = 0;
+  // Cycles without a handshake, a retirement or a triangle's last group or row. A triangle walks
+  // at most 2^c rows (c = CoordIntBits), each in a bounded number of cycles, well under 2^22;
+  // its stalls wait for pops, which are handshakes. A walk stage that never ends its triangle, or
+  // a sink pattern that never lets spans out, trips this.
+  const uint64_t watchdog = uint64_t(1) << 22;
+  uint64_t c = 0;
+  for (;; ++c) {
+    top->span_ready_i = sink.ready(c);
+    top->eval();
+    // Stop once every triangle went in and the unit is empty (cycle c is not part of the run).
+    if (next == n && top->tri_ready_o && !top->walk_busy_o && !top->span_valid_o) break;
+
+    // Trace window: from the cycle the first triangle is on the port to the cycle after the last
+    // one is done.
+    if (tracing && !trace_open && !trace_over && next >= win_a && win_a < n) {
+      fst->open(fst_path.c_str());
+      trace_open = true;
+    }
+
+    bool progress = false;
+    const bool accept = top->tri_valid_i && top->tri_ready_o;
+    if (accept) {
+      out.cycles[next].accept_cycle = c;
+      progress = true;
+    }
+    size_t retired = 0;
+    if (unit.early_retire(*top, retired)) {
+      const size_t p = known(retired, "early retirement");
+      out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;
+      walked[p] = done[p] = 1;
+      ++counts.early_retirements;
+      progress = true;
+    }
+    if (top->walk_stall_o) {
+      ++out.cycles[known(top->walk_tag_o, "walk stall")].stall_cycles;
+      ++counts.walk_stalls;
+    }
+    if (top->walk_last_o) {
+      const size_t p = known(top->walk_tag_o, "last walk step");
+      walked[p] = 1;
+      if (top->walk_retire_o) {
+        out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;
+        done[p] = 1;
+      }
+      progress = true;
+    }
+    if (top->span_valid_o && top->span_ready_i) {
+      const size_t p = known(top->span_tag_o, "span");
+      TriangleCycles& tc = out.cycles[p];
+      if (tc.spans == 0) tc.first_span_cycle = c;
+      tc.done_cycle = c;
+      ++tc.spans;
+      const Span s{tris[p].index, int32_t(top->span_y_o), int32_t(top->span_x_begin_o),
+                   int32_t(top->span_x_end_o)};
+      tc.pixels += uint64_t(s.pixels());
+      out.spans.push_back(s);
+      progress = true;
+    }
+    if (progress) last_progress = c;
+    if (c - last_progress > watchdog)
+      throw std::runtime_error(who + ": no progress for " + std::to_string(watchdog) +
+                               " cycles at cycle " + std::to_string(c) +
+                               " (does --sink-stall ever let spans out?)");
+
+    // Rising edge c.
+    if (trace_open) fst->dump(2 * c);
+    top->clk_i = 1;
+    top->eval();
+    if (trace_open) fst->dump(2 * c + 1);
+    top->clk_i = 0;
+    if (accept) offer(++next);
+
+    // The window's last triangle is done when it went through the walk stage (or retired) and
+    // its spans left the FIFO (in order: the head is a later triangle's, or the FIFO is empty).
+    if (trace_open && win_b < n && walked[win_b]) {
+      top->eval();
+      const bool drained = !top->span_valid_o || top->span_tag_o > win_b;
+      if (done[win_b] || drained) {
+        fst->dump(2 * c + 2);
+        fst->close();
+        trace_open = false;
+        trace_over = true;
+      }
+    }
+  }
+  if (trace_open) {
+    fst->dump(2 * c);
+    fst->close();
+  }
+  if (tracing && !trace_over && !trace_open && win_a >= n) {
+    fst->open(fst_path.c_str());  // an empty window: a trace with the signals and no cycles
+    fst->close();
+  }
+  top->final();
+  if (tracing) finish_trace(fst_path, cfg.trace_path, engine);
+
+  uint64_t total = 0, spans = 0, pixels = 0;
+  for (const TriangleCycles& tc : out.cycles) {
+    total = std::max(total, tc.done_cycle + 1);
+    spans += tc.spans;
+    pixels += tc.pixels;
+  }
+  out.total_cycles = n ? total : 0;
+  out.work["triangles"] += n;
+  out.work["spans"] += spans;
+  out.work["pixels"] += pixels;
+  out.work["walk_stall_cycles"] += counts.walk_stalls;
+  out.work["total_cycles"] = out.total_cycles;
+  out.work["rtl_x_seed"] = x_seed;
+  return counts;
+}
+
+}  // namespace rtl
+}  // namespace trirast
