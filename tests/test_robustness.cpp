@@ -358,6 +358,12 @@ TEST(BadInput, BadOptionsOfRasterAndCompare) {
       {"raster" + scene + " --width 10 --width 20", "--width"},
       {"raster" + scene + " --boundary sideways", "--boundary"},
       {"raster" + scene + " --sink-stall bogus", "--sink-stall"},
+      {"raster" + scene + " --engine model --sink-stall random:7:0.3",
+       "--sink-stall: 'random:7:0.3': PERCENT (the stall probability in percent, 0..99) '0.3' is "
+       "not a whole number"},
+      {"raster" + scene + " --engine model --sink-stall random:7:100", "stall percent must be 0..99"},
+      {"raster" + scene + " --engine model --sink-stall periodic:0:3", "must be ready sometimes"},
+      {"raster" + scene + " --engine model --sink-stall periodic:2:+1", "STALL '+1'"},
       {"raster" + scene + " --trace-tris 5:2", "--trace-tris"},
       {"raster" + scene + " --distance -1", "--distance"},
       {"raster" + scene + " --fov 180", "--fov"},

@@ -16,12 +16,14 @@ uint64_t sink_mix(uint64_t seed, uint64_t cycle) {
 }
 
 namespace {
-uint64_t parse_u64(const std::string& s, const std::string& whole) {
+// `what` names the field in the error, e.g. "PERCENT (0..99)".
+uint64_t parse_u64(const std::string& s, const std::string& whole, const char* what) {
   errno = 0;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno != 0 || s[0] == '-')
-    throw std::invalid_argument("--sink-stall: '" + whole + "': '" + s + "' is not a number");
+  if (s.empty() || *end != '\0' || errno != 0 || s[0] == '-' || s[0] == '+' || s[0] == ' ')
+    throw std::invalid_argument("--sink-stall: '" + whole + "': " + what + " '" + s +
+                                "' is not a whole number");
   return v;
 }
 }  // namespace
@@ -38,16 +40,16 @@ SinkPattern SinkPattern::parse(const std::string& text) {
   if (parts.size() == 1 && (parts[0] == "none" || parts[0].empty())) return p;
   if (parts.size() == 3 && parts[0] == "periodic") {
     p.kind_ = Kind::Periodic;
-    p.ready_ = parse_u64(parts[1], text);
-    p.stall_ = parse_u64(parts[2], text);
+    p.ready_ = parse_u64(parts[1], text, "READY");
+    p.stall_ = parse_u64(parts[2], text, "STALL");
     if (p.ready_ == 0)
       throw std::invalid_argument("--sink-stall: '" + text + "': the sink must be ready sometimes");
     return p;
   }
   if (parts.size() == 3 && parts[0] == "random") {
     p.kind_ = Kind::Random;
-    p.seed_ = parse_u64(parts[1], text);
-    p.percent_ = parse_u64(parts[2], text);
+    p.seed_ = parse_u64(parts[1], text, "SEED");
+    p.percent_ = parse_u64(parts[2], text, "PERCENT (the stall probability in percent, 0..99)");
     if (p.percent_ > 99)
       throw std::invalid_argument("--sink-stall: '" + text + "': stall percent must be 0..99");
     return p;

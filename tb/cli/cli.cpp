@@ -60,7 +60,7 @@ std::vector<OptionSpec> scene_options() {
       {"--divider", "MODE", "unit: divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
       {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
-      {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:R:S | random:SEED:P", "none"},
+      {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
   };
 }
 
