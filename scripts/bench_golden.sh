@@ -239,8 +239,9 @@ else:
       "(about 5% of a one-thread run if every span is copied, above; how many are depends on "
       "where in the triangle order a scene's spans lie). With the engine at "
       f"{min(shares.values()):.2f} to {max(shares.values()):.2f} of the ceiling, a row reaches 1.8x "
-      "when the machine gives the same work about 1.9x, as the rows above show; which rows do "
-      "changes from run to run on this host.")
+      "when the machine gives the same work about 1.8x divided by that share ("
+      + ", ".join(f"`{x}` on `{sc}` {1.8 / shares[(sc, x)]:.2f}x" for (sc, x) in speedups)
+      + "). Which rows get that changes from run to run on this host (the ranges in brackets).")
 w("- **The 2-thread engine, what changed and why.** The first engine (chunks from one shared "
   "counter, a list per chunk, joined by `resize` and a parallel copy) measured 0.74..1.03x: it "
   "summed every triangle's box before starting (a cache and TLB miss per triangle), zero-filled "
