@@ -192,5 +192,44 @@ TEST(Cli, CompareExitStatusBothWays) {
   EXPECT_TRUE(test::file_exists(dir.file("d.png")));
 }
 
+// compare's table: the timed engines' total cycles in the cycles column (the model's and the
+// RTL's the same number, the one raster --report gives), "-" for untimed ones; the work column
+// holds the engine's own counters, not the per-module ones, which --report keeps.
+TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
+  TempDir dir;
+  ASSERT_EQ(run_command(kBin + " raster --scene builtin:fan --engine model --report " +
+                        dir.file("m.json")).status, 0);
+  const std::string report = slurp(dir.file("m.json"));
+  const size_t at = report.find("\"total_cycles\":");
+  ASSERT_NE(at, std::string::npos) << report;
+  const long long cycles = std::stoll(report.substr(at + 15));
+  ASSERT_GT(cycles, 0);
+  CommandResult r = run_command(kBin + " compare --scene builtin:fan --engines golden,unit,model,rtl");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  auto row = [&](const std::string& engine) {
+    const size_t b = r.out.find("\n  " + engine + " ");
+    EXPECT_NE(b, std::string::npos) << r.out;
+    if (b == std::string::npos) return std::vector<std::string>{};
+    std::istringstream line(r.out.substr(b + 1, r.out.find('\n', b + 1) - b - 1));
+    std::vector<std::string> cells;
+    for (std::string c; line >> c;) cells.push_back(c);
+    return cells;
+  };
+  // engine exact spans pixels missing extra seconds cycles work...
+  for (const std::string engine : {"model", "rtl"}) {
+    const auto cells = row(engine);
+    ASSERT_GE(cells.size(), 8u) << engine;
+    EXPECT_EQ(cells[7], std::to_string(cycles)) << engine << "\n" << r.out;
+  }
+  for (const std::string engine : {"golden", "unit"}) {
+    const auto cells = row(engine);
+    ASSERT_GE(cells.size(), 8u) << engine;
+    EXPECT_EQ(cells[7], "-") << engine << "\n" << r.out;
+  }
+  EXPECT_EQ(r.out.find("busy_cycles."), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("divider_iterations="), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("--report FILE.json"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace trirast

@@ -422,8 +422,9 @@ int cmd_compare(int argc, char** argv) {
   std::printf("trirast compare: scene %s, viewport %dx%d, S=%d, %llu triangles (%llu accepted)\n",
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
               (unsigned long long)ls.setup.counts.read, (unsigned long long)ls.setup.counts.accepted);
-  std::printf("  %-14s %6s %10s %12s %10s %10s %9s  %s\n", "engine", "exact", "spans", "pixels",
-              "missing", "extra", "seconds", "work");
+  std::printf("  %-14s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
+              "pixels", "missing", "extra", "seconds", "cycles", "work");
+  bool any_module_counters = false;
   bool all_exact_agree = true;
   std::string diff_engine;  // the engine shown in --diff-image
   bool diff_agrees = true;
@@ -441,13 +442,27 @@ int cmd_compare(int argc, char** argv) {
     const SpanDiff diff = diff_spans(golden.result.spans, run.result.spans);
     const bool agrees = diff.exact();
     if (info->exact && !agrees) all_exact_agree = false;
+    // The work column: the engine's own counters. Those already in a column (spans, pixels,
+    // triangles, total cycles), the per-module busy/stall cycles ("module.name") and the
+    // simulator's speed stay in --report, or the line would run to a screen and more.
     std::string work;
-    for (const auto& kv : run.result.work)
-      work += (work.empty() ? "" : " ") + kv.first + "=" + std::to_string(kv.second);
-    std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f  %s%s\n", info->name.c_str(),
+    for (const auto& kv : run.result.work) {
+      const std::string& k = kv.first;
+      if (k.find('.') != std::string::npos) {
+        any_module_counters = true;
+        continue;
+      }
+      if (k == "spans" || k == "pixels" || k == "triangles" || k == "total_cycles" ||
+          k.rfind("sim_", 0) == 0)
+        continue;
+      work += (work.empty() ? "" : " ") + k + "=" + std::to_string(kv.second);
+    }
+    const bool timed = run.result.total_cycles > 0 || run.result.work.count("total_cycles") > 0;
+    const std::string cycles = timed ? std::to_string(run.result.total_cycles) : "-";
+    std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
-                (long long)diff.extra_pixels, run.seconds, work.c_str(),
+                (long long)diff.extra_pixels, run.seconds, cycles.c_str(), work.c_str(),
                 info->exact && !agrees ? "  <-- DISAGREES WITH GOLDEN" : "");
     rows.push(Json::object()
                   .set("engine", info->name)
@@ -467,6 +482,10 @@ int cmd_compare(int argc, char** argv) {
       diff_for_image = diff;
     }
   }
+  if (any_module_counters)
+    std::printf("  (cycles: total of the timed engines; per-module busy and stall cycles and the "
+                "simulation speed: %s)\n",
+                a.has("--report") ? ("in " + a.get("--report")).c_str() : "--report FILE.json");
   if (a.has("--diff-image")) {
     write_png(diff_image(golden.result.spans, diff_for_image, cfg.width, cfg.height),
               a.get("--diff-image"), "--diff-image");
