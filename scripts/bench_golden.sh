@@ -5,6 +5,9 @@
 # All ratios come from one run of one program (the machine is shared and noisy).
 # Usage: scripts/bench_golden.sh [extra Google Benchmark flags, e.g. --benchmark_min_time=0.1]
 #        scripts/bench_golden.sh --report-only   (re-render the document from the last run's data)
+#        scripts/bench_golden.sh --quick         (a few iterations of everything, with the program
+#            already built, into $build/golden-performance.quick.md: checks that the program and
+#            the rendering work; the suite runs it; its numbers mean nothing)
 # TRIRAST_BUILD_DIR selects the build directory (default build/), e.g.
 #   TRIRAST_BUILD_DIR=build-golden scripts/bench_golden.sh
 # Takes about 3 minutes; the thread benchmarks alone take about 80 s of it.
@@ -13,17 +16,33 @@ cd "$(dirname "$0")/.."
 build="${TRIRAST_BUILD_DIR:-build}"
 json="$build/bench_golden.json"
 loads="$build/bench_golden.loads"
-if [ "${1:-}" = --report-only ]; then
-  shift
+doc=docs/golden-performance.md
+bin="$build/bench_golden"
+case "$bin" in /*) ;; *) bin="./$bin" ;; esac
+mode=full
+case "${1:-}" in
+  --report-only) mode=report; shift ;;
+  --quick) mode=quick; shift
+    json="$build/bench_golden.quick.json"
+    loads="$build/bench_golden.quick.loads"
+    doc="$build/golden-performance.quick.md" ;;
+esac
+if [ "$mode" = report ]; then
   if [ ! -s "$json" ] || [ ! -s "$loads" ]; then
     echo "bench_golden.sh: --report-only: no data from an earlier run in $build/ (run without it first)" >&2
     exit 2
   fi
 else
-  cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build "$build" -j2 --target bench_golden >/dev/null
+  if [ "$mode" = full ]; then
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$build" -j2 --target bench_golden >/dev/null
+  elif [ ! -x "$bin" ]; then
+    echo "bench_golden.sh: --quick: $build/bench_golden is not built" >&2
+    exit 2
+  fi
   load_before=$(cut -d' ' -f1-3 /proc/loadavg)
-  "./$build/bench_golden" --benchmark_out="$json" --benchmark_out_format=json \
+  TRIRAST_BENCH_QUICK=$([ "$mode" = quick ] && echo 1 || echo 0) \
+    "$bin" --benchmark_out="$json" --benchmark_out_format=json \
     --benchmark_enable_random_interleaving=true "$@" >/dev/null
   load_after=$(cut -d' ' -f1-3 /proc/loadavg)
   printf '%s\n%s\n%s\n' "$load_before" "$load_after" "$*" >"$loads"
@@ -31,7 +50,9 @@ fi
 load_before=$(sed -n 1p "$loads")
 load_after=$(sed -n 2p "$loads")
 set -- $(sed -n 3p "$loads")
-python3 - "$json" "scripts/bench_golden.sh $*" "$load_before" "$load_after" >docs/golden-performance.md.tmp <<'PY'
+trap 'rm -f "$doc.tmp"' EXIT
+label="scripts/bench_golden.sh$([ "$mode" = quick ] && echo ' --quick') $*"
+python3 - "$json" "$label" "$load_before" "$load_after" >"$doc.tmp" <<'PY'
 import json, statistics, sys
 data = json.load(open(sys.argv[1]))
 command = sys.argv[2].strip()
@@ -258,5 +279,5 @@ w("- **The 2-thread engine, what changed and why.** The first engine (chunks fro
   "a few percent of a 2-thread run.")
 print("\n".join(out))
 PY
-mv docs/golden-performance.md.tmp docs/golden-performance.md
-echo "wrote docs/golden-performance.md"
+mv "$doc.tmp" "$doc"
+echo "wrote $doc"

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <map>
 #include <mutex>
@@ -353,8 +354,15 @@ void bench_setup(benchmark::State& state, std::string name) {
 
 // Each thread benchmark runs this many batches of iterations (each batch at least kThreadSeconds
 // of measured time); scripts/bench_golden.sh reports the median batch and the range.
-constexpr int kThreadBatches = 3;
-constexpr double kThreadSeconds = 3.0;
+// TRIRAST_BENCH_QUICK=1 (scripts/bench_golden.sh --quick, run by the suite) cuts every time to a
+// few iterations: it checks that the program and the document's rendering work, nothing more.
+const bool kQuick = [] {
+  const char* q = std::getenv("TRIRAST_BENCH_QUICK");
+  return q != nullptr && std::string(q) == "1";
+}();
+const int kThreadBatches = kQuick ? 1 : 3;
+const double kThreadSeconds = kQuick ? 0.02 : 3.0;
+const double kTraversalSeconds = kQuick ? 0.005 : 0.3;
 
 // The ceiling's amount of arithmetic: about 16 ms on one thread here, the order of the thread
 // benchmarks' one-thread times.
@@ -371,7 +379,7 @@ const bool registered = [] {
           (std::string("traversal/") + sc + "/" + traversal_name(all[k])).c_str(),
           bench_traversal, std::string(sc), all[k])
           ->Unit(benchmark::kMillisecond)
-          ->MinTime(0.3);
+          ->MinTime(kTraversalSeconds);
   for (const char* sc : {"highpoly-near", "random100k"})
     for (Traversal tr : {Traversal::Auto, Traversal::Incremental, Traversal::Simple})
       benchmark::RegisterBenchmark(
@@ -391,16 +399,18 @@ const bool registered = [] {
       ->MinTime(kThreadSeconds)
       ->Repetitions(kThreadBatches)
       ->UseManualTime();
-  benchmark::RegisterBenchmark("threads/wake", bench_wake)->Unit(benchmark::kMicrosecond);
+  benchmark::RegisterBenchmark("threads/wake", bench_wake)
+      ->Unit(benchmark::kMicrosecond)
+      ->MinTime(kTraversalSeconds);
   for (const char* sc : {"highpoly-near", "random100k"})
     benchmark::RegisterBenchmark((std::string("copy/") + sc).c_str(), bench_copy, std::string(sc))
         ->Unit(benchmark::kMillisecond)
-        ->MinTime(0.3);
+        ->MinTime(kTraversalSeconds);
   for (const char* sc : {"tri10", "highpoly-near", "random100k"})
     benchmark::RegisterBenchmark((std::string("setup/") + sc).c_str(), bench_setup,
                                  std::string(sc))
         ->Unit(benchmark::kMillisecond)
-        ->MinTime(0.3);
+        ->MinTime(kTraversalSeconds);
   return true;
 }();
 
