@@ -51,7 +51,9 @@ load_before=$(sed -n 1p "$loads")
 load_after=$(sed -n 2p "$loads")
 set -- $(sed -n 3p "$loads")
 trap 'rm -f "$doc.tmp"' EXIT
-label="scripts/bench_golden.sh$([ "$mode" = quick ] && echo ' --quick') $*"
+label="scripts/bench_golden.sh"
+if [ "$mode" = quick ]; then label="$label --quick"; fi
+label="$label $*"
 python3 - "$json" "$label" "$load_before" "$load_after" >"$doc.tmp" <<'PY'
 import json, statistics, sys
 data = json.load(open(sys.argv[1]))
@@ -263,6 +265,16 @@ else:
       "when the machine gives the same work about 1.8x divided by that share ("
       + ", ".join(f"`{x}` on `{sc}` {1.8 / shares[(sc, x)]:.2f}x" for (sc, x) in speedups)
       + "). Which rows get that changes from run to run on this host (the ranges in brackets).")
+w("- **Relation to seed 001, chapter 4.** The thesis (001) splits the work two ways: by content, "
+  "parts of the triangle meshes handed to the threads through queues, each thread drawing into "
+  "buffers of its own that are merged at the end (4.1.3), and by area, thread i taking every "
+  "row z with z = i mod n (4.2). It keeps the first and drops the second as much slower: every "
+  "thread has to walk every triangle to find its rows, and a triangle's incremental set-up is "
+  "paid once per thread. The golden's threads split by content as well (chunks of consecutive "
+  "triangles taken from two ranges), for the same reason; its output is a span list in triangle "
+  "order rather than a frame buffer, so the merge becomes the writer appending the helper's "
+  "chunk lists in order, which it does while the helper still works. As in 4.3.1 and 4.1.3.1, "
+  "what can be kept between runs is kept: the chunk lists and the helper thread.")
 w("- **The 2-thread engine, what changed and why.** The first engine (chunks from one shared "
   "counter, a list per chunk, joined by `resize` and a parallel copy) measured 0.74..1.03x: it "
   "summed every triangle's box before starting (a cache and TLB miss per triangle), zero-filled "
