@@ -21,17 +21,15 @@
 // grows by push_back and by appending whole chunks.
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <exception>
 #include <functional>
 #include <memory>
-#include <mutex>
-#include <system_error>
 #include <thread>
 #include <vector>
 
 #include "golden/golden.hpp"
+#include "golden/helper_pool.hpp"
 
 namespace trirast {
 
@@ -137,87 +135,6 @@ struct alignas(64) ChunkSpans {
   std::atomic<bool> ready{false};
 };
 
-// The helper threads of one engine: started by its first parallel run, asleep between runs, and
-// joined when the engine is destroyed. Starting a thread per run and joining it cost the writer
-// about 75 us and 70 us here (clone and exit on a virtual machine), 5% of a 3 ms run on 100,000
-// triangles; waking a sleeping helper costs the writer only the notify, and at the end of a run
-// the writer waits only for helpers to leave the job, not for threads to exit.
-class HelperPool {
- public:
-  using Job = std::function<void(size_t)>;  // called with the helper's id, 1..count
-
-  HelperPool() = default;
-  HelperPool(const HelperPool&) = delete;
-  HelperPool& operator=(const HelperPool&) = delete;
-  ~HelperPool() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      quit_ = true;
-    }
-    wake_.notify_all();
-    for (std::thread& t : threads_) t.join();
-  }
-
-  // Starts helpers until there are `count` (fewer if the system gives no more threads); returns
-  // how many there are.
-  size_t reserve(size_t count) {
-    while (threads_.size() < count) {
-      try {
-        const size_t id = threads_.size() + 1;
-        threads_.emplace_back([this, id] { serve(id); });
-      } catch (const std::system_error&) {
-        break;  // the writer takes whatever the helpers there are leave
-      }
-    }
-    return threads_.size();
-  }
-
-  // Runs job(id) on helpers 1..count (count <= reserve()'s answer) and returns at once; finish()
-  // must be called before `job` or anything it refers to goes away.
-  void start(const Job& job, size_t count) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      job_ = &job;
-      active_ = count;
-      finished_.store(0, std::memory_order_relaxed);
-      ++generation_;
-    }
-    wake_.notify_all();
-  }
-
-  // Waits until every helper of the job has returned from it.
-  void finish() {
-    while (finished_.load(std::memory_order_acquire) < active_) std::this_thread::yield();
-  }
-
- private:
-  void serve(size_t id) {
-    uint64_t seen = 0;
-    for (;;) {
-      const Job* job = nullptr;
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return quit_ || generation_ != seen; });
-        if (quit_) return;
-        seen = generation_;
-        if (id > active_) continue;  // not needed for this job
-        job = job_;
-      }
-      (*job)(id);
-      finished_.fetch_add(1, std::memory_order_release);
-    }
-  }
-
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::vector<std::thread> threads_;
-  const Job* job_ = nullptr;
-  size_t active_ = 0;
-  uint64_t generation_ = 0;
-  bool quit_ = false;
-  std::atomic<size_t> finished_{0};
-};
-
 class GoldenEngine : public Engine {
  public:
   GoldenEngine(Traversal traversal, int threads) : traversal_(traversal), threads_(threads) {
@@ -248,6 +165,15 @@ class GoldenEngine : public Engine {
       for (size_t k = first(c), end = first(c + 1); k < end; ++k)
         golden_triangle(tris[k], cfg, traversal_, spans);
     };
+    // A chunk into its own list, marked ready for the writer to append (release: the writer
+    // reads the list after seeing the flag).
+    auto rasterize_to_list = [&](size_t c) {
+      ChunkSpans& mine = chunk_[c];
+      mine.spans.clear();
+      mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
+      rasterize(c, mine.spans);
+      mine.ready.store(true, std::memory_order_release);
+    };
     if (chunk_capacity_ < chunks) {
       chunk_ = std::make_unique<ChunkSpans[]>(chunks);
       chunk_capacity_ = chunks;
@@ -273,11 +199,7 @@ class GoldenEngine : public Engine {
         while (!stop.load(std::memory_order_relaxed) &&
                (back_.take(c) || front_.take(c))) {
           busy = true;
-          ChunkSpans& mine = chunk_[c];
-          mine.spans.clear();
-          mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
-          rasterize(c, mine.spans);
-          mine.ready.store(true, std::memory_order_release);
+          rasterize_to_list(c);
           busy = false;
         }
       } catch (...) {
@@ -317,11 +239,7 @@ class GoldenEngine : public Engine {
             rasterize(c, out);  // the next chunk in order: straight into the output
             ++next;
           } else {
-            ChunkSpans& mine = chunk_[c];  // a later one, appended when its turn comes
-            mine.spans.clear();
-            mine.spans.reserve(max_spans(tris, first(c), first(c + 1)));
-            rasterize(c, mine.spans);
-            mine.ready.store(true, std::memory_order_relaxed);
+            rasterize_to_list(c);  // a later one, appended when its turn comes
           }
         } else {
           std::this_thread::yield();  // the next chunk is a helper's, still being rasterized
