@@ -7,22 +7,21 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <cstdint>
 #include <cstdlib>
 #include <functional>
 #include <map>
-#include <mutex>
 #include <random>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
+#include "golden/helper_pool.hpp"
 #include "scene/scene.hpp"
 
 namespace trirast {
@@ -136,54 +135,46 @@ double median_of(std::vector<double> v) {
   return v.size() % 2 ? v[m] : (v[m - 1] + v[m]) / 2;
 }
 
-// A second thread for the ceilings, started once and asleep between runs, as the engine's helper
-// is: run(mine, theirs) wakes it to do `theirs` while the caller does `mine`, and returns when
-// both are done. So the ceiling pays what the engine pays to start its helper (a wake-up), not a
-// thread's creation.
+// A second thread for the ceilings: the engine's own HelperPool (golden/helper_pool.hpp), asleep
+// between runs, so that the ceiling pays what the engine pays to start its helper (a wake-up),
+// not a thread's creation. run(mine, theirs) has the helper do `theirs` while the caller does
+// `mine`, and returns when both are done.
 class Partner {
  public:
-  Partner() : thread_([this] { serve(); }) {}
-  ~Partner() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      quit_ = true;
-    }
-    wake_.notify_one();
-    thread_.join();
+  Partner() {
+    if (pool_.reserve(1) != 1) throw std::runtime_error("bench_golden: no second thread");
   }
   void run(const std::function<void()>& mine, const std::function<void()>& theirs) {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      job_ = &theirs;
-      done_.store(false, std::memory_order_relaxed);
-    }
-    wake_.notify_one();
+    const HelperPool::Job job = [&](size_t) { theirs(); };
+    pool_.start(job, 1);
     mine();
-    while (!done_.load(std::memory_order_acquire)) std::this_thread::yield();
+    pool_.finish();
   }
 
  private:
-  void serve() {
-    for (;;) {
-      const std::function<void()>* job = nullptr;
-      {
-        std::unique_lock<std::mutex> lock(mutex_);
-        wake_.wait(lock, [&] { return quit_ || job_ != nullptr; });
-        if (quit_) return;
-        job = job_;
-        job_ = nullptr;
-      }
-      (*job)();
-      done_.store(true, std::memory_order_release);
-    }
-  }
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  const std::function<void()>* job_ = nullptr;
-  bool quit_ = false;
-  std::atomic<bool> done_{true};
-  std::thread thread_;
+  HelperPool pool_;
 };
+
+// Runs works[0..n) once per iteration, one after the other, the order rotating by one from an
+// iteration to the next; returns each work's times (seconds), one per iteration. The iteration's
+// time is the sum.
+std::vector<std::vector<double>> rotating_times(benchmark::State& state,
+                                                const std::vector<std::function<void()>>& works) {
+  const size_t n = works.size();
+  std::vector<std::vector<double>> t(n);
+  size_t rotation = 0;
+  for (auto _ : state) {
+    double total = 0;
+    for (size_t k = 0; k < n; ++k) {
+      const size_t w = (rotation + k) % n;
+      t[w].push_back(seconds_of(works[w]));
+      total += t[w].back();
+    }
+    rotation = (rotation + 1) % n;
+    state.SetIterationTime(total);
+  }
+  return t;
+}
 
 void bench_threads(benchmark::State& state, std::string name, Traversal traversal) {
   const BenchScene& s = scene(name);
@@ -210,29 +201,19 @@ void bench_threads(benchmark::State& state, std::string name, Traversal traversa
     benchmark::DoNotOptimize(own[id].spans.data());
   };
   Partner partner;
-  const std::function<void()> work[4] = {
-      [&] { run(*engine1); },
-      [&] { run(*engine2); },
-      [&] {
-        pass(0);
-        pass(1);
-      },
-      [&] { partner.run([&] { pass(0); }, [&] { pass(1); }); }};
-  std::vector<double> t[4], speedup, ceiling, share;
-  size_t rotation = 0;
-  for (auto _ : state) {
-    double secs[4] = {0, 0, 0, 0}, total = 0;
-    for (size_t k = 0; k < 4; ++k) {
-      const size_t w = (rotation + k) % 4;
-      secs[w] = seconds_of(work[w]);
-      total += secs[w];
-    }
-    rotation = (rotation + 1) % 4;
-    for (size_t w = 0; w < 4; ++w) t[w].push_back(secs[w]);
-    speedup.push_back(secs[0] / secs[1]);
-    ceiling.push_back(secs[2] / secs[3]);
+  const std::vector<std::vector<double>> t = rotating_times(
+      state, {[&] { run(*engine1); },
+              [&] { run(*engine2); },
+              [&] {
+                pass(0);
+                pass(1);
+              },
+              [&] { partner.run([&] { pass(0); }, [&] { pass(1); }); }});
+  std::vector<double> speedup, ceiling, share;
+  for (size_t i = 0; i < t[0].size(); ++i) {
+    speedup.push_back(t[0][i] / t[1][i]);
+    ceiling.push_back(t[2][i] / t[3][i]);
     share.push_back(speedup.back() / ceiling.back());
-    state.SetIterationTime(total);
   }
   state.counters["one_ms"] = median_of(t[0]) * 1e3;
   state.counters["two_ms"] = median_of(t[1]) * 1e3;
@@ -264,25 +245,11 @@ void paired_halves(benchmark::State& state, const std::function<void()>& first,
     second();
   };
   const std::function<void()> two = [&] { partner.run(first, second); };
-  std::vector<double> t1, t2, ratio;
-  bool two_first = false;
-  for (auto _ : state) {
-    double a = 0, b = 0;
-    if (two_first) {
-      b = seconds_of(two);
-      a = seconds_of(one);
-    } else {
-      a = seconds_of(one);
-      b = seconds_of(two);
-    }
-    two_first = !two_first;
-    t1.push_back(a);
-    t2.push_back(b);
-    ratio.push_back(a / b);
-    state.SetIterationTime(a + b);
-  }
-  state.counters["one_ms"] = median_of(t1) * 1e3;
-  state.counters["two_ms"] = median_of(t2) * 1e3;
+  const std::vector<std::vector<double>> t = rotating_times(state, {one, two});
+  std::vector<double> ratio;
+  for (size_t i = 0; i < t[0].size(); ++i) ratio.push_back(t[0][i] / t[1][i]);
+  state.counters["one_ms"] = median_of(t[0]) * 1e3;
+  state.counters["two_ms"] = median_of(t[1]) * 1e3;
   state.counters["speedup"] = median_of(ratio);
   state.counters["iterations"] = double(ratio.size());
 }
