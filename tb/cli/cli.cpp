@@ -202,12 +202,21 @@ EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const Raster
 
 bool starts_with(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
 
+// Work counters the text output of raster and compare leaves to --report: the per-module busy
+// and stall cycles ("busy_cycles.setup", ...), and the total cycles and simulator speed, which
+// have a line (raster) or a column (compare) of their own.
+bool module_counter(const std::string& key) {
+  return starts_with(key, "busy_cycles.") || starts_with(key, "stall_cycles.");
+}
+bool timing_counter(const std::string& key) {
+  return key == "total_cycles" || starts_with(key, "sim_");
+}
+
 // Datapath work counters (the per-module busy/stall cycles are reported apart).
 Json work_json(const EngineResult& r) {
   Json w = Json::object();
   for (const auto& kv : r.work)
-    if (!starts_with(kv.first, "busy_cycles.") && !starts_with(kv.first, "stall_cycles."))
-      w.set(kv.first, kv.second);
+    if (!module_counter(kv.first)) w.set(kv.first, kv.second);
   return w;
 }
 
@@ -332,8 +341,7 @@ int cmd_raster(int argc, char** argv) {
                 (unsigned long long)ls.scene.range_dropped);
   std::printf("\n  coverage   %zu spans, %lld pixels\n", run.result.spans.size(), (long long)pixels);
   for (const auto& kv : run.result.work)
-    if (!starts_with(kv.first, "busy_cycles.") && !starts_with(kv.first, "stall_cycles.") &&
-        kv.first != "total_cycles" && !starts_with(kv.first, "sim_"))
+    if (!module_counter(kv.first) && !timing_counter(kv.first))
       std::printf("  work       %-28s %llu\n", kv.first.c_str(), (unsigned long long)kv.second);
   if (!run.result.cycles.empty()) {
     const double c = double(std::max<uint64_t>(run.result.total_cycles, 1));
@@ -442,18 +450,14 @@ int cmd_compare(int argc, char** argv) {
     const SpanDiff diff = diff_spans(golden.result.spans, run.result.spans);
     const bool agrees = diff.exact();
     if (info->exact && !agrees) all_exact_agree = false;
-    // The work column: the engine's own counters. Those already in a column (spans, pixels,
-    // triangles, total cycles), the per-module busy/stall cycles ("module.name") and the
-    // simulator's speed stay in --report, or the line would run to a screen and more.
+    // The work column: the engine's own counters, not those already in a column (spans,
+    // pixels, triangles) nor those left to --report, or the line would run to a screen and more.
     std::string work;
     for (const auto& kv : run.result.work) {
       const std::string& k = kv.first;
-      if (k.find('.') != std::string::npos) {
-        any_module_counters = true;
-        continue;
-      }
-      if (k == "spans" || k == "pixels" || k == "triangles" || k == "total_cycles" ||
-          k.rfind("sim_", 0) == 0)
+      any_module_counters = any_module_counters || module_counter(k);
+      if (module_counter(k) || timing_counter(k) || k == "spans" || k == "pixels" ||
+          k == "triangles")
         continue;
       work += (work.empty() ? "" : " ") + k + "=" + std::to_string(kv.second);
     }
