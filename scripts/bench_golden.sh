@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Measures the golden traversals (tb/bench_golden.cpp) and writes docs/golden-performance.md:
+# Measures the golden traversals (tools/bench_golden.cpp) and writes docs/golden-performance.md:
 # seed 000's Table 1 shape (speed-up of each traversal over `simple` per scene type, the paper's
 # figures beside ours), triangles and pixels per second, thread scaling, and the issue's targets.
 # All ratios come from one run of one program (the machine is shared and noisy).
@@ -80,7 +80,7 @@ ctx = data["context"]
 out = []
 w = out.append
 w("# Golden traversal performance\n")
-w("Made by `" + command + "` (tb/bench_golden.cpp, Google Benchmark) on " + ctx.get("date", "?") +
+w("Made by `" + command + "` (tools/bench_golden.cpp, Google Benchmark) on " + ctx.get("date", "?") +
   f", {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, a shared and noisy machine: "
   "compare ratios within this one run, not absolute times across runs. Viewport 1024x768, S = 8, "
   "no culling. Times cover the traversal of already set-up triangles (setup is common to every "

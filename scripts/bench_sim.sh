@@ -23,12 +23,12 @@ fi
 cmake --build "$build" -j2 --target trirast_sc_bench >/dev/null
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 if [ "$doc" = 0 ]; then
-  exec "$build/model/sc/trirast_sc_bench" ${args[@]+"${args[@]}"}
+  exec "$build/trirast_sc_bench" ${args[@]+"${args[@]}"}
 fi
 
 md="$(mktemp)"
 trap 'rm -f "$md"' EXIT
-"$build/model/sc/trirast_sc_bench" ${args[@]+"${args[@]}"} --md "$md"
+"$build/trirast_sc_bench" ${args[@]+"${args[@]}"} --md "$md"
 cmd="scripts/bench_sim.sh --doc${args[*]:+ ${args[*]}}"
 section="$(mktemp)"
 trap 'rm -f "$md" "$section"' EXIT

@@ -14,7 +14,7 @@ if [ "${TRIRAST_NO_BUILD:-0}" != 1 ]; then
   fi
   cmake --build "$build" -j2 --target trirast_sc_cycles_table >/dev/null
 fi
-table="$(SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$build/model/sc/trirast_sc_cycles_table" "$root")"
+table="$(SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$build/trirast_sc_cycles_table" "$root")"
 tmp="$out.tmp"
 cat >"$tmp" <<DOC
 # Improved vs traditional Bresenham unit, in cycles

@@ -2,7 +2,7 @@
 """The one source of the RTL's shared parameters (docs/rtl.md, "Parameters").
 
 Writes the SystemVerilog package rtl/trirast_pkg.sv and the C++ header
-tb/rtl/trirast_rtl_params.hpp from the same numbers, so the RTL, the Verilator harness and the
+dv/verilator/trirast_rtl_params.hpp from the same numbers, so the RTL, the Verilator harness and the
 tests cannot disagree. The derived widths follow model/unit/unit_widths.cpp (docs/unit.md,
 "Widths"); tests/rtl checks that they equal unit_widths() of the built configuration.
 
@@ -16,7 +16,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SV_PATH = os.path.join(ROOT, "rtl", "trirast_pkg.sv")
-HPP_PATH = os.path.join(ROOT, "tb", "rtl", "trirast_rtl_params.hpp")
+HPP_PATH = os.path.join(ROOT, "dv", "verilator", "trirast_rtl_params.hpp")
 
 # The configuration the checked-in files (and the Verilated model) are built for.
 DEFAULTS = {
@@ -112,7 +112,7 @@ def main():
     ap.add_argument("--endpoints", type=int, default=DEFAULTS["endpoints"])
     ap.add_argument("--fifo-depth", type=int, default=DEFAULTS["fifo_depth"])
     ap.add_argument("--sv", help="package output (default: rtl/trirast_pkg.sv)")
-    ap.add_argument("--hpp", help="header output (default: tb/rtl/trirast_rtl_params.hpp)")
+    ap.add_argument("--hpp", help="header output (default: dv/verilator/trirast_rtl_params.hpp)")
     ap.add_argument("--check", action="store_true",
                     help="compare with the checked-in files instead of writing")
     a = ap.parse_args()

@@ -226,7 +226,7 @@ def main():
              "- **Cracks and double hits** on the closed meshes (marked *closed* below, culled "
              "back faces): a crack is an uncovered pixel whose centre lies inside or on a set-up "
              "triangle and not on the mesh's outline; a double hit is a pixel covered more than "
-             "once (tb/io/sweep.cpp, `count_closed`).\n"
+             "once (app/sweep/sweep.cpp, `count_closed`).\n"
              "- **Rejected** triangles: a vertex outside the coordinate range (`--coord-bits`) or "
              "a box wider or taller than 2^box_bits pixels; they are not drawn (their pixels count "
              "as missing).\n"
@@ -514,8 +514,8 @@ def main():
                     "---:", "---:", "---:", "---:"]))
     L.append("\n</details>\n")
     L.append("Regenerate: `scripts/sweep.sh` (full, into docs/), `scripts/sweep.sh --quick --out DIR` "
-             "(the test suite's run). Code: tb/io/sweep.cpp, tb/io/sweep_area.cpp, "
-             "tb/cli/cmd_sweep.cpp, scripts/plot_sweep.py.\n")
+             "(the test suite's run). Code: app/sweep/sweep.cpp, app/sweep/sweep_area.cpp, "
+             "app/cli/cmd_sweep.cpp, scripts/plot_sweep.py.\n")
     tmp = args.doc + ".tmp"
     with open(tmp, "w") as out:
         out.write("\n".join(L))

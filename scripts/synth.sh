@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Synthesis of the units' RTL (rtl/) and place and route for Fmax; writes docs/synth.md and
-# docs/synth.csv (unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz; tb/io/sweep_area.cpp reads it).
+# docs/synth.csv (unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz; app/sweep/sweep_area.cpp reads it).
 #   scripts/synth.sh [--jobs J] [WORKDIR]     (default build/synth, J = 2; 15-25 minutes on 2 cores)
 #   scripts/synth.sh --report-only [WORKDIR]  (rewrite the two documents from WORKDIR's logs of the
 #                                              last full run, without running the tools)
@@ -41,7 +41,7 @@ RTL_MODULES="trirast_adder_divider trirast_edge_lane trirast_edge_normalizer tri
   trirast_edge_walker trirast_span_generator trirast_span_fifo trirast_setup_stage
   trirast_walk_stage trirast_top"
 
-# name:subpixel_bits:coord_int_bits:box_bits (tb/io/sweep_area.cpp reads this line)
+# name:subpixel_bits:coord_int_bits:box_bits (app/sweep/sweep_area.cpp reads this line)
 CONFIGS="default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:8:6"
 # The configuration whose whole improved unit is placed and routed: the only one of CONFIGS that
 # fits the HX8K (S=2, coord 10, box 8 needed 9258 of the 7680 logic cells when this was chosen).

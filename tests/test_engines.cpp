@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/span_diff.hpp"
 #include "scene/scene.hpp"
 

@@ -14,11 +14,12 @@
 #include <sstream>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "io/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "scene/scene.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 #include "support/run_command.hpp"
 
 namespace trirast {

@@ -7,9 +7,9 @@
 #include "core/setup.hpp"
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 #include "scene/scene.hpp"
-#include "support/watertight.hpp"
+#include "reference/watertight.hpp"
 
 namespace trirast {
 namespace {

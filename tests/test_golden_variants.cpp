@@ -12,7 +12,7 @@
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 
 namespace trirast {
 namespace {

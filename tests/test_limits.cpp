@@ -10,11 +10,12 @@
 #include <string>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "io/fuzz_scene.hpp"
-#include "support/reference_raster.hpp"
+#include "fuzz/fuzz_scene.hpp"
+#include "reference/reference_raster.hpp"
 #include "support/run_command.hpp"
 #include "unit/improved_unit.hpp"
 

@@ -15,10 +15,11 @@
 #include <sstream>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
-#include "support/watertight.hpp"
+#include "reference/watertight.hpp"
 
 namespace trirast {
 namespace {

@@ -18,8 +18,8 @@
 #include "scene/camera.hpp"
 #include "scene/mesh_builders.hpp"
 #include "scene/scene.hpp"
-#include "support/reference_raster.hpp"
-#include "support/watertight.hpp"
+#include "reference/reference_raster.hpp"
+#include "reference/watertight.hpp"
 
 namespace trirast {
 namespace {

@@ -8,8 +8,9 @@
 #include <sstream>
 
 #include "core/engine.hpp"
-#include "io/sweep.hpp"
-#include "io/sweep_area.hpp"
+#include "engines.hpp"
+#include "sweep/sweep.hpp"
+#include "sweep/sweep_area.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 

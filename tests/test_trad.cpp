@@ -13,7 +13,7 @@
 #include "core/setup.hpp"
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 #include "unit/trad_bresenham.hpp"
 
 namespace trirast {

@@ -1,5 +1,5 @@
 // The one face every engine shows: set-up triangles and a configuration in, spans and work
-// statistics out. A new engine is one factory function and one line in engine_registry.cpp.
+// statistics out. A new engine is one factory function and one line in app/engines.cpp.
 #pragma once
 #include <cstdint>
 #include <functional>
@@ -46,10 +46,5 @@ struct EngineInfo {
   bool exact;               // claims pixel-exact agreement with the golden rule
   std::function<std::unique_ptr<Engine>()> make;
 };
-
-// All engines compiled into this build, in the order --help lists them.
-const std::vector<EngineInfo>& engine_registry();
-// Looks an engine up by name; nullptr when unknown.
-const EngineInfo* find_engine(const std::string& name);
 
 }  // namespace trirast

@@ -1,5 +1,5 @@
 // A pool of helper threads that sleep between jobs (the multi-threaded golden's helpers, and the
-// second thread of its benchmark's ceilings, tb/bench_golden.cpp).
+// second thread of its benchmark's ceilings, tools/bench_golden.cpp).
 #pragma once
 
 #include <atomic>

@@ -138,7 +138,7 @@ class TradSpanFiller {
 // "spans", "pixels", "trad_collinear" (triangles dropped by stage 1).
 void add_trad_work(const TradTriangleResult& r, std::map<std::string, uint64_t>& work);
 
-// The traditional rasterizer as an engine (register as "trad" in engine_registry.cpp; not exact).
+// The traditional rasterizer as an engine (register as "trad" in app/engines.cpp; not exact).
 std::unique_ptr<Engine> make_trad_engine();
 
 }  // namespace trirast

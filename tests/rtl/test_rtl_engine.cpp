@@ -16,10 +16,10 @@
 #include "core/setup.hpp"
 #include "core/sink_pattern.hpp"
 #include "golden/golden.hpp"
-#include "rtl_engine.hpp"
+#include "verilator/rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "support/reference_raster.hpp"
-#include "trirast_rtl_params.hpp"
+#include "reference/reference_raster.hpp"
+#include "verilator/trirast_rtl_params.hpp"
 #include "unit/improved_unit.hpp"
 #include "unit/unit_widths.hpp"
 

@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "core/setup.hpp"
-#include "rtl_trad_engine.hpp"
+#include "engines.hpp"
+#include "verilator/rtl_trad_engine.hpp"
 #include "scene/scene.hpp"
 #include "sc/sc_engine.hpp"
 #include "unit/trad_bresenham.hpp"

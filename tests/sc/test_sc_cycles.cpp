@@ -8,9 +8,9 @@
 
 #include "core/setup.hpp"
 #include "core/sink_pattern.hpp"
-#include "sc/cycle_reference.hpp"
+#include "reference/cycle_reference.hpp"
 #include "sc/sc_engine.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 #include "unit/improved_unit.hpp"
 #include "unit/trad_timing.hpp"
 

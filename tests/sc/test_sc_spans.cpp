@@ -10,7 +10,7 @@
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 #include "unit/trad_bresenham.hpp"
 #include "unit/unit_widths.hpp"
 

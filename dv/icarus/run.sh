@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs the Icarus testbench tb/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
-#   tb/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR
+# Runs the Icarus testbench dv/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
+#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR
 # For each scene, trirast_rtl_vectors writes the set-up triangles and the Verilated model's spans
 # and cycles; Icarus runs the RTL at its default parameters (NumEndpoints = 1, FifoDepth = 8)
 # and must agree span for span and cycle for cycle. Exit status 0 only if every scene passes.
@@ -12,7 +12,7 @@ mkdir -p "$WORK"
 SOURCES="$ROOT/rtl/trirast_pkg.sv $ROOT/rtl/trirast_adder_divider.sv $ROOT/rtl/trirast_edge_lane.sv
   $ROOT/rtl/trirast_edge_normalizer.sv $ROOT/rtl/trirast_interface.sv $ROOT/rtl/trirast_edge_walker.sv
   $ROOT/rtl/trirast_span_generator.sv $ROOT/rtl/trirast_span_fifo.sv $ROOT/rtl/trirast_setup_stage.sv
-  $ROOT/rtl/trirast_walk_stage.sv $ROOT/rtl/trirast_top.sv $ROOT/tb/icarus/tb_trirast.sv"
+  $ROOT/rtl/trirast_walk_stage.sv $ROOT/rtl/trirast_top.sv $ROOT/dv/icarus/tb_trirast.sv"
 # Icarus prints "sorry: constant selects in always_* processes" for loops over arrays in
 # always_comb (a sensitivity-list simplification, harmless); keep the rest.
 iverilog -g2012 -o "$WORK/tb_trirast.vvp" $SOURCES 2> >(grep -v "constant selects" >&2)

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/setup.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"

@@ -10,6 +10,7 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"

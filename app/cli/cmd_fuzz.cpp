@@ -14,7 +14,8 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "core/engine.hpp"
-#include "io/fuzz_scene.hpp"
+#include "engines.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "io/output_file.hpp"
 
 namespace trirast {

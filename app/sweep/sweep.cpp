@@ -1,4 +1,4 @@
-#include "io/sweep.hpp"
+#include "sweep/sweep.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
 

@@ -1,4 +1,4 @@
-// Writes the vectors of the Icarus testbench (tb/icarus/tb_trirast.sv): the set-up triangles of a
+// Writes the vectors of the Icarus testbench (dv/icarus/tb_trirast.sv): the set-up triangles of a
 // scene, and the spans with their pop cycles and the accept cycles that the Verilated model
 // produces for them at the default hardware (N = 1, DEPTH = 8) with a periodic sink.
 //   trirast_rtl_vectors SCENE OUTDIR READY STALL
@@ -10,9 +10,9 @@
 #include <string>
 
 #include "core/setup.hpp"
-#include "rtl_engine.hpp"
+#include "verilator/rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "trirast_rtl_params.hpp"
+#include "verilator/trirast_rtl_params.hpp"
 
 using namespace trirast;
 

@@ -2,11 +2,11 @@
 // hard-cases.md, a checker that runs engines against the golden, and the .tri reproducer format.
 //
 // One generator serves two masters through FuzzDraws: `trirast fuzz` draws from a seeded PRNG,
-// the libFuzzer target (tb/fuzz/) draws from the fuzzer's bytes, so both explore the same classes
+// the libFuzzer target (dv/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same classes
 // and a byte string the fuzzer mutates maps to a small, local change of the scene.
 //
 // Depends only on model/core and model/golden, so the libFuzzer build (clang, separate build
-// directory) can compile it without the rest of tb/.
+// directory) can compile it without the rest of dv/ and app/.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -108,7 +108,7 @@ struct FuzzDisagreement {
 // Runs the golden and every engine in `engines` (golden entries skipped) on the scene and returns
 // the engines that differ from the golden pixel for pixel, throw, or emit spans outside the
 // viewport. An engine built for fewer configurations (the rtl: one set of widths) says so by
-// throwing std::invalid_argument before it runs (tb/rtl/rtl_engine.hpp); it is then listed in
+// throwing std::invalid_argument before it runs (dv/verilator/rtl_engine.hpp); it is then listed in
 // `skipped`, not counted as a disagreement. A SetupError propagates (the scene is bad, not an
 // engine).
 std::vector<FuzzDisagreement> check_engines(const std::vector<InputTriangle>& tris,

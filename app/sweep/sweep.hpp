@@ -1,7 +1,7 @@
 // Speed against error (issue 6, docs/speed-vs-error.md): engines x configurations x scenes.
 // Every point is measured against one reference per scene: the golden at S = 8 with the default
 // coordinate width, on the same float input. This file holds the measurement of one point on
-// one scene and the aggregation over scenes; tb/cli/cmd_sweep.cpp runs them (in parallel) and
+// one scene and the aggregation over scenes; app/cli/cmd_sweep.cpp runs them (in parallel) and
 // writes the outputs.
 #pragma once
 #include <cstdint>
@@ -12,7 +12,7 @@
 #include "core/setup.hpp"
 #include "core/span.hpp"
 #include "io/json.hpp"
-#include "io/sweep_area.hpp"
+#include "sweep/sweep_area.hpp"
 #include "scene/scene.hpp"
 
 namespace trirast {

@@ -4,10 +4,10 @@
 
 namespace trirast {
 
-// trirast fuzz: tb/cli/cmd_fuzz.cpp
+// trirast fuzz: app/cli/cmd_fuzz.cpp
 int cmd_fuzz(int argc, char** argv);
 
-// trirast sweep and trirast fit: tb/cli/cmd_sweep.cpp
+// trirast sweep and trirast fit: app/cli/cmd_sweep.cpp
 int cmd_sweep(int argc, char** argv);
 int cmd_fit(int argc, char** argv);
 

@@ -22,10 +22,11 @@
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
 #include "core/engine.hpp"
+#include "engines.hpp"
 #include "io/json.hpp"
 #include "io/output_file.hpp"
-#include "io/sweep.hpp"
-#include "io/sweep_area.hpp"
+#include "sweep/sweep.hpp"
+#include "sweep/sweep_area.hpp"
 
 namespace trirast {
 

@@ -1,4 +1,4 @@
-#include "io/sweep_area.hpp"
+#include "sweep/sweep_area.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -211,7 +211,7 @@ Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
 
 std::string AreaModel::formula_text() const {
   std::ostringstream s;
-  s << "Estimate (tb/io/sweep_area.cpp): flip-flops = the bits of every register of the stages; "
+  s << "Estimate (app/sweep/sweep_area.cpp): flip-flops = the bits of every register of the stages; "
        "LUTs = one per adder, comparator and 2:1 multiplexer bit; from the widths of docs/unit.md "
        "(p = coord + F, edge values 2p + 2, steps and remainders p + F, box bits, quotient Q or the "
        "truncated K, walker Q + 2), the walker adders and span generator counted N times for N "

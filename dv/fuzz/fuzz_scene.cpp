@@ -1,4 +1,4 @@
-#include "io/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 
 #include <algorithm>
 #include <cmath>

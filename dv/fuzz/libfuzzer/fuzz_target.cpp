@@ -20,10 +20,10 @@
 #include "core/engine.hpp"
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
-#include "io/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "unit/improved_unit.hpp"
 #ifdef TRIRAST_FUZZ_HAS_RTL
-#include "rtl_engine.hpp"
+#include "verilator/rtl_engine.hpp"
 #endif
 
 namespace trirast {

@@ -1,4 +1,4 @@
-#include "support/watertight.hpp"
+#include "reference/watertight.hpp"
 
 #include <algorithm>
 #include <map>

@@ -1,4 +1,4 @@
-#include "support/reference_raster.hpp"
+#include "reference/reference_raster.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Icarus Verilog testbench (iverilog -g2012): runs trirast_top at its default parameters
-// (NumEndpoints = 1, FifoDepth = 8) on vectors from trirast_rtl_vectors (tb/icarus/run.sh) and
+// (NumEndpoints = 1, FifoDepth = 8) on vectors from trirast_rtl_vectors (dv/icarus/run.sh) and
 // checks every span (in pop order), every accept cycle and every triangle's first_span_cycle and
 // done_cycle against the Verilated model's, with a periodic sink (+ready=R +stall=S).
 `timescale 1ns / 1ps
