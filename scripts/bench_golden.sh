@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Measures the golden traversals (tools/bench_golden.cpp) and writes docs/golden-performance.md:
-# seed 000's Table 1 shape (speed-up of each traversal over `simple` per scene type, the paper's
-# figures beside ours), triangles and pixels per second, thread scaling, and the issue's targets.
+# the shape of Table 1 of Mileff, Nehez & Dudra (speed-up of each traversal over `simple` per scene
+# type, the paper's figures beside ours), triangles and pixels per second, thread scaling, and the
+# throughput targets.
 # All ratios come from one run of one program (the machine is shared and noisy).
 # Usage: scripts/bench_golden.sh [extra Google Benchmark flags, e.g. --benchmark_min_time=0.1]
 #        scripts/bench_golden.sh --report-only   (re-render the document from the last run's data)
@@ -86,8 +87,8 @@ w("Made by `" + command + "` (tools/bench_golden.cpp, Google Benchmark) on " + c
   "no culling. Times cover the traversal of already set-up triangles (setup is common to every "
   "engine and measured on its own below); every traversal produces identical spans "
   "(tests/test_golden_variants.cpp).\n")
-w("## Speed-up over `simple`, in the shape of seed 000's Table 1\n")
-w("The paper (000, Table 1) gives frames per second of a full pipeline (z-buffer, shading) on an "
+w("## Speed-up over `simple`, in the shape of Table 1 of Mileff, Nehéz & Dudra, \"Accelerated half-space triangle rasterization\"\n")
+w("The paper (Mileff, Nehéz & Dudra, Table 1) gives frames per second of a full pipeline (z-buffer, shading) on an "
   "i7-870; we give the traversal alone. Both are shown as speed-up over the simple rasterizer, "
   "paper first, ours second. The paper's last column is its adaptive model combined with the "
   "bisector; our `bisector` runs the bisector block walk on every triangle.\n")
@@ -108,7 +109,7 @@ for code, scene, label in cases:
     ratio_row(code, scene, label)
 for scene, label in [("sphere", "mesh"), ("torus", "mesh"), ("tri10", "10-pixel triangles"), ("large", "large triangles")]:
     ratio_row("-", scene, label)
-w("\nThe paper's Table 1 in frames per second (quoted from 000_5c8a4b93fc256fe1.txt):\n")
+w("\nThe paper's Table 1 in frames per second (quoted from Mileff, Nehéz & Dudra):\n")
 w("| Case | Simple | Incremental | Block-based | Adaptive | Adaptive and Bisector |")
 w("|---|---|---|---|---|---|")
 for code in ["C1", "C2", "C3", "C4", "C5"]:
@@ -265,7 +266,8 @@ else:
       "when the machine gives the same work about 1.8x divided by that share ("
       + ", ".join(f"`{x}` on `{sc}` {1.8 / shares[(sc, x)]:.2f}x" for (sc, x) in speedups)
       + "). Which rows get that changes from run to run on this host (the ranges in brackets).")
-w("- **Relation to seed 001, chapter 4.** The thesis (001) splits the work two ways: by content, "
+w("- **Relation to Ritz's thesis (\"Software renderer for the GR3 library\"), chapter 4.** The "
+  "thesis splits the work two ways: by content, "
   "parts of the triangle meshes handed to the threads through queues, each thread drawing into "
   "buffers of its own that are merged at the end (4.1.3), and by area, thread i taking every "
   "row z with z = i mod n (4.2). It keeps the first and drops the second as much slower: every "

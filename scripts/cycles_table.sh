@@ -1,6 +1,6 @@
 #!/bin/bash
-# Improved vs traditional Bresenham unit in cycles (issue 4, item 5): runs both SystemC models on
-# the five seed-000 scene analogues and on meshes and writes docs/cycles-improved-vs-trad.md,
+# Improved vs traditional Bresenham unit in cycles: runs both SystemC models on the five
+# benchmark scenes of Mileff, Nehez & Dudra and on meshes and writes docs/cycles-improved-vs-trad.md,
 # with the paper's "about 32% faster" beside the measured numbers.
 # Usage: scripts/cycles_table.sh [OUTPUT.md]     (default docs/cycles-improved-vs-trad.md)
 set -euo pipefail
@@ -22,8 +22,8 @@ cat >"$tmp" <<DOC
 Made by \`scripts/cycles_table.sh\` (SystemC models of both units, docs/timing.md; 1024x768, S = 8,
 default camera; N = 1, FIFO 8, sink always ready, boundary \`step\` unless the column says
 otherwise). "improved vs trad" is \`(trad - improved) / trad\`: positive when the improved unit
-needs fewer cycles. The paper (Zhang & Ruan, seed 003) reports the improved unit **about 32%
-faster** than the traditional one.
+needs fewer cycles. The paper (Zhang & Ruan, "A triangle rasterization based on improved
+Bresenham algorithm") reports the improved unit **about 32% faster** than the traditional one.
 
 $table
 

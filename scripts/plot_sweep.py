@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plots and report of a `trirast sweep` run (docs/speed-vs-error.md, issue 6).
+"""Plots and report of a `trirast sweep` run (docs/speed-vs-error.md).
 
     /usr/bin/python3 scripts/plot_sweep.py --data DIR --doc FILE.md --img DIR [--start EPOCH]
 
@@ -19,7 +19,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# Zhang & Ruan (seed 003): the improved unit about 32% faster; Table 1, FPGA resources.
+# Zhang & Ruan, "A triangle rasterization based on improved Bresenham algorithm": the improved
+# unit about 32% faster; Table 1, FPGA resources.
 PAPER_SPEEDUP_PCT = 32
 PAPER_TABLE1 = {"improved": (3120, 4653), "trad": (3728, 6936)}  # (registers, LUTs)
 
@@ -207,9 +208,10 @@ def main():
              "`sweep_configs.csv` (one row per configuration), `sweep.json`, `fit_*.json` in `"
              + os.path.relpath(args.data, os.path.dirname(os.path.abspath(args.doc))) + "`.\n")
     L.append("Every number below was produced by that command in that run, except the paper's "
-             "(Zhang & Ruan, seed 003), which are quoted and marked *paper*"
+             "(Zhang & Ruan, \"A triangle rasterization based on improved Bresenham algorithm\"), "
+             "which are quoted and marked *paper*"
              + ("; LUT and flip-flop counts marked *synth* were read from "
-                f"`{am['synth_csv']}` (scripts/synth.sh)" if am["have_synth"] else "")
+                f"`{am['synth_csv'].replace(ROOT + '/', '')}` (scripts/synth.sh)" if am["have_synth"] else "")
              + ". Cycles are exact (SystemC model, docs/timing.md); wall times are noisy (a shared "
              "machine) and shown only as ratios within this run.\n")
     if d.get("skipped_engines"):
@@ -424,7 +426,8 @@ def main():
     group_table("Narrow configurations and the synthesized ones", "",
                 lambda p: p["group"] in ("narrow", "synthesized"))
     group_table("Traditional unit and the float scanline (CPU baseline)",
-                "The float scanline of seed 002 runs on the CPU: no cycles, no area; its wall time "
+                "The float scanline (after the devlog \"Software rasterization: a fast and exact "
+                "triangle rasterization algorithm in C\") runs on the CPU: no cycles, no area; its wall time "
                 "is a ratio to the golden's in this run.",
                 lambda p: p["engine"] in ("trad", "float-scanline", "golden"))
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed against error (issue 6): regenerates docs/speed-vs-error.md and its plots from nothing.
+# Speed against error: regenerates docs/speed-vs-error.md and its plots from nothing.
 #   scripts/sweep.sh [--quick] [--jobs N] [--out DIR] [--synth]
 # - builds build/trirast if needed (TRIRAST_BIN=PATH uses that binary and builds nothing);
 # - --synth first runs scripts/synth.sh (Yosys; minutes), so that docs/synth.csv is from this run;

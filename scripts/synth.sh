@@ -247,7 +247,7 @@ OUT="$ROOT/docs/synth.md"
   echo "shared with other work: load average $LOADAVG at the end) with"
   echo "$(yosys -V | cut -d' ' -f1-2), nextpnr-ice40 $(nextpnr-ice40 --version 2>&1 | grep -o '[0-9][^ ]*' | head -1) and the RTL at commit"
   echo "\`$RTL_COMMIT\`. Every number below is from this run;"
-  echo "machine-readable copy: [synth.csv](synth.csv). Logs: \`$WORK\` (not checked in)."
+  echo "machine-readable copy: [synth.csv](synth.csv). Logs: \`${WORK#"$ROOT"/}\` (not checked in)."
   echo
   echo "Units: \`trirast_top\` (improved)$([[ " $UNITS " == *" trad "* ]] && echo " and \`trirast_trad_top\` (traditional, \`trad\`)"), NumEndpoints = 1,"
   echo "FifoDepth = 8. The runtime configuration inputs (viewport, boundary and divider mode,"
@@ -270,8 +270,8 @@ OUT="$ROOT/docs/synth.md"
   echo
   echo "A dash: that synthesis failed (its log is in the work directory)."
   echo
-  echo "The paper's Table 1 (Zhang & Ruan, seed 003; FPGA resources of the whole unit) beside this"
-  echo "RTL's default configuration on Xilinx 7 (the paper's FPGA family is not stated more precisely):"
+  echo "The paper's Table 1 (Zhang & Ruan, \"A triangle rasterization based on improved Bresenham"
+  echo "algorithm\"; FPGA resources of the whole unit) beside this RTL's default configuration on Xilinx 7 (the paper's FPGA family is not stated more precisely):"
   echo
   echo "| design | registers | LUTs |"
   echo "|---|---:|---:|"
