@@ -1,6 +1,11 @@
-// The channel between a unit's setup stage and its walk stage: a set-up triangle waits in the
-// setup stage (StHold) until the walk stage is idle; the hand-off cycle h is the first cycle in
-// which both hold (docs/timing.md, "Hand-off"). One delta-notified event each way per triangle.
+// The channel between a unit's setup stage and its walk stage (docs/timing.md, "Hand-off"): a
+// set-up triangle waits in the setup stage (StHold) from cycle `hold` until the walk stage is
+// idle; the hand-off cycle h = max(hold, first idle cycle of the walk stage) is the first cycle in
+// which both hold, and the walk stage loads the triangle in h.
+//
+// The hand-off is a blocking transport: the walk stage is a target whose load() runs in the setup
+// stage's process, with the cycle passed as an argument, so a hand-off costs a function call
+// instead of two process switches and two events.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -8,50 +13,7 @@
 
 namespace trirast::sc {
 
-template <class Txn>
-class HandoffPutIf : public virtual sc_core::sc_interface {
- public:
-  // Setup side: returns in the hand-off cycle, the triangle loaded into the walk stage.
-  virtual void put(Txn* t) = 0;
-};
-
-template <class Txn>
-class HandoffGetIf : public virtual sc_core::sc_interface {
- public:
-  // Walk side: the walk stage is idle from now; returns in the hand-off cycle with the triangle.
-  virtual Txn* get() = 0;
-};
-
-template <class Txn>
-class Handoff : public sc_core::sc_module, public HandoffPutIf<Txn>, public HandoffGetIf<Txn> {
- public:
-  explicit Handoff(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
-
-  void put(Txn* t) override {
-    while (!walk_idle_) sc_core::wait(idle_ev_);
-    walk_idle_ = false;
-    slot_ = t;
-    loaded_ev_.notify(sc_core::SC_ZERO_TIME);
-  }
-  Txn* get() override {
-    walk_idle_ = true;
-    idle_ev_.notify(sc_core::SC_ZERO_TIME);
-    while (!slot_) sc_core::wait(loaded_ev_);
-    Txn* t = slot_;
-    slot_ = nullptr;
-    return t;
-  }
-
- private:
-  Txn* slot_ = nullptr;
-  bool walk_idle_ = false;
-  sc_core::sc_event idle_ev_, loaded_ev_;
-};
-
-// The improved unit's hand-off as a blocking transport (TLM-2.0 loosely-timed style): the walk
-// stage is a target whose load() runs in the caller's process, so a hand-off costs a function
-// call instead of two process switches. The cycles are the same as Handoff's: the triangle held
-// from cycle s is loaded in h = max(s, first idle cycle of the walk stage).
+// The walk stage's side: the target of the hand-off.
 template <class Txn>
 class WalkLoadIf : public virtual sc_core::sc_interface {
  public:
@@ -61,21 +23,21 @@ class WalkLoadIf : public virtual sc_core::sc_interface {
   virtual void load(Txn* t, uint64_t h) = 0;
 };
 
+// The setup stage's side.
 template <class Txn>
-class HandoffTransportIf : public virtual sc_core::sc_interface {
+class HandoffIf : public virtual sc_core::sc_interface {
  public:
-  // Setup side: the triangle waits in StHold from the run's cycle `hold`; returns the hand-off
-  // cycle h >= hold, the first cycle the walk stage is idle, in which it was loaded.
+  // The triangle waits in StHold from the run's cycle `hold`; returns the hand-off cycle
+  // h >= hold, the first cycle the walk stage is idle, in which it was loaded.
   virtual uint64_t put(Txn* t, uint64_t hold) = 0;
   // The first cycle from which the walk stage is idle (after the last put).
   virtual uint64_t walk_idle_from() = 0;
 };
 
 template <class Txn>
-class HandoffTransport : public sc_core::sc_module, public HandoffTransportIf<Txn> {
+class Handoff : public sc_core::sc_module, public HandoffIf<Txn> {
  public:
-  explicit HandoffTransport(sc_core::sc_module_name name)
-      : sc_core::sc_module(name), walk("walk") {}
+  explicit Handoff(sc_core::sc_module_name name) : sc_core::sc_module(name), walk("walk") {}
   sc_core::sc_port<WalkLoadIf<Txn>> walk;
 
   uint64_t put(Txn* t, uint64_t hold) override {

@@ -5,17 +5,16 @@
 //             -> span_sink
 //
 // Every module calls the bit-accurate datapath of model/unit/ (the arithmetic exists once) and
-// advances time by the cycles its hardware counterpart takes: the setup stage waits once per
-// triangle, the walk stage computes a triangle's rows at once and stamps each group of N rows with
-// its cycle (the FIFO knows, for any cycle, how full it is), then waits until it is idle again.
+// stamps its work with the cycles its hardware counterpart takes; the process, the hand-off, the
+// FIFO stalls and the trace frame are the pipeline both units share (stage_skeleton.hpp).
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <systemc>
 #include <vector>
 
-#include "sc/handoff.hpp"
-#include "sc/span_fifo.hpp"
+#include "sc/stage_skeleton.hpp"
 #include "unit/adder_divider.hpp"
 #include "unit/edge_normalizer.hpp"
 #include "unit/edge_walker.hpp"
@@ -79,40 +78,23 @@ class EdgeLane : public sc_core::sc_module {
   std::unique_ptr<AdderDivider> divider_;
 };
 
-// Trace handles of the improved unit.
-struct ImprovedTraceSignals {
-  int setup_tri = -1, setup_state = -1, setup_accept = -1, lane_busy[3] = {-1, -1, -1};
-  int walk_tri = -1, walk_state = -1, walk_stall = -1, walk_row = -1;
-  SpanTraceSignals span;
-};
+// The improved unit's own setup states, between StIdle and StHold (stage_skeleton.hpp).
+enum ImprovedSetupState : uint64_t { StBox = 1, StEdge = 2, StLanes = 3 };
 
-// Setup-stage states (the trace shows these numbers).
-enum SetupState : uint64_t { StIdle = 0, StBox = 1, StEdge = 2, StLanes = 3, StHold = 4 };
-enum WalkState : uint64_t { StWalkIdle = 0, StWalk = 1 };
-
-class SetupStage : public sc_core::sc_module {
+// The setup stage: a + 1 StBox (interface; an empty box retires), a + 2 StEdge (corner values,
+// normalizers), from a + 3 StLanes (L = max L_k cycles), from a + 3 + L StHold.
+class SetupStage : public SetupStageBase<EdgeSetupTxn> {
  public:
-  SC_HAS_PROCESS(SetupStage);
   explicit SetupStage(sc_core::sc_module_name name);
-
-  sc_core::sc_port<HandoffTransportIf<EdgeSetupTxn>> out;
-
-  // Prepares a run (datapath objects for cfg, counters cleared) and releases the process.
-  void begin_run(RunState* run, const ImprovedTraceSignals& sig);
-  StageCounters counters;
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
   InterfaceModule interface;
   std::unique_ptr<EdgeLane> lane[3];
 
  private:
-  void thread();
-  void process_run();
-
-  RunState* run_ = nullptr;
-  ImprovedTraceSignals sig_;
-  bool pending_ = false;
-  sc_core::sc_event start_ev_;
-  std::unique_ptr<EdgeSetupTxn> txn_[2];  // double-buffered: the walk stage holds the other
-  int cur_ = 0;
+  void configure(const RasterConfig& cfg) override;
+  void add_unit_trace(VcdRecorder& tr) override;
+  uint64_t set_up(const TriangleSetup& t, uint64_t a, EdgeSetupTxn& x) override;
+  int sig_lane_busy_[3] = {-1, -1, -1};
 };
 
 // The span_generator: counts the rows it combined.
@@ -122,47 +104,26 @@ class SpanGeneratorModule : public sc_core::sc_module {
   StageCounters counters;
 };
 
-// The walk stage: a target of the hand-off (WalkLoadIf). Loaded in cycle h, it computes the
-// triangle's rows at once, stamps each group of N rows with its cycle, and is idle from
-// t_last + 1; it needs no process of its own.
-class WalkStage : public sc_core::sc_module, public WalkLoadIf<EdgeSetupTxn> {
+// The walk stage: the three edge walkers present a group of up to N rows per cycle and the span
+// generator makes their spans; a group goes when the FIFO has room for N spans.
+class WalkStage : public WalkStageBase<EdgeSetupTxn> {
  public:
   explicit WalkStage(sc_core::sc_module_name name);
-
-  sc_core::sc_port<SpanPushIf> spans;
-
-  void begin_run(RunState* run, const ImprovedTraceSignals& sig);
   // Adds the run's datapath work (summed over its triangles) into the run's work map.
-  void end_run();
-  uint64_t idle_from() const override { return idle_from_; }
-  void load(EdgeSetupTxn* x, uint64_t h) override { idle_from_ = walk(*x, h) + 1; }
-  StageCounters counters;
+  void end_run() override;
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
   SpanGeneratorModule span_generator;
   uint64_t rows_stepped[3] = {0, 0, 0};
 
  private:
-  // Walks the triangle loaded in cycle h; returns the cycle of its last group.
-  uint64_t walk(EdgeSetupTxn& x, uint64_t h);
+  void configure(const RasterConfig& cfg) override;
+  uint64_t walk(EdgeSetupTxn& x, uint64_t h) override;
 
-  RunState* run_ = nullptr;
-  ImprovedTraceSignals sig_;
-  uint64_t idle_from_ = 0;  // the run's first cycle the stage is idle (StWalkIdle)
-  TriangleWork work_sum_;   // the walked triangles' work, summed field by field
-  bool any_work_ = false;   // a triangle was walked (add_work was due at least once)
+  TriangleWork work_sum_;  // the walked triangles' work, summed field by field
+  bool any_work_ = false;  // a triangle was walked (add_work was due at least once)
 };
 
-// The whole unit. Elaborated once per process; every run goes through the same modules.
-class ImprovedUnitSc : public sc_core::sc_module {
- public:
-  explicit ImprovedUnitSc(sc_core::sc_module_name name);
-  // Runs one scene from the current SystemC time; fills run.out (spans, cycles, work).
-  void run(RunState& run);
-
-  SpanSink sink;
-  SpanFifo fifo;
-  HandoffTransport<EdgeSetupTxn> handoff;
-  SetupStage setup;
-  WalkStage walk;
-};
+// The whole unit (elaborated once per process).
+using ImprovedUnitSc = UnitSc<SetupStage, WalkStage, EdgeSetupTxn>;
 
 }  // namespace trirast::sc

@@ -1,5 +1,6 @@
 // Simulated time of the SystemC model in clock cycles (docs/sc-model.md). One cycle is 1 ns of
-// SystemC time; nothing ticks: modules advance time with annotated waits of whole cycles.
+// SystemC time; nothing ticks: the setup stage's process stamps work with its cycle and lets SystemC
+// time catch up through its quantum keeper (stage_skeleton.hpp).
 #pragma once
 #include <cstdint>
 #include <systemc>
@@ -14,11 +15,5 @@ inline sc_core::sc_time cycles_time(uint64_t n) {
 }
 // The current SystemC time in whole cycles (absolute: runs follow each other in one process).
 inline uint64_t now_cycles() { return sc_core::sc_time_stamp().value() / kPsPerCycle; }
-
-// Waits until absolute cycle c (no wait when c is now; c must not lie in the past).
-inline void wait_until_cycle(uint64_t c) {
-  const uint64_t now = now_cycles();
-  if (c > now) sc_core::wait(cycles_time(c - now));
-}
 
 }  // namespace trirast::sc

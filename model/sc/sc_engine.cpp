@@ -19,6 +19,8 @@ bool quiet_systemc() {
   return true;
 }
 
+enum class Unit { Improved, Trad };
+
 // Both units, elaborated together on first use (SystemC elaborates once per process).
 struct World {
   bool quiet = quiet_systemc();
@@ -29,9 +31,11 @@ struct World {
     static World w;
     return w;
   }
+  UnitScIf& unit(Unit u) {
+    if (u == Unit::Improved) return improved;
+    return trad;
+  }
 };
-
-enum class Unit { Improved, Trad };
 
 // One run through the unit, from the current SystemC time. Returns the wall-clock seconds.
 double simulate(Unit unit, const SetupResult& setup, const RasterConfig& cfg, EngineResult& out,
@@ -46,10 +50,7 @@ double simulate(Unit unit, const SetupResult& setup, const RasterConfig& cfg, En
   r.trace = trace;
   out.cycles.assign(setup.tris.size(), TriangleCycles{0, 0, 0, 0, 0, 0, 0});
   const auto t0 = std::chrono::steady_clock::now();
-  if (unit == Unit::Improved)
-    w.improved.run(r);
-  else
-    w.trad.run(r);
+  w.unit(unit).run(r);
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (r.error) std::rethrow_exception(r.error);
   if (!r.finished) throw std::runtime_error("SystemC model: the run stopped before its end");
@@ -89,8 +90,6 @@ void write_trace(Unit unit, const SetupResult& setup, const RasterConfig& cfg,
   rec.write(cfg.trace_path, unit == Unit::Improved ? "improved" : "trad");
 }
 
-void add_counter(EngineResult& out, const std::string& key, uint64_t v) { out.work[key] += v; }
-
 class ScEngine : public Engine {
  public:
   explicit ScEngine(Unit unit) : unit_(unit) {}
@@ -99,37 +98,7 @@ class ScEngine : public Engine {
     cfg.validate();
     if (unit_ == Unit::Improved) ImprovedUnit check(cfg);  // the datapath's width limits
     const double secs = simulate(unit_, setup, cfg, out, nullptr);
-    World& w = World::get();
-    if (unit_ == Unit::Improved) {
-      const ImprovedUnitSc& u = w.improved;
-      add_counter(out, "busy_cycles.setup", u.setup.counters.busy);
-      add_counter(out, "stall_cycles.setup", u.setup.counters.stall);
-      add_counter(out, "busy_cycles.interface", u.setup.interface.counters.busy);
-      for (int k = 0; k < 3; ++k) {
-        const std::string l = "edge_lane" + std::to_string(k);
-        add_counter(out, "busy_cycles." + l, u.setup.lane[k]->counters.busy);
-        add_counter(out, "busy_cycles.adder_divider" + std::to_string(k),
-                    u.setup.lane[k]->divider_busy);
-        add_counter(out, "busy_cycles.edge_walker" + std::to_string(k), u.walk.rows_stepped[k]);
-      }
-      add_counter(out, "busy_cycles.walk", u.walk.counters.busy);
-      add_counter(out, "stall_cycles.walk", u.walk.counters.stall);
-      add_counter(out, "busy_cycles.span_generator", u.walk.span_generator.counters.busy);
-      add_counter(out, "busy_cycles.span_fifo", u.fifo.valid_cycles());
-      add_counter(out, "busy_cycles.span_sink", u.sink.counters().busy);
-      add_counter(out, "stall_cycles.span_sink", u.sink.counters().stall);
-    } else {
-      const TradUnitSc& u = w.trad;
-      add_counter(out, "busy_cycles.setup", u.setup.counters.busy);
-      add_counter(out, "stall_cycles.setup", u.setup.counters.stall);
-      add_counter(out, "busy_cycles.walk", u.walk.counters.busy);
-      add_counter(out, "stall_cycles.walk", u.walk.counters.stall);
-      add_counter(out, "busy_cycles.long_walker", u.walk.steps_long);
-      add_counter(out, "busy_cycles.short_walker", u.walk.steps_short);
-      add_counter(out, "busy_cycles.span_fifo", u.fifo.valid_cycles());
-      add_counter(out, "busy_cycles.span_sink", u.sink.counters().busy);
-      add_counter(out, "stall_cycles.span_sink", u.sink.counters().stall);
-    }
+    World::get().unit(unit_).add_counters(out.work);
     out.work["triangles"] += setup.tris.size();
     out.work["total_cycles"] = out.total_cycles;
     out.work["sim_wall_microseconds"] = uint64_t(secs * 1e6);

@@ -41,8 +41,7 @@ struct RunState {
   std::exception_ptr error;      // first exception thrown inside a process
   bool finished = false;         // the setup stage offered every triangle
 
-  uint64_t now() const { return now_cycles() - base; }               // the run's current cycle
-  void wait_until(uint64_t c) const { wait_until_cycle(base + c); }  // c: the run's cycle
+  uint64_t now() const { return now_cycles() - base; }  // the run's current cycle
   TriangleCycles& tri(size_t pos) { return out->cycles[pos]; }
 };
 

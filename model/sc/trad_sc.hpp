@@ -4,80 +4,56 @@
 //             (long-edge and short-side Bresenham walkers, span filler) -> span_fifo -> span_sink
 //
 // The datapath is model/unit/trad_bresenham (spans) and model/unit/trad_timing (steps per row);
-// the FIFO, the sink and the hand-off are the improved unit's.
+// the process, the hand-off, the FIFO, the sink and the trace frame are the pipeline both units
+// share (stage_skeleton.hpp).
 #pragma once
+#include <map>
 #include <memory>
+#include <string>
 #include <systemc>
 
-#include "sc/handoff.hpp"
-#include "sc/span_fifo.hpp"
+#include "sc/stage_skeleton.hpp"
 #include "unit/trad_bresenham.hpp"
 
 namespace trirast::sc {
 
 // A set-up triangle of the traditional unit: its sorted integer vertices.
 struct TradSetupTxn {
-  size_t pos = 0;
+  size_t pos = 0;  // position in SetupResult::tris
   TradVertices verts{};
 };
 
-struct TradTraceSignals {
-  int setup_tri = -1, setup_state = -1, setup_accept = -1;
-  int walk_tri = -1, walk_state = -1, walk_stall = -1, walk_row = -1;
-  SpanTraceSignals span;
-};
+// The traditional unit's own setup states, between StIdle and StHold (stage_skeleton.hpp).
+enum TradSetupState : uint64_t { StSort = 1, StLine = 2 };
 
-enum TradSetupState : uint64_t { StTradIdle = 0, StSort = 1, StLine = 2, StTradHold = 4 };
-
-class TradSetupStage : public sc_core::sc_module {
+// The setup stage: a + 1 StSort (quantize and sort; collinear vertices retire), a + 2 StLine
+// (the three lines' set-up), from a + 3 StHold.
+class TradSetupStage : public SetupStageBase<TradSetupTxn> {
  public:
-  SC_HAS_PROCESS(TradSetupStage);
-  explicit TradSetupStage(sc_core::sc_module_name name);
-  sc_core::sc_port<HandoffPutIf<TradSetupTxn>> out;
-  void begin_run(RunState* run, const TradTraceSignals& sig);
-  StageCounters counters;
+  explicit TradSetupStage(sc_core::sc_module_name name) : SetupStageBase<TradSetupTxn>(name) {}
 
  private:
-  void thread();
-  void process_run();
-  RunState* run_ = nullptr;
-  TradTraceSignals sig_;
-  bool pending_ = false;
-  sc_core::sc_event start_ev_;
+  void configure(const RasterConfig& cfg) override;
+  uint64_t set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) override;
   std::unique_ptr<TradVertexQuantizer> quantizer_;
-  TradSetupTxn txn_[2];
-  int cur_ = 0;
 };
 
-class TradWalkStage : public sc_core::sc_module {
+// The walk stage: rows p0.y .. p2.y; row y costs max(1, long-edge steps, short-side steps) cycles
+// and starts only when the FIFO has room for one span at the start of its first cycle.
+class TradWalkStage : public WalkStageBase<TradSetupTxn> {
  public:
-  SC_HAS_PROCESS(TradWalkStage);
-  explicit TradWalkStage(sc_core::sc_module_name name);
-  sc_core::sc_port<HandoffGetIf<TradSetupTxn>> in;
-  sc_core::sc_port<SpanPushIf> spans;
-  void begin_run(RunState* run, const TradTraceSignals& sig);
-  StageCounters counters;
+  explicit TradWalkStage(sc_core::sc_module_name name) : WalkStageBase<TradSetupTxn>(name, 17) {}
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
   uint64_t steps_long = 0, steps_short = 0;  // Bresenham steps of the two walkers
 
  private:
-  void thread();
-  uint64_t walk(TradSetupTxn& x, uint64_t h);
-  RunState* run_ = nullptr;
-  TradTraceSignals sig_;
+  void configure(const RasterConfig& cfg) override;
+  uint64_t walk(TradSetupTxn& x, uint64_t h) override;
   std::unique_ptr<TradSpanFiller> filler_;
   SpanList row_spans_;
 };
 
-class TradUnitSc : public sc_core::sc_module {
- public:
-  explicit TradUnitSc(sc_core::sc_module_name name);
-  void run(RunState& run);
-
-  SpanSink sink;
-  SpanFifo fifo;
-  Handoff<TradSetupTxn> handoff;
-  TradSetupStage setup;
-  TradWalkStage walk;
-};
+// The whole unit (elaborated once per process).
+using TradUnitSc = UnitSc<TradSetupStage, TradWalkStage, TradSetupTxn>;
 
 }  // namespace trirast::sc
