@@ -37,10 +37,6 @@ START=$(date +%s)
 CMDLINE="scripts/synth.sh${1:+ $1}"
 [ "$JOBS" != 2 ] && CMDLINE="scripts/synth.sh --jobs $JOBS${1:+ $1}"
 
-RTL_MODULES="trirast_adder_divider trirast_edge_lane trirast_edge_normalizer trirast_interface
-  trirast_edge_walker trirast_span_generator trirast_span_fifo trirast_setup_stage
-  trirast_walk_stage trirast_top"
-
 # name:subpixel_bits:coord_int_bits:box_bits (tb/io/sweep_area.cpp reads this line)
 CONFIGS="default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:8:6"
 # The configuration whose whole improved unit is placed and routed: the only one of CONFIGS that
@@ -53,13 +49,11 @@ if [ -f "$ROOT/rtl/trirast_trad_top.sv" ]; then UNITS="improved trad"; fi
 
 top_of() { if [ "$1" = trad ]; then echo trirast_trad_top; else echo trirast_top; fi; }
 
-sources() {  # sources UNIT CONFIG: the generated package, the improved modules, the trad modules
-  local s="$WORK/$2/trirast_pkg.sv" f
-  for m in $RTL_MODULES; do s="$s $ROOT/rtl/$m.sv"; done
-  if [ "$1" = trad ]; then
-    for f in "$ROOT"/rtl/trirast_trad_*.sv; do s="$s $f"; done
-  fi
-  echo "$s"
+filelist() {  # filelist UNIT: the unit's sources, rtl/trirast_UNIT.f (one path a line, relative to rtl/)
+  sed 's#//.*##' "$ROOT/rtl/trirast_$1.f" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}'
+}
+sources() {  # sources UNIT CONFIG: the unit's file list with CONFIG's generated package
+  filelist "$1" | sed "s#^$ROOT/rtl/trirast_pkg.sv\$#$WORK/$2/trirast_pkg.sv#" | tr '\n' ' '
 }
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
@@ -85,7 +79,7 @@ yosys_stat() {  # yosys_stat UNIT CONFIG TARGET
   if [ "$target" = ice40 ]; then synth="synth_ice40 -top $top"
   else synth="synth_xilinx -family xc7 -top $top"; fi
   rm -f "$WORK/$cfg/$unit.$target.stat"
-  yosys -q -l "$WORK/$cfg/$unit.$target.log" -p "read_verilog -sv $(sources "$unit" "$cfg");
+  yosys -q -l "$WORK/$cfg/$unit.$target.log" -p "read_verilog -sv -I $ROOT/rtl $(sources "$unit" "$cfg");
     $synth; tee -o $WORK/$cfg/$unit.$target.stat stat" >/dev/null
 }
 
@@ -96,7 +90,7 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
   rm -f "$d/nextpnr.log" "$d/design.json"
   # -nobram: the span FIFO stays in flip-flops and LUTs, as in the area table (a FIFO read is
   # combinational in the unit, so block RAM would change its timing).
-  yosys -q -l "$d/yosys.log" -p "read_verilog -sv $(sources "$unit" "$cfg") $extra;
+  yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl $(sources "$unit" "$cfg") $extra;
     $pre synth_ice40 -nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
   nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" --pcf-allow-unconstrained \
     --freq "$PNR_FREQ" --seed 1 --timing-allow-fail --log "$d/nextpnr.log" >/dev/null 2>&1
@@ -104,7 +98,7 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
 
 gen_trad_wrapper() {  # gen_trad_wrapper CONFIG: the traditional unit's wrapper, from its ports
   local cfg="$1"
-  yosys -q -p "read_verilog -sv $(sources trad "$cfg"); hierarchy -top trirast_trad_top; proc;
+  yosys -q -p "read_verilog -sv -I $ROOT/rtl $(sources trad "$cfg"); hierarchy -top trirast_trad_top; proc;
     write_json $WORK/$cfg/trad_ports.json" >/dev/null 2>&1
   python3 "$ROOT/scripts/synth_wrap.py" --json "$WORK/$cfg/trad_ports.json" \
     --top trirast_trad_top --name trirast_synth_trad --out "$WORK/$cfg/trirast_synth_trad.sv" \
