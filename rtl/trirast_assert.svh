@@ -11,8 +11,7 @@
 // SYNTHESIS) does not parse concurrent assertions in read_verilog -sv, and neither does Icarus 11
 // (it defines __ICARUS__; "sorry: concurrent_assertion_item not supported"), so for those tools
 // the macros expand to nothing. Every argument must be given (no defaults: the empty forms take
-// four arguments too). Write no braces ({a, b}) in an argument: not every preprocessor protects
-// their commas.
+// four arguments too); a concatenation ({a, b}) is one argument in all three tools.
 `ifndef TRIRAST_ASSERT_SVH
 `define TRIRAST_ASSERT_SVH
 

@@ -181,7 +181,7 @@ module trirast_setup_stage (
     lanes_load       = state_q == StEdge;
     hand_valid_o     = state_q == StHold;
     state_d          = state_q;
-    case (state_q)
+    unique case (state_q)
       StIdle: begin
         if (accept) state_d = StBox;
       end

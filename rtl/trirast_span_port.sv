@@ -7,9 +7,9 @@
 `include "trirast_assert.svh"
 
 module trirast_span_port #(
-  parameter int NumEndpoints = 1,                        // push ports (rows per group)
-  parameter int FifoDepth = 8,                           // entries (a power of two)
-  parameter int CountBits = $clog2(FifoDepth + 1),       // derived: do not override
+  parameter int NumEndpoints = trirast_pkg::DefaultEndpoints,  // push ports (rows per group)
+  parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // entries (a power of two)
+  parameter int CountBits = $clog2(FifoDepth + 1),             // derived: do not override
   parameter int EntryBits = trirast_pkg::TagBits + 3 * trirast_pkg::PixBits + 1  // derived
 ) (
   input  logic                                clk_i,

@@ -113,7 +113,6 @@ module trirast_top #(
 
   logic [NumEndpoints-1:0] push;
   logic [NumEndpoints*EntryBits-1:0] push_data;
-  logic [CountBits-1:0] fifo_count;
 
   trirast_walk_stage #(
     .NumEndpoints (NumEndpoints),
@@ -142,7 +141,7 @@ module trirast_top #(
     .hand_entry_state_i (hand_entry_state),
     .hand_entry_x_i     (hand_entry_x),
     .hand_entry_e_i     (hand_entry_e),
-    .fifo_count_i       (fifo_count),
+    .fifo_count_i       (fifo_count_o),
     .push_o             (push),
     .push_data_o        (push_data),
     .busy_o             (walk_busy_o),
@@ -153,16 +152,15 @@ module trirast_top #(
     .row_o              (walk_row)
   );
 
-  trirast_span_port #(.NumEndpoints (NumEndpoints), .FifoDepth (FifoDepth)) u_span_port (
-    .clk_i (clk_i), .rst_ni (rst_ni),
-    .push_i (push), .push_data_i (push_data), .count_o (fifo_count),
-    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
-    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
-  assign fifo_count_o = fifo_count;
-
   // Observed in traces only.
   logic unused_obs;
   assign unused_obs = ^{setup_state, lane_busy, walk_row};
+
+  trirast_span_port #(.NumEndpoints (NumEndpoints), .FifoDepth (FifoDepth)) u_span_port (
+    .clk_i (clk_i), .rst_ni (rst_ni),
+    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
+    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
+    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
 
   // Runtime configuration within the hardware maximums: 1 <= n <= NumEndpoints and
   // n <= DEPTH <= FifoDepth (a larger n or DEPTH would overflow the walk stage or the FIFO).
@@ -173,13 +171,9 @@ module trirast_top #(
   `ASSERT_INIT(NumEndpointsInRange_A, NumEndpoints >= 1 && NumEndpoints <= 7)
   // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
   // and observation strobes always, a tag when its strobe is high.
-  `ASSERT_KNOWN(TriReadyKnown_A, tri_ready_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(BoxRetireKnown_A, box_retire_o, clk_i, !rst_ni)
-  `ASSERT(BoxRetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkBusyKnown_A, walk_busy_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkStallKnown_A, walk_stall_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkLastKnown_A, walk_last_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkRetireKnown_A, walk_retire_o, clk_i, !rst_ni)
+  `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, box_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
+                                walk_retire_o}, clk_i, !rst_ni)
+  `ASSERT(RetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
   `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 
 endmodule

@@ -90,7 +90,7 @@ module trirast_trad_setup_stage (
     retire_tag_o = tag_q;
     hand_valid_o = state_q == StHold;
     state_d      = state_q;
-    case (state_q)
+    unique case (state_q)
       StIdle:  if (accept) state_d = StSort;
       StSort: begin  // (if/else, not ?:, for Icarus 11's enum casts)
         if (collinear) state_d = StIdle;

@@ -84,7 +84,6 @@ module trirast_trad_top #(
 
   logic push;
   logic [EntryBits-1:0] push_data;
-  logic [CountBits-1:0] fifo_count;
   logic [WBits-1:0] walk_row;
 
   trirast_trad_walk_stage #(
@@ -106,7 +105,7 @@ module trirast_trad_top #(
     .hand_dmaj_i    (hand_dmaj),
     .hand_dmin_i    (hand_dmin),
     .hand_d0_i      (hand_d0),
-    .fifo_count_i   (fifo_count),
+    .fifo_count_i   (fifo_count_o),
     .push_o         (push),
     .push_data_o    (push_data),
     .busy_o         (walk_busy_o),
@@ -117,30 +116,24 @@ module trirast_trad_top #(
     .row_o          (walk_row)
   );
 
-  trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
-    .clk_i (clk_i), .rst_ni (rst_ni),
-    .push_i (push), .push_data_i (push_data), .count_o (fifo_count),
-    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
-    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
-  assign fifo_count_o = fifo_count;
-
   // Observed in traces only.
   logic unused_obs;
   assign unused_obs = ^{setup_state, walk_row};
+
+  trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
+    .clk_i (clk_i), .rst_ni (rst_ni),
+    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
+    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
+    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
 
   // Runtime configuration within the hardware maximum: 1 <= DEPTH <= FifoDepth.
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i != '0 && 32'(cfg_fifo_depth_i) <= FifoDepth,
           clk_i, !rst_ni)
   // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
   // and observation strobes always, a tag when its strobe is high.
-  `ASSERT_KNOWN(TriReadyKnown_A, tri_ready_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(SetupRetireKnown_A, setup_retire_o, clk_i, !rst_ni)
-  `ASSERT(SetupRetireTagKnown_A, setup_retire_o |-> !$isunknown(setup_retire_tag_o), clk_i,
-          !rst_ni)
-  `ASSERT_KNOWN(WalkBusyKnown_A, walk_busy_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkStallKnown_A, walk_stall_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkLastKnown_A, walk_last_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(WalkRetireKnown_A, walk_retire_o, clk_i, !rst_ni)
+  `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, setup_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
+                                walk_retire_o}, clk_i, !rst_ni)
+  `ASSERT(RetireTagKnown_A, setup_retire_o |-> !$isunknown(setup_retire_tag_o), clk_i, !rst_ni)
   `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 
 endmodule

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
   const bool endpoints = std::strcmp(mode, "endpoints") == 0;
   const bool tri_data = std::strcmp(mode, "tri-data") == 0;
   if (!endpoints && !tri_data) {
-    std::fprintf(stderr, "trirast_rtl_assert_demo: unknown mode '%s' (endpoints, tri-data)\n", mode);
+    std::fprintf(stderr, "trirast_rtl_assert_demo: unknown mode '%s' (endpoints, tri-data)\n",
+                 mode);
     return 2;
   }
   auto ctx = std::make_unique<VerilatedContext>();
