@@ -21,6 +21,9 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/scene_options.hpp"
+#include "cli/source_files.hpp"
+#include "core/temporary_files.hpp"
 #include "core/engine.hpp"
 #include "engines.hpp"
 #include "io/json.hpp"
@@ -334,6 +337,11 @@ bool engine_runs(const std::string& name) {
 
 }  // namespace
 
+// --synth-csv / --synth-script as given, else the file in the source tree (any working folder).
+std::string synth_file(const Args& a, const std::string& option, const std::string& relative) {
+  return a.has(option) ? a.get(option) : source_file(relative);
+}
+
 // ---------------------------------------------------------------------------------------------
 int cmd_sweep(int argc, char** argv) {
   Args a("sweep", "[--quick] [--jobs N] [--out DIR] [options]",
@@ -345,8 +353,8 @@ int cmd_sweep(int argc, char** argv) {
              {"--engines", "LIST", "comma-separated engines to sweep: golden,model,trad,float-scanline (default) and rtl, unit", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
-             {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv"},
-             {"--synth-script", "FILE", "scripts/synth.sh, whose CONFIGS line names the synthesized widths", "scripts/synth.sh"},
+             {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
+             {"--synth-script", "FILE", "scripts/synth.sh, whose CONFIGS line names the synthesized widths", "scripts/synth.sh of the source tree"},
              {"--no-progress", "", "no progress bar on stderr", ""},
          });
   a.parse(argc, argv, 2);
@@ -407,13 +415,17 @@ int cmd_sweep(int argc, char** argv) {
     p.cfg.height = base.height;
   }
   if (points.empty()) throw UsageError("trirast sweep: --engines: no configuration to sweep");
-  if (mkdir(out_dir.c_str(), 0777) != 0 && errno != EEXIST)
+  // A folder this run creates is removed (when still empty) if the run fails or is interrupted.
+  TemporaryPath new_out_dir;
+  if (mkdir(out_dir.c_str(), 0777) == 0) new_out_dir.reset(out_dir, true);
+  else if (errno != EEXIST)
     throw UsageError("trirast sweep: --out: cannot create directory '" + out_dir + "': " +
                      std::strerror(errno));
   const std::string csv_path = out_dir + "/sweep.csv", cfg_path = out_dir + "/sweep_configs.csv",
                     json_path = out_dir + "/sweep.json";
   for (const std::string& p : {csv_path, cfg_path, json_path}) check_output_path(p, "--out");
-  AreaModel area(a.get("--synth-csv"), a.get("--synth-script"));
+  const std::string synth_csv = synth_file(a, "--synth-csv", "docs/synth.csv");
+  AreaModel area(synth_csv, synth_file(a, "--synth-script", "scripts/synth.sh"));
 
   const auto t0 = Clock::now();
   std::vector<SweepSceneData> scenes;
@@ -486,7 +498,7 @@ int cmd_sweep(int argc, char** argv) {
         for (const std::string& n : skipped) e.push(Json::string(n));
         return e;
       }())
-      .set("area_model", area_model_json(area, a.get("--synth-csv")))
+      .set("area_model", area_model_json(area, synth_csv))
       .set("scenes", jscenes)
       .set("points", jpoints)
       .set("failed_points", failures)
@@ -497,6 +509,7 @@ int cmd_sweep(int argc, char** argv) {
   write_text(csv_path, sweep_csv(points, scenes, results, summaries), "--out");
   write_text(cfg_path, sweep_configs_csv(points, summaries), "--out");
   write_text(json_path, doc.dump(), "--out");
+  new_out_dir.release();
 
   std::printf("trirast sweep: %zu configurations x %zu scenes in %.1f s (%d job%s)%s\n",
               points.size(), scenes.size(), seconds_since(t0), jobs, jobs == 1 ? "" : "s",
@@ -532,18 +545,18 @@ struct FitEval {
 }  // namespace
 
 int cmd_fit(int argc, char** argv) {
-  Args a("fit", "--scene SCENE [--error-budget PPM] [options]",
-         {
-             {"--scene", "SCENE", "builtin:NAME[:k=v,...], a .tri file, or a mesh file", ""},
-             {"--cull", "MODE", "none | back | front", "none"},
-             {"--error-budget", "PPM", "allowed missing + extra pixels, parts per million of the reference's", "0"},
-             {"--endpoints", "N", "N of the fitted configuration (does not change the output; 1 is the smallest)", "1"},
-             {"--width", "W", "viewport width in pixels", "1024"},
-             {"--height", "H", "viewport height in pixels", "768"},
-             {"--report", "FILE.json", "write the search and the result as JSON", ""},
-             {"--synth-csv", "FILE", "synthesis results; missing file = estimates only", "docs/synth.csv"},
-             {"--synth-script", "FILE", "scripts/synth.sh (names the synthesized widths)", "scripts/synth.sh"},
-         });
+  // The scene options are raster's own table (cli/scene_options.hpp): the same scene, camera and
+  // viewport; --subpixel-bits fixes S instead of searching it.
+  std::vector<OptionSpec> specs = scene_input_options();
+  const std::vector<OptionSpec> fit_specs = {
+      {"--error-budget", "PPM", "allowed missing + extra pixels, parts per million of the reference's", "0"},
+      {"--endpoints", "N", "N of the fitted configuration (does not change the output; 1 is the smallest)", "1"},
+      {"--report", "FILE.json", "write the search and the result as JSON", ""},
+      {"--synth-csv", "FILE", "synthesis results; missing file = estimates only (with a warning)", "docs/synth.csv of the source tree"},
+      {"--synth-script", "FILE", "scripts/synth.sh (names the synthesized widths)", "scripts/synth.sh of the source tree"},
+  };
+  specs.insert(specs.end(), fit_specs.begin(), fit_specs.end());
+  Args a("fit", "--scene SCENE [--error-budget PPM] [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
     std::cout << "Find the smallest configuration of the improved unit (subpixel bits, coordinate\n"
@@ -570,8 +583,15 @@ int cmd_fit(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("trirast fit: ") + e.what());
   }
+  spec.camera = camera_from(a);
+  const int s_first = a.has("--subpixel-bits") ? int(a.get_int("--subpixel-bits", 0, 8)) : 0;
+  const int s_last = a.has("--subpixel-bits") ? s_first : 8;
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
-  AreaModel area(a.get("--synth-csv"), a.get("--synth-script"));
+  const std::string synth_csv = synth_file(a, "--synth-csv", "docs/synth.csv");
+  AreaModel area(synth_csv, synth_file(a, "--synth-script", "scripts/synth.sh"));
+  if (!area.have_synth())
+    std::fprintf(stderr, "trirast fit: --synth-csv %s: no synthesis results; areas are the estimate\n",
+                 synth_csv.c_str());
 
   const auto t0 = Clock::now();
   const SweepSceneData scene = load_sweep_scene(spec, base);
@@ -620,7 +640,7 @@ int cmd_fit(int argc, char** argv) {
     Area area;
   };
   std::vector<Candidate> candidates;
-  for (int S = 0; S <= 8; ++S) {
+  for (int S = s_first; S <= s_last; ++S) {
     const int coord_max = std::min(def.coord_int_bits, 30 - (S > 0 ? S : 1));
     SweepPoint p = make_point(S, coord_max, def.box_bits, 0);
     FitEval e = eval(p);

@@ -159,7 +159,7 @@ SweepSceneData load_sweep_scene(const SweepScene& s, const RasterConfig& base) {
   d.spec = s;
   RasterConfig cfg = base;
   cfg.cull = s.cull;
-  d.scene = load_scene(s.spec, cfg, CameraOptions{});
+  d.scene = load_scene(s.spec, cfg, s.camera);
   SetupResult setup;
   try {
     setup = setup_scene(d.scene.tris, cfg);

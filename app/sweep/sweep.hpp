@@ -24,6 +24,7 @@ struct SweepScene {
   std::string label;  // short name for tables and plots
   CullMode cull = CullMode::None;
   bool closed = false;
+  CameraOptions camera;  // mesh scenes: the camera (trirast fit --yaw, ...; sweeps use the default)
 };
 
 // Parses "SPEC[@back|@front|@none][@closed]" (the --scenes items).

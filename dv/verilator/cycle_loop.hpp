@@ -64,10 +64,12 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   auto top = std::make_unique<Top>(ctx.get(), top_name);
   std::unique_ptr<VerilatedFstC> fst;
   std::string fst_path;
+  RecordingTemporaries recording;  // removed unless finish_trace() moved them to the trace
   if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
     top->trace(fst.get(), 99);
     fst_path = fst_recording_path(cfg.trace_path);
+    recording.track(fst_path);
   }
   // The trace window: setup positions of triangles trace_first..trace_last (scene indices).
   size_t win_a = n, win_b = 0;

@@ -124,7 +124,18 @@ SetupResult setup_scene(const std::vector<InputTriangle>& tris, const RasterConf
       else ++result.counts.culled;
       continue;
     }
-    if (t.box.empty()) ++result.counts.offscreen;
+    if (t.box.empty()) ++result.counts.no_pixel_centre;
+    // Off screen: the snapped vertex extent does not overlap the viewport [0, W) x [0, H).
+    int64_t xmin = t.v[0].x, xmax = xmin, ymin = t.v[0].y, ymax = ymin;
+    for (int k = 1; k < 3; ++k) {
+      xmin = std::min(xmin, t.v[k].x);
+      xmax = std::max(xmax, t.v[k].x);
+      ymin = std::min(ymin, t.v[k].y);
+      ymax = std::max(ymax, t.v[k].y);
+    }
+    if (xmax <= 0 || ymax <= 0 || xmin >= int64_t(cfg.width) * cfg.unit() ||
+        ymin >= int64_t(cfg.height) * cfg.unit())
+      ++result.counts.offscreen;
     result.tris.push_back(t);
   }
   result.counts.accepted = result.tris.size();

@@ -4,6 +4,9 @@
 #include <cstdio>
 #include <map>
 #include <stdexcept>
+#include <cstdlib>
+
+#include "core/temporary_files.hpp"
 
 namespace trirast::sc {
 
@@ -19,10 +22,10 @@ void VcdRecorder::set_window(uint64_t first, uint64_t last) {
 }
 
 std::string VcdRecorder::gtkw_path(const std::string& vcd_path) {
-  const std::string ext = ".vcd";
-  if (vcd_path.size() > ext.size() &&
-      vcd_path.compare(vcd_path.size() - ext.size(), ext.size(), ext) == 0)
-    return vcd_path.substr(0, vcd_path.size() - ext.size()) + ".gtkw";
+  for (const std::string ext : {".vcd", ".fst"})
+    if (vcd_path.size() > ext.size() &&
+        vcd_path.compare(vcd_path.size() - ext.size(), ext.size(), ext) == 0)
+      return vcd_path.substr(0, vcd_path.size() - ext.size()) + ".gtkw";
   return vcd_path + ".gtkw";
 }
 
@@ -57,16 +60,36 @@ void put_value(std::string& buf, int width, uint64_t v, const std::string& id) {
   buf += '\n';
 }
 
-// Writes text to path through a temporary name.
+bool is_fst(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".fst") == 0;
+}
+
+// Writes text to path through a temporary name (removed on failure and on SIGINT / SIGTERM).
+// A .fst path gets the VCD text converted by gtkwave's vcd2fst.
 void write_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = path + (is_fst(path) ? ".tmp.vcd" : ".tmp");
+  TemporaryPath guard(tmp);
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw std::runtime_error("--trace: cannot write '" + path + "'");
   const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (std::fclose(f) != 0 || !ok ||
+      (!is_fst(path) && std::rename(tmp.c_str(), path.c_str()) != 0)) {
     std::remove(tmp.c_str());
     throw std::runtime_error("--trace: cannot write '" + path + "'");
   }
+  if (!is_fst(path)) {
+    guard.release();
+    return;
+  }
+  const std::string fst_tmp = path + ".tmp.fst";
+  TemporaryPath fst_guard(fst_tmp);
+  const std::string cmd = "vcd2fst '" + tmp + "' '" + fst_tmp + "' >/dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || std::rename(fst_tmp.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("--trace " + path + ": vcd2fst (gtkwave) failed" +
+                             std::string(rc == 127 * 256 ? " (not installed)" : "") +
+                             ": the SystemC engines write VCD; name the trace .vcd");
+  fst_guard.release();
 }
 
 }  // namespace

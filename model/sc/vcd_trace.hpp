@@ -58,11 +58,12 @@ class VcdRecorder {
   }
 
   // Writes the VCD (timescale: one cycle = 1 ns, time = the run's cycle number) under `top`, and
-  // the .gtkw beside it (path with .vcd replaced by .gtkw). Each file goes to a temporary name
+  // the .gtkw beside it (path with .vcd replaced by .gtkw). A .fst path gets the VCD converted
+  // by gtkwave's vcd2fst (and FILE.gtkw beside it). Each file goes to a temporary name
   // first and is renamed when complete. Throws std::runtime_error naming the file on failure.
   void write(const std::string& vcd_path, const std::string& top) const;
 
-  // The .gtkw path written beside a VCD path.
+  // The .gtkw path written beside a VCD (or FST) path: FILE.vcd / FILE.fst -> FILE.gtkw.
   static std::string gtkw_path(const std::string& vcd_path);
 
  private:
