@@ -277,7 +277,11 @@ int cmd_raster(int argc, char** argv) {
     cfg.trace_first = first;
     cfg.trace_last = last;
   }
-  if (a.has("--cycles")) check_output_path(a.get("--cycles"), "--cycles");
+  if (a.has("--cycles")) {
+    if (!info.timed)
+      throw UsageError("trirast raster: --cycles: engine '" + info.name + "' is not timed");
+    check_output_path(a.get("--cycles"), "--cycles");
+  }
   // Refuse unwritable outputs before the run, so a long run cannot fail at the end.
   if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
   if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
@@ -307,8 +311,6 @@ int cmd_raster(int argc, char** argv) {
                                      run.result.spans.size(), pixels));
 
   if (a.has("--cycles")) {
-    if (run.result.cycles.empty() && !ls.setup.tris.empty())
-      throw UsageError("trirast raster: --cycles: engine '" + info.name + "' is not timed");
     write_cycles_file(run.result.cycles, a.get("--cycles"), "--cycles");
   }
   if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");

@@ -3,44 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "cli/args.hpp"
 #include "io/output_file.hpp"
 
 namespace trirast {
 
-// Run in a child process: the SystemC kernel (and its counters) of this process stay untouched.
-bool engine_is_timed(const EngineInfo& engine) {
-  if (!engine.make) return false;
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const pid_t pid = fork();
-  if (pid < 0) return true;  // cannot tell: let the run say
-  if (pid == 0) {
-    try {
-      RasterConfig cfg;
-      cfg.width = cfg.height = 8;
-      InputTriangle t{};
-      t.x[0] = 1; t.y[0] = 1;
-      t.x[1] = 6; t.y[1] = 1;
-      t.x[2] = 1; t.y[2] = 6;
-      const SetupResult setup = setup_scene({t}, cfg);
-      EngineResult out;
-      engine.make()->run(setup, cfg, out);
-      _exit(out.cycles.empty() ? 1 : 0);
-    } catch (...) {
-      _exit(2);
-    }
-  }
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return !(WIFEXITED(status) && WEXITSTATUS(status) == 1);
-}
-
 void check_trace_engine(const EngineInfo& engine, const std::string& cmd) {
-  if (!engine_is_timed(engine))
+  if (!engine.timed)
     throw UsageError("trirast " + cmd + ": --trace: engine '" + engine.name +
                      "' is not timed (it has no cycles to trace); use a timed engine");
 }

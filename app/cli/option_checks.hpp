@@ -15,8 +15,6 @@ namespace trirast {
 // Throws UsageError "trirast CMD: --trace: engine 'X' is not timed ..." for an untimed engine
 // (one that reports no cycles: it has no waveform to trace).
 void check_trace_engine(const EngineInfo& engine, const std::string& cmd);
-// True when the engine reports per-triangle cycles (it runs one small triangle to find out).
-bool engine_is_timed(const EngineInfo& engine);
 
 // Throws UsageError naming `option` unless `path` ends in .png (any case); then checks that the
 // path can be written (check_output_path).

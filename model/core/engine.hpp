@@ -45,6 +45,7 @@ struct EngineInfo {
   std::string description;  // one line for --help
   bool exact;               // claims pixel-exact agreement with the golden rule
   std::function<std::unique_ptr<Engine>()> make;
+  bool timed = false;       // reports per-triangle cycles (and can write a trace)
 };
 
 }  // namespace trirast
