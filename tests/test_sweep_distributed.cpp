@@ -10,6 +10,8 @@
 #include <set>
 #include <sstream>
 
+#include "sweep/sweep_area.hpp"
+#include "sweep/sweep_shard.hpp"
 #include "support/run_command.hpp"
 
 namespace trirast {
@@ -70,6 +72,38 @@ void single_run(const std::string& out, const std::string& options) {
   const CommandResult r =
       run_command(kBin + " sweep --quick --no-progress" + kArea + options + " --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
+}
+
+// The synthesis jobs' rows replace the estimate for their unit, widths and N only.
+TEST(SweepDistributed, SynthesisJobRowsReplaceTheEstimateOfTheirConfiguration) {
+  TempDir d;
+  AreaModel area(kSource + "/docs/synth.csv", kSource + "/scripts/synth.sh");
+  RasterConfig c13;
+  c13.coord_int_bits = 13;
+  RasterConfig c13n4 = c13;
+  c13n4.endpoints = 4;
+  ASSERT_TRUE(area.area(UnitKind::Improved, c13).estimate());
+  mkdir(d.file("synth").c_str(), 0777);
+  test::write_file(d.file("synth/a.synth"),
+                   "# trirast-synth-result 1\n"
+                   "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,"
+                   "box_bits,endpoints,seconds\n"
+                   "improved,x,xilinx7,1234,567,0,0,9,,8,13,14,1,60\n"
+                   "trad,y,ice40-pnr,100,50,0,0,0,42.5,8,13,14,1,60\n# end\n");
+  const std::vector<SynthRow> rows = read_synth_results(d.path());
+  ASSERT_EQ(rows.size(), 2u);
+  area.add_rows(rows);
+  const Area a = area.area(UnitKind::Improved, c13);
+  EXPECT_EQ(a.luts, 1234);
+  EXPECT_EQ(a.ffs, 567);
+  EXPECT_EQ(a.source, "synth:xilinx7");
+  EXPECT_TRUE(area.area(UnitKind::Improved, c13n4).estimate());  // another N
+  RasterConfig k6 = c13;
+  k6.divider_quotient_bits = 6;
+  EXPECT_TRUE(area.area(UnitKind::Improved, k6).estimate());  // quotient truncation: no RTL
+  EXPECT_EQ(area.fmax_mhz(UnitKind::Trad, c13), 42.5);
+  EXPECT_TRUE(area.area(UnitKind::Trad, c13).estimate());  // an Fmax row gives no area
+  EXPECT_NE(area.estimate(UnitKind::Improved, c13).luts, 1234);
 }
 
 TEST(SweepDistributed, UnknownShardOrTaskIsAOneLineErrorNamingTheOption) {
