@@ -124,7 +124,7 @@ while :; do
   [ -f "$RES/failed" ] && break
   if [ -z "$(squeue -h -n "$JOBNAME" -o %i 2>/dev/null)" ]; then
     sleep 2  # the last job may be writing its marker
-    [ -f "$RES/done" ] || [ -f "$RES/failed" ] || echo "no job of $JOBNAME left and no result marker" > "$RES/failed"
+    [ -f "$RES/done" ] || [ -f "$RES/failed" ] || echo "the merge job did not run to its end (a job it depends on failed, or it was cancelled)" > "$RES/failed"
     break
   fi
   sleep 2
