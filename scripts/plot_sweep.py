@@ -315,8 +315,10 @@ def main():
                 if est_front else "")
              + ". " + ("A configuration marked *no RTL* truncates the divider's quotient (`K`), "
                        "which only the C++ models implement: the RTL's divider always has Q = "
-                       "box bits + 1 quotient bits, so there is nothing to synthesize and its "
-                       "area stays an estimate." if no_rtl & {f"{p['engine']} {p['config']}" for p in est_front}
+                       "box bits + 1 quotient bits (the rtl engine refuses K, "
+                       "dv/verilator/rtl_engine.cpp), so there is nothing to synthesize and its "
+                       "area stays an estimate; on the area front such a point is compared with "
+                       "synthesized ones, so read its place there with the estimate's error below." if no_rtl & {f"{p['engine']} {p['config']}" for p in est_front}
                        else "") + "\n")
     rows, errs_l, errs_f = [], [], []
     for r in am.get("synth_rows", []):
