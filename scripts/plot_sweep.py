@@ -320,7 +320,7 @@ def main():
                        "area stays an estimate; on the area front such a point is compared with "
                        "synthesized ones, so read its place there with the estimate's error below." if no_rtl & {f"{p['engine']} {p['config']}" for p in est_front}
                        else "") + "\n")
-    rows, errs_l, errs_f = [], [], []
+    rows, errs = [], {}
     for r in am.get("synth_rows", []):
         e = r.get("estimate")
         if not e:
@@ -330,8 +330,9 @@ def main():
         el = 100.0 * (e["luts"] - r["luts"]) / r["luts"] if r["luts"] else 0.0
         ef = 100.0 * (e["ffs"] - r["ffs"]) / r["ffs"] if r["ffs"] else 0.0
         if not calib:
-            errs_l.append(el)
-            errs_f.append(ef)
+            errs.setdefault(r["unit"], ([], []))
+            errs[r["unit"]][0].append(el)
+            errs[r["unit"]][1].append(ef)
         src = os.path.relpath(r["file"], ROOT) if r["file"].startswith(ROOT) else r["file"]
         src = src if not src.startswith("/") else os.path.basename(src)
         rows.append([r["unit"], f"S{r['subpixel_bits']} c{r['coord_bits']} b{r['box_bits']} "
@@ -342,14 +343,19 @@ def main():
         L.append(table(["unit", "widths", "LUTs synth", "LUTs estimate", "LUT error",
                         "FFs synth", "FFs estimate", "FF error", "result file"], rows,
                        ["---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---"]) + "\n")
-    if errs_l:
+    if errs:
         mean_abs = lambda v: sum(abs(x) for x in v) / len(v)
-        L.append(f"The estimate against the {len(errs_l)} synthesized configurations other than the "
-                 "calibration point (the default improved unit, to which the estimate is scaled): "
-                 f"LUTs mean |error| **{mean_abs(errs_l):.1f}%** (from {min(errs_l):+.1f}% to "
-                 f"{max(errs_l):+.1f}%), flip-flops mean |error| **{mean_abs(errs_f):.1f}%** (from "
-                 f"{min(errs_f):+.1f}% to {max(errs_f):+.1f}%). Error = (estimate - synthesis) / "
-                 "synthesis.\n")
+        parts = []
+        for unit, (el, ef) in sorted(errs.items()):
+            parts.append(f"the {unit} unit, {len(el)} configurations: LUTs mean |error| "
+                         f"**{mean_abs(el):.1f}%** (from {min(el):+.1f}% to {max(el):+.1f}%), "
+                         f"flip-flops mean |error| **{mean_abs(ef):.1f}%** (from {min(ef):+.1f}% "
+                         f"to {max(ef):+.1f}%)")
+        L.append("The estimate against synthesis, every synthesized configuration but the "
+                 "calibration point (the default improved unit, to which both units' estimates "
+                 "are scaled): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
+                 "synthesis." + (" Synthesis job results: `" + d["merged_from"] + "/synth/` "
+                                 "(not checked in)." if d.get("merged_from") else "") + "\n")
     fm = d.get("ice40_fmax", [])
     if fm:
         L.append("iCE40 Fmax (nextpnr-ice40, HX8K, seed 1, from the synthesis jobs' place and route; "

@@ -105,9 +105,7 @@ rm -f "$RES/done" "$RES/failed" "$RES"/status/*
   echo "ROUNDS=$ROUNDS"
   echo "JOBNAME='$JOBNAME'"
   echo "CMDLINE='$CMDLINE'"
-  printf 'SEL=('; printf '%q ' "${SEL[@]}"; echo ')'
-  printf 'SEL_EXTRA=('; printf '%q ' "${SEL_EXTRA[@]}"; echo ')'
-  printf 'QUICK_ARG=('; printf '%q ' "${QUICK_ARG[@]}"; echo ')'
+  declare -p SEL SEL_EXTRA QUICK_ARG  # (empty arrays stay empty)
 } > "$RES/run.env"
 
 SIM=$(sbatch --parsable --array=0-$((SHARDS - 1)) -J "$JOBNAME" -o "$RES/logs/sim-%a.out" \
