@@ -353,7 +353,7 @@ int cmd_sweep(int argc, char** argv) {
          {
              {"--quick", "", "a small sweep (3 small scenes, ~20 configurations) for the test suite", ""},
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
-             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json", "sweep-out"},
+             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
              {"--engines", "LIST", "comma-separated engines to sweep: golden,model,trad,float-scanline (default) and rtl, unit", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
