@@ -14,6 +14,7 @@ PACKAGES=(
   libglm-dev libassimp-dev assimp-testmodels  # mesh scenes and camera
   libpng-dev                              # PNG images
   python3-matplotlib                      # plots (scripts call /usr/bin/python3)
+  slurm-wlm munge parallel                # distributed sweep: local Slurm (scripts/slurm_local.sh), GNU parallel
 )
 
 missing=()

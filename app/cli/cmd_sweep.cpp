@@ -30,6 +30,7 @@
 #include "io/output_file.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep/sweep_area.hpp"
+#include "sweep/sweep_shard.hpp"
 
 namespace trirast {
 
@@ -287,7 +288,19 @@ Json area_model_json(const AreaModel& area, const std::string& csv) {
                   .set("coord_bits", r.coord_bits)
                   .set("box_bits", r.box_bits)
                   .set("luts", r.luts)
-                  .set("ffs", r.ffs));
+                  .set("ffs", r.ffs)
+                  .set("endpoints", r.endpoints)
+                  .set("file", r.origin.empty() ? csv : r.origin)
+                  .set("estimate", [&] {  // the width formula's figures for the same widths
+                    RasterConfig c;
+                    c.subpixel_bits = r.subpixel_bits;
+                    c.coord_int_bits = r.coord_bits;
+                    c.box_bits = r.box_bits;
+                    c.endpoints = r.endpoints;
+                    const Area e = area.estimate(
+                        r.unit == "trad" ? UnitKind::Trad : UnitKind::Improved, c);
+                    return Json::object().set("luts", e.luts).set("ffs", e.ffs);
+                  }()));
   const RasterConfig def;
   const Area imp = area.area(UnitKind::Improved, def), trad = area.area(UnitKind::Trad, def);
   const AreaTerms ti = improved_area_terms(def), tt = trad_area_terms(def);
@@ -348,7 +361,7 @@ int cmd_sweep(int argc, char** argv) {
          {
              {"--quick", "", "a small sweep (3 small scenes, ~20 configurations) for the test suite", ""},
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
-             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json", "sweep-out"},
+             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
              {"--engines", "LIST", "comma-separated engines to sweep: golden,model,trad,float-scanline (default) and rtl, unit", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
@@ -356,6 +369,12 @@ int cmd_sweep(int argc, char** argv) {
              {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
              {"--synth-script", "FILE", "scripts/synth.sh, whose CONFIGS line names the synthesized widths", "scripts/synth.sh of the source tree"},
              {"--no-progress", "", "no progress bar on stderr", ""},
+             {"--list-tasks", "", "print the task list (index, configuration, scene) and exit", ""},
+             {"--shard", "K/N", "run tasks [K*T/N, (K+1)*T/N) of the T tasks, one result file each in --out DIR/tasks (complete ones are skipped)", ""},
+             {"--task", "I", "run task I only (as --shard)", ""},
+             {"--merge", "DIR", "build the outputs from DIR/tasks (and DIR/synth) instead of running the points", ""},
+             {"--allow-partial", "", "--merge: merge even when tasks have no result file (the output says partial)", ""},
+             {"--synth-todo", "FILE", "--merge: write the front configurations whose area is an estimate (UNIT:S:COORD:BOX:N lines)", ""},
          });
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -415,6 +434,46 @@ int cmd_sweep(int argc, char** argv) {
     p.cfg.height = base.height;
   }
   if (points.empty()) throw UsageError("trirast sweep: --engines: no configuration to sweep");
+  // The distributed sweep (sweep_shard.hpp): task list, shards, merge.
+  const std::vector<SweepTask> all_tasks = sweep_tasks(points.size(), scene_specs.size());
+  const bool merging = a.has("--merge"), sharded = a.has("--shard") || a.has("--task");
+  if (int(merging) + int(sharded) + int(a.has("--list-tasks")) > 1 || (a.has("--shard") && a.has("--task")))
+    throw UsageError("trirast sweep: --shard, --task, --merge and --list-tasks exclude each other");
+  if ((a.has("--allow-partial") || a.has("--synth-todo")) && !merging)
+    throw UsageError(std::string("trirast sweep: ") +
+                     (a.has("--allow-partial") ? "--allow-partial" : "--synth-todo") +
+                     " needs --merge DIR");
+  if (a.has("--list-tasks")) {
+    for (const SweepTask& t : all_tasks)
+      std::printf("%zu\t%s\t%s\n", t.index, points[t.point].label().c_str(),
+                  scene_specs[t.scene].spec.c_str());
+    return 0;
+  }
+  if (sharded) {
+    std::vector<SweepTask> mine;
+    if (a.has("--shard")) {
+      try {
+        mine = shard_tasks(all_tasks, parse_shard(a.get("--shard")));
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("trirast sweep: --shard: ") + e.what());
+      }
+    } else {
+      const std::string i = a.get("--task");
+      if (i.empty() || i.size() > 9 || i.find_first_not_of("0123456789") != std::string::npos ||
+          std::stoul(i) >= all_tasks.size())
+        throw UsageError("trirast sweep: --task: '" + i + "' is not a task (0.." +
+                         std::to_string(all_tasks.size() - 1) + ")");
+      mine.push_back(all_tasks[std::stoul(i)]);
+    }
+    const auto t0 = Clock::now();
+    const ShardOutcome o = run_shard(out_dir, sweep_fingerprint(points, scene_specs, base), mine,
+                                     points, scene_specs, base);
+    std::printf("trirast sweep: %zu of %zu tasks in %s: %zu ran, %zu complete already, %zu "
+                "failed, %.1f s\n",
+                mine.size(), all_tasks.size(), out_dir.c_str(), o.ran, o.skipped, o.failed,
+                seconds_since(t0));
+    return 0;
+  }
   // A folder this run creates is removed (when still empty) if the run fails or is interrupted.
   TemporaryPath new_out_dir;
   if (mkdir(out_dir.c_str(), 0777) == 0) new_out_dir.reset(out_dir, true);
@@ -426,10 +485,17 @@ int cmd_sweep(int argc, char** argv) {
   for (const std::string& p : {csv_path, cfg_path, json_path}) check_output_path(p, "--out");
   const std::string synth_csv = synth_file(a, "--synth-csv", "docs/synth.csv");
   AreaModel area(synth_csv, synth_file(a, "--synth-script", "scripts/synth.sh"));
+  if (merging) area.add_rows(read_synth_results(a.get("--merge")));
 
   const auto t0 = Clock::now();
   std::vector<SweepSceneData> scenes;
-  for (const SweepScene& s : scene_specs) scenes.push_back(load_sweep_scene(s, base));
+  std::vector<std::string> missing;  // --merge --allow-partial: tasks without a result file
+  std::vector<std::vector<PointResult>> merged;
+  if (merging)
+    merge_task_results(a.get("--merge"), sweep_fingerprint(points, scene_specs, base), points,
+                       scene_specs, a.has("--allow-partial"), scenes, merged, missing);
+  else
+    for (const SweepScene& s : scene_specs) scenes.push_back(load_sweep_scene(s, base));
   const double reference_seconds = seconds_since(t0);
 
   std::vector<Task> tasks;
@@ -437,11 +503,13 @@ int cmd_sweep(int argc, char** argv) {
     for (size_t p = 0; p < points.size(); ++p) tasks.push_back({p, s});
   std::vector<std::vector<PointResult>> results(points.size(),
                                                 std::vector<PointResult>(scenes.size()));
-  Progress progress(tasks.size(), !a.has("--no-progress"));
-  std::fprintf(stderr, "trirast sweep: %zu configurations x %zu scenes = %zu points, %d job%s\n",
+  Progress progress(tasks.size(), !a.has("--no-progress") && !merging);
+  if (!merging) std::fprintf(stderr, "trirast sweep: %zu configurations x %zu scenes = %zu points, %d job%s\n",
                points.size(), scenes.size(), tasks.size(), jobs, jobs == 1 ? "" : "s");
   const auto t1 = Clock::now();
-  if (jobs == 1) {
+  if (merging) {
+    results = merged;
+  } else if (jobs == 1) {
     size_t done = 0;
     for (const Task& t : tasks) {
       results[t.point][t.scene] = run_sweep_point(points[t.point], scenes[t.scene]);
@@ -456,6 +524,9 @@ int cmd_sweep(int argc, char** argv) {
   for (size_t p = 0; p < points.size(); ++p)
     summaries.push_back(summarize(points[p], scenes, results[p], area));
   mark_pareto(summaries);
+  std::vector<std::string> no_rtl;  // front configurations the RTL does not realize
+  const std::string todo = synth_todo(points, summaries, no_rtl);
+  if (a.has("--synth-todo")) write_text(a.get("--synth-todo"), todo, "--synth-todo");
 
   Json jscenes = Json::array();
   for (const SweepSceneData& s : scenes) {
@@ -506,6 +577,20 @@ int cmd_sweep(int argc, char** argv) {
                                .set("references", reference_seconds)
                                .set("sweep", sweep_seconds)
                                .set("total", seconds_since(t0)));
+  {
+    Json m = Json::array(), nr = Json::array(), fm = Json::array();
+    for (const std::string& n : missing) m.push(Json::string(n));
+    for (const std::string& n : no_rtl) nr.push(Json::string(n));
+    for (size_t p = 0; p < points.size(); ++p)
+      if (const double f = area.fmax_mhz(points[p].kind(), points[p].cfg))
+        fm.push(Json::object().set("engine", points[p].engine).set("config", points[p].config_name()).set("fmax_mhz", f));
+    doc.set("merged_from", merging ? a.get("--merge") : "")
+        .set("partial", !missing.empty())
+        .set("missing_tasks", m)
+        .set("front_synth_todo", todo)
+        .set("front_without_rtl", nr)
+        .set("ice40_fmax", fm);
+  }
   write_text(csv_path, sweep_csv(points, scenes, results, summaries), "--out");
   write_text(cfg_path, sweep_configs_csv(points, summaries), "--out");
   write_text(json_path, doc.dump(), "--out");
@@ -528,6 +613,9 @@ int cmd_sweep(int argc, char** argv) {
                   summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
                   summaries[p].area.estimate() ? "(area estimate)" : "");
   if (failures) std::printf("  %d point(s) failed: see the error column of sweep.csv\n", failures);
+  if (!missing.empty())
+    std::printf("  PARTIAL: %zu task(s) had no result file (first: %s); their points are left "
+                "off the fronts\n", missing.size(), missing.front().c_str());
   for (const std::string& p : {csv_path, cfg_path, json_path})
     std::printf("  wrote      %s\n", p.c_str());
   return 0;

@@ -183,17 +183,51 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
 const SynthRow* AreaModel::find(const std::string& unit, const RasterConfig& cfg) const {
   for (const SynthRow& r : rows_)
     if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
-        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits)
+        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
+        r.endpoints == cfg.endpoints)
       return &r;
   return nullptr;
+}
+
+void AreaModel::add_rows(const std::vector<SynthRow>& rows) {
+  for (const SynthRow& r : rows) {
+    if (r.fmax_mhz > 0) fmax_rows_.push_back(r);
+    if (r.target != target_ && !(target_.empty() && r.target == "xilinx7")) continue;
+    if (target_.empty()) target_ = r.target;
+    auto same = [&](const SynthRow& o) {
+      return o.unit == r.unit && o.subpixel_bits == r.subpixel_bits &&
+             o.coord_bits == r.coord_bits && o.box_bits == r.box_bits &&
+             o.endpoints == r.endpoints;
+    };
+    rows_.erase(std::remove_if(rows_.begin(), rows_.end(), same), rows_.end());
+    rows_.push_back(r);
+  }
+}
+
+Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
+  Area a;
+  if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;
+  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
+  a.luts = std::round(t.luts * lut_scale_);
+  a.ffs = std::round(t.ffs * ff_scale_);
+  a.source = "estimate";
+  return a;
+}
+
+double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
+  for (const SynthRow& r : fmax_rows_)
+    if (r.unit == unit_kind_name(kind) && r.subpixel_bits == cfg.subpixel_bits &&
+        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
+        r.endpoints == cfg.endpoints)
+      return r.fmax_mhz;
+  return 0;
 }
 
 Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
   if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;  // no hardware
-  const RasterConfig synth_like;  // what synthesis fixes: N = 1, FIFO 8, no truncation
-  const bool fixed_match = cfg.endpoints == synth_like.endpoints &&
-                           cfg.fifo_depth == synth_like.fifo_depth &&
+  const RasterConfig synth_like;  // what synthesis fixes: FIFO 8, no truncation (N: the row's)
+  const bool fixed_match = cfg.fifo_depth == synth_like.fifo_depth &&
                            (kind == UnitKind::Trad || cfg.divider_quotient_bits == 0);
   if (fixed_match)
     if (const SynthRow* r = find(unit_kind_name(kind), cfg)) {
@@ -202,11 +236,7 @@ Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
       a.source = "synth:" + r->target;
       return a;
     }
-  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
-  a.luts = std::round(t.luts * lut_scale_);
-  a.ffs = std::round(t.ffs * ff_scale_);
-  a.source = "estimate";
-  return a;
+  return estimate(kind, cfg);
 }
 
 std::string AreaModel::formula_text() const {

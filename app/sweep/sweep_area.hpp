@@ -26,6 +26,9 @@ struct SynthRow {
   double luts = 0, ffs = 0;
   // The configuration's widths, from the config name (see AreaModel::config_widths).
   int subpixel_bits = -1, coord_bits = -1, box_bits = -1;
+  int endpoints = 1;     // NumEndpoints of the synthesized unit (docs/synth.csv: 1)
+  double fmax_mhz = 0;   // iCE40 place and route of the same configuration, 0 when none
+  std::string origin;    // the file it was read from
 };
 
 // The raw width formula (before calibration), for the report.
@@ -46,6 +49,15 @@ class AreaModel {
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL).
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
+  // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a
+  // row replaces one of docs/synth.csv for the same unit, widths and endpoints. Rows of another
+  // target than target() (or of "ice40-pnr", which carries Fmax only) give only their Fmax.
+  void add_rows(const std::vector<SynthRow>& rows);
+  // The width formula, scaled, whatever synthesis covers (to report its error against synthesis).
+  Area estimate(UnitKind kind, const RasterConfig& cfg) const;
+  // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
+  double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
+
   bool have_synth() const { return !rows_.empty(); }
   const std::vector<SynthRow>& rows() const { return rows_; }
   const std::string& target() const { return target_; }  // the target used ("" when none)
@@ -57,7 +69,7 @@ class AreaModel {
 
  private:
   const SynthRow* find(const std::string& unit, const RasterConfig& cfg) const;
-  std::vector<SynthRow> rows_;
+  std::vector<SynthRow> rows_, fmax_rows_;
   std::string target_;
   double lut_scale_ = 1, ff_scale_ = 1;
 };
