@@ -26,6 +26,7 @@ module trirast_edge_lane (
   // ---- progress ----
   output logic                                 busy_o,        // does a unit of work this cycle
   output logic                                 done_next_o,   // has no work from next cycle on
+  output logic                                 div_o,         // ... and it is a divider iteration
   // ---- results: the walker's start registers (docs/unit.md, section 4) ----
   output logic                                 horiz_o,
   output logic                                 mirror_o,
@@ -239,6 +240,7 @@ module trirast_edge_lane (
   // output ports share a vector with other instances' ports).
   assign done_next_o = (div_busy_next ? phase_d : skip3_next) == PhDone;
   assign busy_o      = cur != PhDone;
+  assign div_o       = div_en;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

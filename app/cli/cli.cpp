@@ -23,6 +23,8 @@
 #include "io/diff_report.hpp"
 #include "io/output_file.hpp"
 #include "io/cycles_file.hpp"
+#include "io/heatmap.hpp"
+#include "cli/slowest.hpp"
 #include "io/spans_file.hpp"
 #include "scene/scene.hpp"
 
@@ -251,6 +253,7 @@ int cmd_raster(int argc, char** argv) {
   specs.push_back({"--cycles", "FILE.csv", "timed engines: per-triangle cycles (docs/timing.md)", ""});
   specs.push_back({"--trace", "FILE", "timed engines: waveform trace (.vcd; the rtl engine also .fst)", ""});
   specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
+  add_diag_options(specs, false);
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -286,6 +289,7 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
   if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+  const DiagOptions diag = diag_options_from(a, false);
 
   auto t0 = Clock::now();
   LoadedScene ls = load_and_setup(a, cfg);
@@ -316,6 +320,17 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");
   if (a.has("--image"))
     write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
+  if (!diag.heatmap_path.empty()) {
+    if (run.result.cycles.empty() && !ls.setup.tris.empty())
+      throw UsageError("trirast raster: --heatmap: engine '" + info.name + "' is not timed");
+    write_png(heatmap_image(run.result.spans, run.result.cycles, diag.heatmap_metric, info.name,
+                            cfg.width, cfg.height),
+              diag.heatmap_path, "--heatmap");
+  }
+  size_t exported = 0;
+  if (diag.export_tris)
+    exported = export_tri_window(ls.setup, cfg, diag.export_first, diag.export_last,
+                                 diag.export_path, "--export-tris", a.get("--scene"));
   report.set("wall_seconds", Json::object()
                                  .set("load", ls.load_seconds)
                                  .set("setup", ls.setup_seconds)
@@ -363,6 +378,11 @@ int cmd_raster(int argc, char** argv) {
   for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
     if (a.has(opt) && stamps.written(a.get(opt)))
       std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
+  if (!diag.heatmap_path.empty())
+    std::printf("  wrote      %s (heatmap of %s)\n", diag.heatmap_path.c_str(), diag.heatmap_metric.c_str());
+  if (diag.export_tris)
+    std::printf("  wrote      %s (%zu set-up triangles of %lld..%lld)\n", diag.export_path.c_str(),
+                exported, (long long)diag.export_first, (long long)diag.export_last);
   if (a.has("--trace") && stamps.written(gtkw_path(a.get("--trace"))))
     std::printf("  wrote      %s (GTKWave save file)\n", gtkw_path(a.get("--trace")).c_str());
   return 0;
@@ -390,6 +410,7 @@ int cmd_compare(int argc, char** argv) {
   specs.push_back({"--diff-image", "FILE.png",
                    "PNG of the first engine that differs from golden (else the first non-golden one): grey agreed, red missing, blue extra", ""});
   specs.push_back({"--report", "FILE.json", "write the comparison as JSON", ""});
+  add_diag_options(specs, true);
   Args a("compare", "--scene SCENE --engines A,B,... [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -417,6 +438,7 @@ int cmd_compare(int argc, char** argv) {
   if (engines.empty()) throw UsageError("trirast compare: --engines: empty list");
   if (a.has("--diff-image")) check_png_path(a.get("--diff-image"), "compare", "--diff-image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+  const DiagOptions diag = diag_options_from(a, true);
 
   // Every input is read and checked before anything is printed: the scene, then the recorded
   // spans files, so a bad one is a one-line error with nothing on stdout.
@@ -444,6 +466,9 @@ int cmd_compare(int argc, char** argv) {
   std::vector<std::pair<std::string, SpanDiff>> diffs;  // every engine but the golden
   std::vector<Json> rows;  // one per engine, in --engines order
   std::vector<std::string> row_engines;
+  // The timed engines' per-triangle cycles (and the first one's spans, for --heatmap).
+  std::vector<std::pair<std::string, std::vector<TriangleCycles>>> timed_cycles;
+  SpanList heatmap_spans;
   for (const EngineInfo* info : engines) {
     EngineRun run{info, {}, 0};
     if (info->name == "golden") {
@@ -469,6 +494,10 @@ int cmd_compare(int argc, char** argv) {
     }
     const bool timed = run.result.total_cycles > 0 || run.result.work.count("total_cycles") > 0;
     const std::string cycles = timed ? std::to_string(run.result.total_cycles) : "-";
+    if (timed) {
+      if (timed_cycles.empty() && !diag.heatmap_path.empty()) heatmap_spans = run.result.spans;
+      timed_cycles.emplace_back(info->name, run.result.cycles);
+    }
     std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
@@ -502,6 +531,23 @@ int cmd_compare(int argc, char** argv) {
     std::printf("  (cycles: total of the timed engines; per-module busy and stall cycles and the "
                 "simulation speed: %s)\n",
                 a.has("--report") ? ("in " + a.get("--report")).c_str() : "--report FILE.json");
+  print_timed_cycles(timed_cycles, diag, a.has("--cycles") ? a.get("--cycles") : std::string(),
+                     cfg.sink_stall);
+  if (!diag.heatmap_path.empty()) {
+    if (timed_cycles.empty())
+      throw UsageError("trirast compare: --heatmap: none of --engines is timed");
+    write_png(heatmap_image(heatmap_spans, timed_cycles[0].second, diag.heatmap_metric,
+                            timed_cycles[0].first, cfg.width, cfg.height),
+              diag.heatmap_path, "--heatmap");
+    std::printf("  wrote %s (heatmap of %s, %s)\n", diag.heatmap_path.c_str(),
+                diag.heatmap_metric.c_str(), timed_cycles[0].first.c_str());
+  }
+  if (diag.export_tris) {
+    const size_t n = export_tri_window(ls.setup, cfg, diag.export_first, diag.export_last,
+                                       diag.export_path, "--export-tris", a.get("--scene"));
+    std::printf("  wrote %s (%zu set-up triangles of %lld..%lld)\n", diag.export_path.c_str(), n,
+                (long long)diag.export_first, (long long)diag.export_last);
+  }
   if (a.has("--diff-image")) {
     // FILE.png: the first engine that differs (else the first non-golden one); every other
     // engine beside it as FILE.ENGINE.png. Differing pixels are ringed to be seen at any size.

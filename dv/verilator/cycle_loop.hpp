@@ -9,6 +9,13 @@
 //   bool early_retire(const Top&, size_t& tag)    a triangle leaving before the walk stage in this
 //                                                 cycle (no spans: a box outside the viewport,
 //                                                 a collinear triangle), and its tag
+//   void observe_setup(const Top&, TriangleCycles&)   every cycle a triangle is in the setup
+//                                                 stage: its lanes' divider and boundary work
+//   void observe_handoff(const Top&, TriangleCycles&) in its hand-off cycle: its box size
+//
+// The stage breakdown (docs/timing.md, "Outputs") comes from the observation outputs both tops
+// have: setup_state_o (its first non-idle cycle, its first StHold cycle), handoff_o, and the walk
+// stage's walk_busy_o / walk_last_o with walk_tag_o.
 //
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
 // applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
@@ -121,6 +128,12 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
 
   CycleCounts counts;
   size_t next = 0;  // the triangle on the port
+  // The triangle in the setup stage (from its accept to its hand-off or early retirement; n:
+  // none), whether its first non-idle and first StHold cycles were seen, and the triangle whose
+  // walk the walk stage reported last.
+  size_t in_setup = n, walk_seen = n;
+  bool setup_started = false, setup_held = false;
+  constexpr unsigned kStHold = 4;  // setup_state_o of StHold in both tops
   offer(next);
   uint64_t last_progress = 0;
   // Cycles without a handshake, a retirement or a triangle's last group or row. A triangle walks
@@ -143,6 +156,25 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
 
     bool progress = false;
+    // The setup stage's triangle (accepted in an earlier cycle).
+    if (in_setup < n) {
+      TriangleCycles& tc = out.cycles[in_setup];
+      const unsigned state = unsigned(top->setup_state_o);
+      if (state != 0 && !setup_started) {
+        tc.setup_start_cycle = c;
+        setup_started = true;
+      }
+      if (state == kStHold && !setup_held) {
+        tc.setup_done_cycle = c;
+        setup_held = true;
+      }
+      unit.observe_setup(*top, tc);
+      if (top->handoff_o) {
+        tc.handoff_cycle = c;
+        unit.observe_handoff(*top, tc);
+        in_setup = n;
+      }
+    }
     const bool accept = top->tri_valid_i && top->tri_ready_o;
     if (accept) {
       out.cycles[next].accept_cycle = c;
@@ -151,10 +183,21 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     size_t retired = 0;
     if (unit.early_retire(*top, retired)) {
       const size_t p = known(retired, "early retirement");
-      out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;
+      TriangleCycles& tc = out.cycles[p];
+      tc.first_span_cycle = tc.done_cycle = c;
+      tc.setup_done_cycle = tc.handoff_cycle = tc.walk_start_cycle = tc.walk_end_cycle = c;
+      if (p == in_setup) in_setup = n;
       walked[p] = done[p] = 1;
       ++counts.early_retirements;
       progress = true;
+    }
+    if (accept) {
+      in_setup = next;
+      setup_started = setup_held = false;
+    }
+    if (top->walk_busy_o && top->walk_tag_o != walk_seen) {
+      walk_seen = known(top->walk_tag_o, "walk");
+      out.cycles[walk_seen].walk_start_cycle = c;
     }
     if (top->walk_stall_o) {
       ++out.cycles[known(top->walk_tag_o, "walk stall")].stall_cycles;
@@ -162,6 +205,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
     if (top->walk_last_o) {
       const size_t p = known(top->walk_tag_o, "last walk step");
+      out.cycles[p].walk_end_cycle = c;
       walked[p] = 1;
       if (top->walk_retire_o) {
         out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;

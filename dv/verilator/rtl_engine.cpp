@@ -89,6 +89,17 @@ struct ImprovedPorts {
     drive(top.tri_c_i, c, words(3 * kEdgeBits));
     top.tri_bias_i = bias;
   }
+  // The lanes' work while the triangle is set up: a busy lane does a divider iteration or a
+  // boundary column step.
+  void observe_setup(const Vtrirast_top& top, TriangleCycles& tc) const {
+    const unsigned busy = top.lane_busy_o, div = top.lane_div_o;
+    tc.divider_iterations += unsigned(__builtin_popcount(busy & div));
+    tc.boundary_steps += unsigned(__builtin_popcount(busy & ~div & 7u));
+  }
+  void observe_handoff(const Vtrirast_top& top, TriangleCycles& tc) const {
+    tc.box_width = uint64_t(top.box_xmax_o) + 1;
+    tc.box_height = uint64_t(top.box_ymax_o) + 1;
+  }
   // A box that clips to nothing retires in the box stage.
   bool early_retire(const Vtrirast_top& top, size_t& tag) const {
     if (!top.box_retire_o) return false;

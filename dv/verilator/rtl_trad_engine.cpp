@@ -68,6 +68,23 @@ struct TradPorts {
     drive(top.tri_vx_i, vx, words(3 * kVertexBits));
     drive(top.tri_vy_i, vy, words(3 * kVertexBits));
   }
+  void observe_setup(const Vtrirast_trad_top&, TriangleCycles&) const {}  // no divider, no lanes
+  // The box the walk stage covers: the bounding box of the sorted integer pixels.
+  void observe_handoff(const Vtrirast_trad_top& top, TriangleCycles& tc) const {
+    int64_t x[3], y[3];
+    for (int k = 0; k < 3; ++k) {
+      x[k] = field(top.hand_px_o, k);
+      y[k] = field(top.hand_py_o, k);
+    }
+    tc.box_width = uint64_t(std::max({x[0], x[1], x[2]}) - std::min({x[0], x[1], x[2]})) + 1;
+    tc.box_height = uint64_t(y[2] - y[0]) + 1;
+  }
+  // Field k (signed, kCoordIntBits wide) of a packed vertex port.
+  static int64_t field(uint64_t port, int k) {
+    const uint64_t u = (port >> (k * kCoordIntBits)) & ((uint64_t(1) << kCoordIntBits) - 1);
+    const uint64_t sign = uint64_t(1) << (kCoordIntBits - 1);
+    return int64_t(u ^ sign) - int64_t(sign);
+  }
   // A collinear triangle retires in the setup stage.
   bool early_retire(const Vtrirast_trad_top& top, size_t& tag) const {
     if (!top.setup_retire_o) return false;

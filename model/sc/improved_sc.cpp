@@ -43,10 +43,15 @@ uint64_t SetupStage::set_up(const TriangleSetup& t, uint64_t a, EdgeSetupTxn& x)
   }
   // a + 2, StEdge: corner values and normalizers; a + 3 on, StLanes: L_k cycles per lane.
   uint64_t L = 0, Lk[3];
+  TriangleCycles& rec = run_->tri(x.pos);
   for (int k = 0; k < 3; ++k) {
     Lk[k] = lane[k]->run(x.iface, k, t.index, x.norm[k], x.walker[k]);
     L = std::max(L, Lk[k]);
+    rec.divider_iterations += x.walker[k].work().divider_iterations;
+    rec.boundary_steps += x.walker[k].work().boundary_steps;
   }
+  rec.box_width = uint64_t(x.iface.Xmax) + 1;
+  rec.box_height = uint64_t(x.iface.Ymax) + 1;
   interface.counters.busy += 2;
   trace_state(a + 2, StEdge);
   trace_state(a + 3, StLanes);

@@ -128,6 +128,7 @@ class SetupStageBase : public sc_core::sc_module {
       const TriangleSetup& t = tris[pos];
       TriangleCycles& rec = r.tri(pos);
       rec = TriangleCycles{t.index, a, 0, 0, 0, 0, 0};
+      rec.setup_start_cycle = a + 1;
       if (tr) {
         tr->value(sig_accept_, a, 1);
         tr->value(sig_accept_, a + 1, 0);
@@ -141,12 +142,15 @@ class SetupStageBase : public sc_core::sc_module {
         // The triangle retires in a + 1 (no spans, no hand-off).
         ++counters.busy;
         rec.first_span_cycle = rec.done_cycle = a + 1;
+        rec.setup_done_cycle = rec.handoff_cycle = a + 1;
+        rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
         idle = a + 2;
       } else {
         // Busy from a + 1 until StHold; hand the triangle over in the first cycle the walk stage
         // is idle (the walk stage runs it inside this call).
         counters.busy += hold - (a + 1);
         if (tr) tr->value(sig_state_, hold, StHold);
+        rec.setup_done_cycle = hold;
         const uint64_t h = out->put(&x, hold);
         counters.stall += h - hold;
         cur_ ^= 1;
@@ -219,6 +223,9 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
     const uint64_t t_last = walk(*x, h);
     counters.stall += stalls_;
     rec.stall_cycles = stalls_;
+    rec.handoff_cycle = h;
+    rec.walk_start_cycle = h + 1;
+    rec.walk_end_cycle = t_last;
     // A triangle without spans (the sink took none) retires in its last walk cycle.
     if (rec.spans == 0) rec.first_span_cycle = rec.done_cycle = t_last;
     if (tr) {

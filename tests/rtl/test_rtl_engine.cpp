@@ -18,7 +18,9 @@
 #include "golden/golden.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "scene/scene.hpp"
+#include "reference/cycle_columns.hpp"
 #include "reference/reference_raster.hpp"
+#include "sc/sc_engine.hpp"
 #include "verilator/trirast_rtl_params.hpp"
 #include "unit/improved_unit.hpp"
 #include "unit/unit_widths.hpp"
@@ -186,6 +188,17 @@ void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std:
     ASSERT_EQ(a.spans, b.spans) << what << ": triangle " << a.tri;
     ASSERT_EQ(a.stall_cycles, b.stall_cycles) << what << ": triangle " << a.tri;
   }
+  // Every column, the stage breakdown too, equals the SystemC model's (docs/timing.md, "Outputs").
+  EngineResult sc;
+  make_model_engine()->run(setup, cfg, sc);
+  ASSERT_EQ(sc.cycles.size(), r.cycles.size()) << what;
+  size_t mismatches = 0;
+  for (size_t p = 0; p < r.cycles.size(); ++p)
+    if (!test::same_cycles(r.cycles[p], sc.cycles[p]) && mismatches++ < 3)
+      ADD_FAILURE() << what << ": triangle " << r.cycles[p].tri << " (" << test::kCyclesColumns
+                    << ") rtl (" << test::cycles_row(r.cycles[p]) << ") model ("
+                    << test::cycles_row(sc.cycles[p]) << ")";
+  EXPECT_EQ(mismatches, 0u) << what << ": triangles whose columns differ from the model's";
 }
 
 InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
