@@ -9,6 +9,9 @@
 //   bool early_retire(const Top&, size_t& tag)    a triangle leaving before the walk stage in this
 //                                                 cycle (no spans: a box outside the viewport,
 //                                                 a collinear triangle), and its tag
+//   void count(const Top&, ModuleCycles&)         its modules' busy and stall cycles of this cycle
+//                                                 (the model's names, docs/sc-model.md)
+//   void add_counters(const ModuleCycles&, work)  them as busy_cycles.* / stall_cycles.*
 //
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
 // applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
@@ -32,6 +35,14 @@
 
 namespace trirast {
 namespace rtl {
+
+// Busy and stall cycles of the RTL's modules, counted from the observation signals every cycle
+// (the unit's count()); the span FIFO's and the sink's are the loop's own.
+struct ModuleCycles {
+  uint64_t busy[16] = {}, stall[16] = {};
+};
+// Slots of ModuleCycles the loop fills itself.
+enum : int { kModSpanFifo = 14, kModSpanSink = 15 };
 
 struct CycleCounts {
   uint64_t walk_stalls = 0;        // cycles the walk stage waited for FIFO room
@@ -118,6 +129,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   };
 
   CycleCounts counts;
+  ModuleCycles mods;
   size_t next = 0;  // the triangle on the port
   offer(next);
   uint64_t last_progress = 0;
@@ -157,6 +169,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     if (top->walk_stall_o) {
       ++out.cycles[known(top->walk_tag_o, "walk stall")].stall_cycles;
       ++counts.walk_stalls;
+    }
+    unit.count(*top, mods);
+    if (top->span_valid_o) {
+      ++mods.busy[kModSpanFifo];
+      ++(top->span_ready_i ? mods.busy : mods.stall)[kModSpanSink];
     }
     if (top->walk_last_o) {
       const size_t p = known(top->walk_tag_o, "last walk step");
@@ -230,6 +247,10 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   out.work["walk_stall_cycles"] += counts.walk_stalls;
   out.work["total_cycles"] = out.total_cycles;
   out.work["rtl_x_seed"] = x_seed;
+  unit.add_counters(mods, out.work);
+  out.work["busy_cycles.span_fifo"] += mods.busy[kModSpanFifo];
+  out.work["busy_cycles.span_sink"] += mods.busy[kModSpanSink];
+  out.work["stall_cycles.span_sink"] += mods.stall[kModSpanSink];
   return counts;
 }
 
