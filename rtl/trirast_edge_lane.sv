@@ -76,7 +76,8 @@ module trirast_edge_lane (
   logic [RemBits-1:0] ee_q, ee_d;
 
   // The divider.
-  logic div_en, div_busy, div_last, div_sat;
+  logic div_en /* verilator public_flat_rd */;  // counted by the harness: divider busy cycles
+  logic div_busy, div_last, div_sat;
   logic [NumerBits-1:0] div_n;
   logic [StepBits-1:0] div_d;
   logic [QuotBits-1:0] div_quot;  // the divider's quotient

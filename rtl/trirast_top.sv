@@ -75,7 +75,11 @@ module trirast_top #(
   logic [3*RowBits-1:0] hand_j_entry;
   logic [5:0] hand_entry_state;
   logic [3*XBits-1:0] hand_entry_x;
-  logic [2:0] setup_state, lane_busy, lane_div;
+  // Observation signals (the trace; the harness counts module busy cycles from them, hence
+  // public: Verilator keeps them even in a build without tracing).
+  logic [2:0] setup_state /* verilator public_flat_rd */;
+  logic [2:0] lane_busy /* verilator public_flat_rd */;
+  logic [2:0] lane_div;
   logic [RowBits-1:0] walk_row;
 
   trirast_setup_stage u_setup (

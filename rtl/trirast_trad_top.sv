@@ -61,7 +61,8 @@ module trirast_trad_top #(
   logic hand_valid, hand_ready;
   logic [TagBits-1:0] hand_tag;
   logic [3*CBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
-  logic [2:0] hand_sx_neg, hand_x_major, setup_state;
+  logic [2:0] hand_sx_neg, hand_x_major;
+  logic [2:0] setup_state /* verilator public_flat_rd */;  // observation (trace, busy counts)
   logic [3*DecBits-1:0] hand_d0;
 
   trirast_trad_setup_stage u_setup (

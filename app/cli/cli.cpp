@@ -230,6 +230,8 @@ Json timing_json(const EngineResult& r, uint64_t triangles, uint64_t spans, int6
       .set("pixels_per_cycle", cycles > 0 ? pixels / cycles : 0.0);
   auto it = r.work.find("sim_cycles_per_second");
   if (it != r.work.end()) t.set("sim_cycles_per_second", it->second);
+  it = r.work.find("sim_cycles_per_cpu_second");
+  if (it != r.work.end()) t.set("sim_cycles_per_cpu_second", it->second);
   Json modules = Json::object();
   for (const auto& [name, bs] : module_cycles(r))
     modules.set(name, Json::object().set("busy", bs.first).set("stall", bs.second));
@@ -365,7 +367,11 @@ int cmd_raster(int argc, char** argv) {
                 (unsigned long long)run.result.total_cycles, ls.setup.counts.accepted / c,
                 run.result.spans.size() / c, pixels / c);
     auto sim = run.result.work.find("sim_cycles_per_second");
-    if (sim != run.result.work.end())
+    auto sim_cpu = run.result.work.find("sim_cycles_per_cpu_second");
+    if (sim != run.result.work.end() && sim_cpu != run.result.work.end())
+      std::printf("  simulated  %.1f M cycles per wall-clock second, %.1f M per CPU second\n",
+                  sim->second / 1e6, sim_cpu->second / 1e6);
+    else if (sim != run.result.work.end())
       std::printf("  simulated  %.1f M cycles per wall-clock second\n", sim->second / 1e6);
     std::printf("  %-26s %12s %12s\n", "module", "busy", "stall");
     for (const auto& [name, bs] : module_cycles(run.result))

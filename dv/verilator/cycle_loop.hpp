@@ -9,6 +9,9 @@
 //   bool early_retire(const Top&, size_t& tag)    a triangle leaving before the walk stage in this
 //                                                 cycle (no spans: a box outside the viewport,
 //                                                 a collinear triangle), and its tag
+//   void count(const Top&, ModuleCycles&)         its modules' busy and stall cycles of this cycle
+//                                                 (the model's names, docs/sc-model.md)
+//   void add_counters(const ModuleCycles&, work)  them as busy_cycles.* / stall_cycles.*
 //   void observe_setup(const Top&, TriangleCycles&)   every cycle a triangle is in the setup
 //                                                 stage: its lanes' divider and boundary work
 //   void observe_handoff(const Top&, TriangleCycles&) in its hand-off cycle: its box size
@@ -39,6 +42,14 @@
 
 namespace trirast {
 namespace rtl {
+
+// Busy and stall cycles of the RTL's modules, counted from the observation signals every cycle
+// (the unit's count()); the span FIFO's and the sink's are the loop's own.
+struct ModuleCycles {
+  uint64_t busy[16] = {}, stall[16] = {};
+};
+// Slots of ModuleCycles the loop fills itself.
+enum : int { kModSpanFifo = 14, kModSpanSink = 15 };
 
 struct CycleCounts {
   uint64_t walk_stalls = 0;        // cycles the walk stage waited for FIFO room
@@ -127,6 +138,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   };
 
   CycleCounts counts;
+  ModuleCycles mods;
   size_t next = 0;  // the triangle on the port
   // The triangle in the setup stage (from its accept to its hand-off or early retirement; n:
   // none), whether its first non-idle and first StHold cycles were seen, and the triangle whose
@@ -203,6 +215,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
       ++out.cycles[known(top->walk_tag_o, "walk stall")].stall_cycles;
       ++counts.walk_stalls;
     }
+    unit.count(*top, mods);
+    if (top->span_valid_o) {
+      ++mods.busy[kModSpanFifo];
+      ++(top->span_ready_i ? mods.busy : mods.stall)[kModSpanSink];
+    }
     if (top->walk_last_o) {
       const size_t p = known(top->walk_tag_o, "last walk step");
       out.cycles[p].walk_end_cycle = c;
@@ -276,6 +293,10 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   out.work["walk_stall_cycles"] += counts.walk_stalls;
   out.work["total_cycles"] = out.total_cycles;
   out.work["rtl_x_seed"] = x_seed;
+  unit.add_counters(mods, out.work);
+  out.work["busy_cycles.span_fifo"] += mods.busy[kModSpanFifo];
+  out.work["busy_cycles.span_sink"] += mods.busy[kModSpanSink];
+  out.work["stall_cycles.span_sink"] += mods.stall[kModSpanSink];
   return counts;
 }
 

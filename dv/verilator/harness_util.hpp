@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "core/temporary_files.hpp"
 
@@ -29,9 +30,17 @@ struct Bits {
   }
 };
 
+// A port of up to 64 bits is a scalar in the Verilated model (narrow configurations), a wider
+// one an array of 32-bit words.
 template <class Port, int Words>
 void drive(Port& port, const Bits<Words>& b, int n_words) {
-  for (int i = 0; i < n_words; ++i) port[i] = b.w[i];
+  if constexpr (std::is_integral_v<Port>) {
+    uint64_t v = b.w[0];
+    if (n_words > 1) v |= uint64_t(b.w[1]) << 32;
+    port = Port(v);
+  } else {
+    for (int i = 0; i < n_words; ++i) port[i] = b.w[i];
+  }
 }
 
 inline bool ends_with(const std::string& s, const std::string& suffix) {

@@ -16,6 +16,7 @@
 #include "core/setup.hpp"
 #include "core/sink_pattern.hpp"
 #include "golden/golden.hpp"
+#include "sc/sc_engine.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "scene/scene.hpp"
 #include "reference/cycle_columns.hpp"
@@ -241,15 +242,66 @@ TEST(RtlConfig, UnbuiltWidthsAreRejectedNamingTheOption) {
     }
     return std::string("no error");
   };
+  // Built: 8:16:14, 4:12:10, 8:20:14, 0:8:6 (docs/synth.md); S = 5, coord 13, box 11 are not.
   RasterConfig c = base;
-  c.subpixel_bits = 4;
+  c.subpixel_bits = 5;
   EXPECT_NE(message(c).find("--subpixel-bits"), std::string::npos) << message(c);
   c = base;
-  c.coord_int_bits = 12;
+  c.coord_int_bits = 13;
   EXPECT_NE(message(c).find("--coord-bits"), std::string::npos) << message(c);
   c = base;
-  c.box_bits = 10;
+  c.box_bits = 11;
   EXPECT_NE(message(c).find("--box-bits"), std::string::npos) << message(c);
+}
+
+// Every width configuration docs/synth.md names has a Verilated build: the RTL's spans equal the
+// golden's there (scripts/synth.sh CONFIGS; dv/verilator/CMakeLists.txt).
+TEST(RtlConfig, EveryDocumentedWidthConfigurationRuns) {
+  const int configs[][3] = {{8, 16, 14}, {4, 12, 10}, {8, 20, 14}, {0, 8, 6}};
+  for (const auto& w : configs) {
+    RasterConfig cfg = default_cfg();
+    cfg.subpixel_bits = w[0];
+    cfg.coord_int_bits = w[1];
+    cfg.box_bits = w[2];
+    cfg.width = 64;
+    cfg.height = 48;
+    const SetupResult setup =
+        setup_scene({tri(1, 1, 40, 2, 3, 30), tri(10, 40, 60, 5, 50, 44)}, cfg);
+    EngineResult r;
+    ASSERT_NO_THROW(r = run_rtl(setup, cfg)) << w[0] << ":" << w[1] << ":" << w[2];
+    EngineResult g;
+    make_golden_engine()->run(setup, cfg, g);
+    sort_spans(r.spans);
+    sort_spans(g.spans);
+    EXPECT_EQ(r.spans, g.spans) << w[0] << ":" << w[1] << ":" << w[2];
+    EXPECT_GT(r.spans.size(), 0u);
+  }
+}
+
+// The RTL's module table equals the SystemC model's where the hardware has the module (all but
+// the edge walkers' Bresenham step counts), also with a stalling sink and N = 4.
+TEST(RtlStats, ModuleCyclesEqualTheModel) {
+  for (const char* stall : {"none", "random:7:30"}) {
+    for (int n : {1, 4}) {
+      RasterConfig cfg = default_cfg();
+      cfg.sink_stall = stall;
+      cfg.endpoints = n;
+      const SetupResult setup = setup_scene(
+          {tri(1, 1, 90, 2, 3, 80), tri(10, 40, 60, 5, 50, 44), tri(-5, -5, -1, -2, -3, -1)}, cfg);
+      const EngineResult r = run_rtl(setup, cfg);
+      EngineResult m;
+      make_model_engine()->run(setup, cfg, m);
+      int compared = 0;
+      for (const auto& [key, v] : m.work) {
+        if (key.rfind("busy_cycles.", 0) != 0 && key.rfind("stall_cycles.", 0) != 0) continue;
+        if (key.find("edge_walker") != std::string::npos) continue;
+        ASSERT_TRUE(r.work.count(key)) << key;
+        EXPECT_EQ(r.work.at(key), v) << key << " sink " << stall << " N=" << n;
+        ++compared;
+      }
+      EXPECT_GE(compared, 12);
+    }
+  }
 }
 
 TEST(RtlConfig, QuotientTruncationIsRejectedNamingTheOption) {

@@ -173,12 +173,12 @@ TEST(RtlTrad, IndependentOfTheXSeed) {
 
 TEST(RtlTrad, RefusesUnbuiltWidths) {
   RasterConfig cfg;
-  cfg.subpixel_bits = 4;
+  cfg.subpixel_bits = 5;  // no build (docs/synth.md: S = 8, 4, 0)
   cfg.validate();
   EngineResult r;
   try {
     rtl::run_rtl_trad(SetupResult{}, cfg, rtl::RtlRunOptions{}, r);
-    FAIL() << "accepted --subpixel-bits 4";
+    FAIL() << "accepted --subpixel-bits 5";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--subpixel-bits"), std::string::npos) << e.what();
   }
