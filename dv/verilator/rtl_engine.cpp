@@ -125,7 +125,7 @@ void run_rtl(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOpti
   }
 
   ImprovedPorts ports;
-  run_cycles<Vtrirast_top>(setup, cfg, opt.x_seed, "rtl", "trirast_top", ports, out);
+  run_cycles<Vtrirast_top>(setup, cfg, opt.x_seed, "improved-rtl", "trirast_top", ports, out);
 }
 
 }  // namespace rtl

@@ -92,8 +92,8 @@ void run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, const RtlRu
     }
 
   TradPorts ports;
-  const CycleCounts counts =
-      run_cycles<Vtrirast_trad_top>(setup, cfg, opt.x_seed, "rtl-trad", "trirast_trad_top", ports, out);
+  const CycleCounts counts = run_cycles<Vtrirast_trad_top>(setup, cfg, opt.x_seed, "trad-rtl",
+                                                           "trirast_trad_top", ports, out);
   out.work["trad_collinear"] += counts.early_retirements;
 }
 
