@@ -70,8 +70,8 @@ def symlog_x(ax):
     ax.set_xlim(left=-0.3)
 
 
-COLORS = {"model": "tab:blue", "trad": "tab:red", "rtl": "tab:green", "float-scanline": "tab:purple",
-          "golden": "black", "unit": "tab:cyan"}
+COLORS = {"improved-sc": "tab:blue", "trad-sc": "tab:red", "improved-rtl": "tab:green",
+          "float-scanline": "tab:purple", "golden": "black", "improved-datapath": "tab:cyan"}
 MARKERS = {"S x N x K": "o", "box bits": "s", "coord bits": "^", "fixed divider": "v",
            "boundary divide": "D", "synthesized": "*", "narrow": "P", "traditional": "X",
            "RTL": "h", "CPU baseline": "d", "reference": "o"}
@@ -144,8 +144,8 @@ def main():
     # Error against subpixel bits.
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for engine, cfg_of, label in [
-            ("model", lambda S: f"S{S} c16 b14 K- N1", "improved unit (the exact rule at S)"),
-            ("trad", lambda S: f"S{S} c16", "traditional Bresenham"),
+            ("improved-sc", lambda S: f"S{S} c16 b14 K- N1", "improved unit (the exact rule at S)"),
+            ("trad-sc", lambda S: f"S{S} c16", "traditional Bresenham"),
             ("float-scanline", lambda S: f"S{S} c16", "float scanline (CPU)")]:
         xs, ys = [], []
         for S in range(0, 9):
@@ -166,7 +166,7 @@ def main():
     plt.close(fig)
 
     # Improved vs traditional cycles per scene.
-    imp, trad = find(points, "model", DEFAULT_CONFIG), find(points, "trad", TRAD_DEFAULT)
+    imp, trad = find(points, "improved-sc", DEFAULT_CONFIG), find(points, "trad-sc", TRAD_DEFAULT)
     cmp_rows = []
     if imp and trad:
         labels, ic, tc = [], [], []
@@ -179,10 +179,10 @@ def main():
                 cmp_rows.append((sc, a, b))
         fig, ax = plt.subplots(figsize=(9, 4.5))
         x = range(len(labels))
-        ax.bar([i - 0.2 for i in x], ic, width=0.4, label="improved (model, default)",
-               color=COLORS["model"])
-        ax.bar([i + 0.2 for i in x], tc, width=0.4, label="traditional (trad, S = 8)",
-               color=COLORS["trad"])
+        ax.bar([i - 0.2 for i in x], ic, width=0.4, label="improved (improved-sc, default)",
+               color=COLORS["improved-sc"])
+        ax.bar([i + 0.2 for i in x], tc, width=0.4, label="traditional (trad-sc, S = 8)",
+               color=COLORS["trad-sc"])
         ax.set_yscale("log")
         ax.set_xticks(list(x))
         ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=7)
@@ -390,8 +390,8 @@ def main():
         rows.append(["**all scenes**", fmt_int(ti), fmt_int(tt), f"**{gain_all:+.1f}%**", "", ""])
         rows.append(["**median of the scenes**", "", "", f"**{gain_median:+.1f}%**", "", ""])
         rows.append(["*paper* (Zhang & Ruan)", "", "", f"*about +{PAPER_SPEEDUP_PCT}%*", "", ""])
-        L.append(f"Improved = `model {DEFAULT_CONFIG}` (the default), traditional = "
-                 f"`trad {TRAD_DEFAULT}`; \"improved vs trad\" is (trad - improved) / trad, "
+        L.append(f"Improved = `improved-sc {DEFAULT_CONFIG}` (the default), traditional = "
+                 f"`trad-sc {TRAD_DEFAULT}`; \"improved vs trad\" is (trad - improved) / trad, "
                  "positive when the improved unit needs fewer cycles.\n")
         L.append(table(["scene", "improved cycles", "trad cycles", "improved vs trad",
                         "improved cyc/tri", "trad cyc/tri"], rows,
@@ -439,7 +439,7 @@ def main():
     rows = []
     for S in (8, 6, 4, 2, 0):
         row = [f"S = {S}"]
-        for engine, cfg in (("model", f"S{S} c16 b14 K- N1"), ("trad", f"S{S} c16"),
+        for engine, cfg in (("improved-sc", f"S{S} c16 b14 K- N1"), ("trad-sc", f"S{S} c16"),
                             ("float-scanline", f"S{S} c16")):
             p = find(points, engine, cfg)
             if p is None:
@@ -489,23 +489,23 @@ def main():
                 "saturated quotient as \"beyond the box\": boxes wider or taller than about 2^K "
                 "pixels lose or gain pixels. Fewer quotient bits also mean fewer divider "
                 "iterations (cycles).",
-                lambda p: p["engine"] == "model" and p["group"] == "S x N x K"
+                lambda p: p["engine"] == "improved-sc" and p["group"] == "S x N x K"
                 and p["config"].startswith("S8 ") and p["config"].endswith("N1"))
     group_table("Divider width: box bits (the divider's Q = box bits + 1)",
                 "A box wider or taller than 2^box_bits pixels is rejected by the unit's interface. "
                 "Boxes are clipped to the 1024 x 768 viewport, so 10 bits hold every box.",
-                lambda p: p["engine"] == "model" and (p["group"] == "box bits"
+                lambda p: p["engine"] == "improved-sc" and (p["group"] == "box bits"
                                                       or p["config"] == DEFAULT_CONFIG))
     group_table("Coordinate width",
                 "A vertex outside [-2^(c-1), 2^(c-1)) pixels rejects its triangle; a 1024-pixel "
                 "viewport needs c >= 11.",
-                lambda p: p["engine"] == "model" and (p["group"] == "coord bits"
+                lambda p: p["engine"] == "improved-sc" and (p["group"] == "coord bits"
                                                       or p["config"] in (DEFAULT_CONFIG,
                                                                          "S4 c16 b14 K- N1")))
     group_table("Endpoints per cycle N (S = 8), divider and boundary modes",
                 "N does not change the output; it trades walk-stage area for cycles, which help "
                 "only where the walk, not the set-up, is the bottleneck.",
-                lambda p: p["engine"] in ("model", "rtl") and (
+                lambda p: p["engine"] in ("improved-sc", "improved-rtl") and (
                     (p["group"] == "S x N x K" and p["config"].startswith("S8 ")
                      and " K- " in p["config"]) or p["group"] in ("fixed divider",
                                                                  "boundary divide", "RTL")))
@@ -515,15 +515,15 @@ def main():
                 "The float scanline (after the devlog \"Software rasterization: a fast and exact "
                 "triangle rasterization algorithm in C\") runs on the CPU: no cycles, no area; its wall time "
                 "is a ratio to the golden's in this run.",
-                lambda p: p["engine"] in ("trad", "float-scanline", "golden"))
+                lambda p: p["engine"] in ("trad-sc", "float-scanline", "golden"))
 
     # Cracks on closed meshes per scene.
     closed = [i for i, sc in enumerate(scenes) if sc["closed"]]
     if closed:
         L.append("## Cracks and double hits on the closed meshes, per scene\n")
-        picks = [("golden", "S8 c16"), ("model", DEFAULT_CONFIG), ("model", "S0 c16 b14 K- N1"),
-                 ("model", "S8 c16 b14 K6 N1"), ("model", "S8 c16 b14 K4 N1"),
-                 ("trad", "S8 c16"), ("trad", "S0 c16"), ("float-scanline", "S8 c16"),
+        picks = [("golden", "S8 c16"), ("improved-sc", DEFAULT_CONFIG), ("improved-sc", "S0 c16 b14 K- N1"),
+                 ("improved-sc", "S8 c16 b14 K6 N1"), ("improved-sc", "S8 c16 b14 K4 N1"),
+                 ("trad-sc", "S8 c16"), ("trad-sc", "S0 c16"), ("float-scanline", "S8 c16"),
                  ("float-scanline", "S0 c16")]
         rows = []
         for engine, cfg in picks:

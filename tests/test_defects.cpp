@@ -58,7 +58,7 @@ void expect_wrote_lines_true(const std::string& out, time_t since) {
 // ---- 1. --trace file types and the save file -----------------------------------------------
 TEST(DefectTrace, ScEngineFstIsARealFstWithItsSaveFile) {
   TempDir dir;
-  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine model --trace " +
+  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine improved-sc --trace " +
                                       dir.file("x.fst"));
   if (r.status == 2) {  // refusing .fst is allowed: one line naming --trace, nothing written
     EXPECT_NE(r.err.find("--trace"), std::string::npos) << r.err;
@@ -85,7 +85,7 @@ TEST(DefectTrace, WroteLinesNameOnlyFilesOfThisRun) {
   struct utimbuf old_time = {1000000000, 1000000000};
   utime(dir.file("t.gtkw").c_str(), &old_time);
   const time_t start = time(nullptr) - 1;
-  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine rtl --trace " +
+  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine improved-rtl --trace " +
                                       dir.file("t.vcd"));
   ASSERT_EQ(r.status, 0) << r.err;
   expect_wrote_lines_true(r.out, start);
@@ -93,7 +93,7 @@ TEST(DefectTrace, WroteLinesNameOnlyFilesOfThisRun) {
 
 TEST(DefectTrace, UntimedEngineRefusesTrace) {
   TempDir dir;
-  for (const char* engine : {"golden", "unit", "float-scanline"}) {
+  for (const char* engine : {"golden", "improved-datapath", "float-scanline"}) {
     const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine " +
                                         engine + " --trace " + dir.file("u.vcd"));
     EXPECT_EQ(r.status, 2) << engine << ": " << r.out;
@@ -117,7 +117,7 @@ TEST(DefectInterrupt, RtlTraceLeavesNothing) {
   for (const char* name : {"a.vcd", "a.fst"}) {
     for (int sig : {SIGINT, SIGTERM}) {
       TempDir dir;
-      const auto r = run_and_signal(kBin + " raster --scene builtin:highpoly-near --engine rtl --trace " +
+      const auto r = run_and_signal(kBin + " raster --scene builtin:highpoly-near --engine improved-rtl --trace " +
                                         dir.file(name),
                                     1.5, sig);
       expect_interrupted(r, sig);
@@ -138,7 +138,7 @@ TEST(DefectInterrupt, SweepLeavesNoOutputFolder) {
 
 TEST(DefectInterrupt, ScTraceLeavesNothing) {
   TempDir dir;
-  const auto r = run_and_signal(kBin + " raster --scene builtin:highpoly-near --engine model --trace " +
+  const auto r = run_and_signal(kBin + " raster --scene builtin:highpoly-near --engine improved-sc --trace " +
                                     dir.file("m.vcd"),
                                 0.8, SIGTERM);
   expect_interrupted(r, SIGTERM);
@@ -176,7 +176,7 @@ TEST(DefectFit, WarnsWhenItFallsBackToTheEstimate) {
 // ---- 4. options silently accepted -------------------------------------------------------------
 TEST(DefectOptions, TraceTrisBeyondTheScene) {
   TempDir dir;
-  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine model --trace " +
+  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine improved-sc --trace " +
                                       dir.file("w.vcd") + " --trace-tris 5000:6000");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--trace-tris"), std::string::npos) << r.err;
@@ -189,7 +189,7 @@ TEST(DefectOptions, TraceTrisBeyondTheScene) {
 }
 
 TEST(DefectOptions, TraceTrisWithoutTrace) {
-  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine model --trace-tris 0:3");
+  const CommandResult r = run_command(kBin + " raster --scene builtin:lowpoly-far --engine improved-sc --trace-tris 0:3");
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("--trace-tris"), std::string::npos) << r.err;
 }
@@ -291,11 +291,11 @@ TEST(DefectDiffImage, SmallErrorsAreVisibleForEveryInexactEngine) {
   TempDir dir;
   const std::string scene = kSrc + "/tests/data/two_tris.tri";
   const CommandResult r =
-      run_command(kBin + " compare --scene " + scene + " --engines golden,float-scanline,trad --diff-image " +
+      run_command(kBin + " compare --scene " + scene + " --engines golden,float-scanline,trad-sc --diff-image " +
                   dir.file("d.png") + " --report " + dir.file("r.json"));
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string json = slurp(dir.file("r.json"));
-  for (const char* engine : {"float-scanline", "trad"}) {
+  for (const char* engine : {"float-scanline", "trad-sc"}) {
     const size_t at = json.find("\"engine\": \"" + std::string(engine) + "\"");
     ASSERT_NE(at, std::string::npos);
     const int64_t differing = json_int(json, "missing_pixels", at) + json_int(json, "extra_pixels", at);
@@ -320,13 +320,13 @@ TEST(DefectReport, EveryStatisticHasADescription) {
   TempDir dir;
   const std::string scene = " --scene builtin:lowpoly-far --width 160 --height 120";
   std::vector<std::string> reports;
-  for (const char* engine : {"golden", "unit", "model", "rtl", "trad", "rtl-trad", "float-scanline"}) {
+  for (const char* engine : {"golden", "improved-datapath", "improved-sc", "improved-rtl", "trad-sc", "trad-rtl", "float-scanline"}) {
     const std::string path = dir.file(std::string(engine) + ".json");
     const CommandResult r = run_command(kBin + " raster --engine " + engine + scene + " --report " + path);
     ASSERT_EQ(r.status, 0) << engine << ": " << r.err;
     reports.push_back(path);
   }
-  const CommandResult c = run_command(kBin + " compare --engines golden,unit,model,rtl,trad,rtl-trad,float-scanline" +
+  const CommandResult c = run_command(kBin + " compare --engines golden,improved-datapath,improved-sc,improved-rtl,trad-sc,trad-rtl,float-scanline" +
                                       scene + " --report " + dir.file("compare.json"));
   ASSERT_LE(c.status, 1) << c.err;
   reports.push_back(dir.file("compare.json"));

@@ -1,4 +1,4 @@
-// Differential fuzzing (issue 7): the reproducers in tests/fuzz-regressions/ through every exact
+// Differential fuzzing: the reproducers in tests/fuzz-regressions/ through every exact
 // engine, the scene generator's promises (every hard-case class, valid varied configurations,
 // deterministic), an in-process differential run, and `trirast fuzz` as a user meets it.
 #include <gtest/gtest.h>
@@ -26,20 +26,14 @@ namespace trirast {
 namespace {
 
 using test::CommandResult;
+using test::count_lines;
+using test::exact_engines;
+using test::kBin;
 using test::run_command;
+using test::slurp;
 using test::TempDir;
 
-const std::string kBin = TRIRAST_BIN;
 const std::string kRegressions = std::string(TRIRAST_SOURCE_DIR) + "/tests/fuzz-regressions/";
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 std::vector<std::string> files_in(const std::string& dir, const std::string& suffix) {
   std::vector<std::string> out;
@@ -52,15 +46,6 @@ std::vector<std::string> files_in(const std::string& dir, const std::string& suf
     closedir(d);
   }
   std::sort(out.begin(), out.end());
-  return out;
-}
-
-// Every exact engine this build holds (the golden included), each name once.
-std::vector<const EngineInfo*> exact_engines() {
-  std::vector<const EngineInfo*> out;
-  std::set<std::string> seen;
-  for (const EngineInfo& e : engine_registry())
-    if (e.exact && seen.insert(e.name).second) out.push_back(&e);
   return out;
 }
 
@@ -121,7 +106,8 @@ TEST(FuzzRegressions, ReproducerFormatReadsBackBitForBit) {
   for (int i = 0; i < 300; ++i) {
     const RasterConfig cfg = draw_fuzz_config(d);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(d, cfg, 40);
-    const std::string text = format_reproducer(tris, cfg, {"golden", "unit"}, "line one\nline two");
+    const std::string text =
+        format_reproducer(tris, cfg, {"golden", "improved-datapath"}, "line one\nline two");
     const Scene back = parse_tri_text(text, "r.tri");
     ASSERT_EQ(back.tris.size(), tris.size());
     for (size_t t = 0; t < tris.size(); ++t)
@@ -263,7 +249,7 @@ TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
   EXPECT_GT(pixels, 1000000u);
   // Only an engine built for fixed widths skips, and it still runs a good share of the scenes.
   for (const auto& [engine, n] : skipped) {
-    EXPECT_EQ(engine, "rtl");
+    EXPECT_EQ(engine, "improved-rtl");
     EXPECT_LT(n, 3000 * 7 / 10) << engine;
   }
 }
@@ -356,8 +342,9 @@ TEST(FuzzCli, ShortRunOverAllEnginesAgreesAndReportsProgress) {
 
 TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
   TempDir dir;
-  const CommandResult r = run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit " +
-                                      "--inject-fault unit --out " + dir.path());
+  const CommandResult r =
+      run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath " +
+                  "--inject-fault improved-datapath --out " + dir.path());
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_NE(r.err.find("DISAGREEMENT in scene "), std::string::npos) << r.err;
   const std::vector<std::string> files = files_in(dir.path(), ".tri");
@@ -366,28 +353,33 @@ TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
     SCOPED_TRACE(f);
     EXPECT_EQ(f.rfind("fuzz-3-", 0), 0u);
     const std::string text = slurp(dir.file(f));
-    EXPECT_NE(text.find("# engines: golden,unit\n"), std::string::npos) << text;
-    EXPECT_NE(text.find("unit disagrees with golden: missing 1, extra 0 pixels"), std::string::npos)
+    EXPECT_NE(text.find("# engines: golden,improved-datapath\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("improved-datapath disagrees with golden: missing 1, extra 0 pixels"),
+              std::string::npos)
         << text;
     // The reproducer is reduced to the triangle that lost its pixel, and its configuration reads
     // back; replayed without the fault, the engines agree.
     const Scene s = parse_tri_text(text, f);
     EXPECT_EQ(s.tris.size(), 1u) << text;
     const RasterConfig cfg = parse_reproducer_config(text);
-    const CommandResult replay = run_command(kBin + " compare --scene " + dir.file(f) +
-                                             " --engines golden,unit " + config_options(cfg));
+    const CommandResult replay =
+        run_command(kBin + " compare --scene " + dir.file(f) +
+                    " --engines golden,improved-datapath " + config_options(cfg));
     EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
   }
   // The same seed finds the same scenes.
   TempDir again;
-  run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit --inject-fault unit --out " +
+  run_command(kBin +
+              " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath --inject-fault "
+              "improved-datapath --out " +
               again.path());
   ASSERT_EQ(files_in(again.path(), ".tri"), files);
   for (const std::string& f : files) EXPECT_EQ(slurp(again.file(f)), slurp(dir.file(f)));
   // --max-reproducers caps the files, not the count.
   TempDir capped;
-  const CommandResult c = run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit " +
-                                      "--inject-fault unit --max-reproducers 1 --out " + capped.path());
+  const CommandResult c =
+      run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath " +
+                  "--inject-fault improved-datapath --max-reproducers 1 --out " + capped.path());
   EXPECT_EQ(c.status, 1);
   EXPECT_EQ(capped.entry_count(), 1);
   EXPECT_NE(c.out.find(std::to_string(files.size()) + " disagreements"), std::string::npos) << c.out;
@@ -410,7 +402,7 @@ TEST(FuzzCli, BadOptionsOneLineErrorNoFiles) {
       {"--seed 12ab" + out, "--seed"},
       {"--seed 99999999999999999999999" + out, "--seed"},
       {"--engines golden,nosuch" + out, "nosuch"},
-      {"--engines golden,trad" + out, "trad"},
+      {"--engines golden,trad-sc" + out, "trad-sc"},
       {"--engines golden" + out, "--engines"},
       {"--engines ''" + out, "--engines"},
       {"--inject-fault golden" + out, "--inject-fault"},

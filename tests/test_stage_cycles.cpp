@@ -57,7 +57,7 @@ std::string slurp(const std::string& path) {
 
 TEST(CliStageCycles, CsvKeepsItsColumnsAndAppendsTheBreakdown) {
   TempDir dir;
-  for (const char* engine : {"model", "trad"}) {
+  for (const char* engine : {"improved-sc", "trad-sc"}) {
     const std::string csv = dir.file(std::string(engine) + ".csv");
     CommandResult r = run_command(kBin + " raster --scene " + kScene + kView + " --engine " + engine +
                                   " --cycles " + csv);
@@ -88,7 +88,7 @@ TEST(CliStageCycles, CsvKeepsItsColumnsAndAppendsTheBreakdown) {
         }
         EXPECT_GE(c.walk_end_cycle + 1 - c.walk_start_cycle, c.stall_cycles) << c.tri;
         EXPECT_GT(c.box_width * c.box_height, 0u) << c.tri;
-        if (std::string(engine) == "model") {
+        if (std::string(engine) == "improved-sc") {
           EXPECT_GT(c.divider_iterations, 0u) << c.tri;
         }
         held += c.handoff_cycle > c.setup_done_cycle;
@@ -107,7 +107,7 @@ TEST(CliStageCycles, CsvKeepsItsColumnsAndAppendsTheBreakdown) {
 // ended in that cycle, and the explained one was handed off the cycle after.
 TEST(CliStageCycles, ExplainNamesWhatATriangleWaitedFor) {
   const RasterConfig cfg = view_cfg();
-  const EngineResult in = run_in_process("model", setup_of(kScene, cfg), cfg);
+  const EngineResult in = run_in_process("improved-sc", setup_of(kScene, cfg), cfg);
   // The triangle that waited longest in StHold.
   size_t worst = 0;
   uint64_t worst_hold = 0;
@@ -127,7 +127,7 @@ TEST(CliStageCycles, ExplainNamesWhatATriangleWaitedFor) {
   EXPECT_EQ(in.cycles[prev].walk_end_cycle, c.handoff_cycle - 1);  // what the line must say
 
   CommandResult r = run_command(kBin + " compare --scene " + kScene + kView +
-                                " --engines model,rtl --explain " + std::to_string(c.tri));
+                                " --engines improved-sc,improved-rtl --explain " + std::to_string(c.tri));
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string want = std::to_string(worst_hold) + " cycles in StHold: walk stage busy with triangle " +
                            std::to_string(in.cycles[prev].tri) + " until cycle " +
@@ -146,22 +146,22 @@ TEST(CliStageCycles, ExplainNamesWhatATriangleWaitedFor) {
           << line;
       EXPECT_NE(line.find("hand-off " + std::to_string(c.handoff_cycle)), std::string::npos) << line;
     }
-  EXPECT_EQ(lines, 2u) << "one line for model, one for rtl:\n" << r.out;
-  EXPECT_NE(r.out.find("per-triangle cycles: model = rtl agree on all 16 columns"), std::string::npos)
+  EXPECT_EQ(lines, 2u) << "one line for improved-sc, one for improved-rtl:\n" << r.out;
+  EXPECT_NE(r.out.find("per-triangle cycles: improved-sc = improved-rtl agree on all 16 columns"), std::string::npos)
       << r.out;
 }
 
 TEST(CliStageCycles, SlowestNamesTheTrianglesWithTheMostCycles) {
   const RasterConfig cfg = view_cfg();
-  const EngineResult in = run_in_process("trad", setup_of(kScene, cfg), cfg);
+  const EngineResult in = run_in_process("trad-sc", setup_of(kScene, cfg), cfg);
   const std::vector<size_t> slow = slowest_triangles(in.cycles, 3);
   ASSERT_EQ(slow.size(), 3u);
   for (const TriangleCycles& c : in.cycles) EXPECT_LE(latency(c), latency(in.cycles[slow[0]]));
   TempDir dir;
   CommandResult r = run_command(kBin + " compare --scene " + kScene + kView +
-                                " --engines trad,rtl-trad --slowest 3 --cycles " + dir.file("j.csv"));
+                                " --engines trad-sc,trad-rtl --slowest 3 --cycles " + dir.file("j.csv"));
   ASSERT_EQ(r.status, 0) << r.err;
-  size_t at = r.out.find("slowest 3 triangles of trad");
+  size_t at = r.out.find("slowest 3 triangles of trad-sc");
   ASSERT_NE(at, std::string::npos) << r.out;
   for (size_t p : slow) {
     const std::string head = "triangle " + std::to_string(in.cycles[p].tri) + ": " +
@@ -172,8 +172,8 @@ TEST(CliStageCycles, SlowestNamesTheTrianglesWithTheMostCycles) {
   }
   // The joined file: both engines' columns, no mismatch.
   const std::string joined = slurp(dir.file("j.csv"));
-  EXPECT_EQ(joined.rfind("tri,trad.accept_cycle,", 0), 0u);
-  EXPECT_NE(joined.find("rtl-trad.box_height,mismatch\n"), std::string::npos);
+  EXPECT_EQ(joined.rfind("tri,trad-sc.accept_cycle,", 0), 0u);
+  EXPECT_NE(joined.find("trad-rtl.box_height,mismatch\n"), std::string::npos);
   EXPECT_EQ(std::count(joined.begin(), joined.end(), '\n'), std::ptrdiff_t(in.cycles.size() + 1));
   EXPECT_EQ(joined.find("!="), std::string::npos);
 }
@@ -185,13 +185,13 @@ TEST(CliStageCycles, JoinedCyclesFlagAMismatch) {
   a[1].tri = b[1].tri = 9;
   b[1].handoff_cycle = 7;
   std::string first;
-  const std::vector<TimedCycles> runs = {{"model", &a}, {"rtl", &b}};
+  const std::vector<TimedCycles> runs = {{"improved-sc", &a}, {"improved-rtl", &b}};
   EXPECT_EQ(count_cycle_mismatches(runs, first), 1u);
-  EXPECT_EQ(first, "triangle 9 handoff_cycle: rtl 7, model 0");
+  EXPECT_EQ(first, "triangle 9 handoff_cycle: improved-rtl 7, improved-sc 0");
   const std::string csv = joined_cycles_csv(runs);
-  EXPECT_NE(csv.find(",rtl!=model\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",improved-rtl!=improved-sc\n"), std::string::npos) << csv;
   // Different units are not compared.
-  const std::vector<TimedCycles> units = {{"model", &a}, {"trad", &b}};
+  const std::vector<TimedCycles> units = {{"improved-sc", &a}, {"trad-sc", &b}};
   EXPECT_EQ(count_cycle_mismatches(units, first), 0u);
 }
 
@@ -224,7 +224,7 @@ TEST(CliStageCycles, ExportedWindowSetsUpTheSameTrianglesAndSpans) {
     EXPECT_EQ(x.swapped, y.swapped) << y.index;
   }
   // Rasterizing the file gives the window's spans, triangle k of the file being window[k].
-  r = run_command(kBin + " raster --scene " + tri + kView + " --engine model --spans " + dir.file("w.spans"));
+  r = run_command(kBin + " raster --scene " + tri + kView + " --engine improved-sc --spans " + dir.file("w.spans"));
   ASSERT_EQ(r.status, 0) << r.err;
   std::vector<std::string> want, got;
   {
@@ -257,7 +257,7 @@ TEST(CliStageCycles, HeatmapIsAPngWithALegendBelowTheViewport) {
   for (const char* metric : {"cycles", "stalls", "setup"}) {
     const std::string png = dir.file(std::string(metric) + ".png");
     CommandResult r = run_command(kBin + " raster --scene " + kScene + kView +
-                                  " --engine model --sink-stall periodic:1:1 --heatmap " + metric + ":" + png);
+                                  " --engine improved-sc --sink-stall periodic:1:1 --heatmap " + metric + ":" + png);
     ASSERT_EQ(r.status, 0) << r.err;
     const std::string data = slurp(png);
     ASSERT_GT(data.size(), 24u);
@@ -274,7 +274,7 @@ TEST(CliStageCycles, HeatmapIsAPngWithALegendBelowTheViewport) {
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("--heatmap: engine 'golden' is not timed"), std::string::npos) << bad.err;
   CommandResult worse = run_command(kBin + " raster --scene " + kScene + kView +
-                                    " --engine model --heatmap pixels:" + dir.file("g.png"));
+                                    " --engine improved-sc --heatmap pixels:" + dir.file("g.png"));
   EXPECT_EQ(worse.status, 2);
   EXPECT_NE(worse.err.find("--heatmap: expected cycles:FILE.png"), std::string::npos) << worse.err;
 }

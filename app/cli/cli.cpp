@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -12,11 +12,12 @@
 #include "cli/option_checks.hpp"
 #include "cli/scene_options.hpp"
 #include "core/engine.hpp"
-#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/temporary_files.hpp"
 #include "core/span_diff.hpp"
+#include "engines.hpp"
 #include "golden/golden.hpp"
+#include "io/cycles_file.hpp"
 #include "io/image.hpp"
 #include "io/json.hpp"
 #include "io/report_descriptions.hpp"
@@ -27,16 +28,12 @@
 #include "cli/slowest.hpp"
 #include "io/spans_file.hpp"
 #include "scene/scene.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 // The GTKWave save file a trace writer leaves beside FILE.vcd / FILE.fst.
 std::string gtkw_path(const std::string& trace) {
@@ -144,7 +141,7 @@ Json config_json(const RasterConfig& cfg) {
 // `option` is the option the name came from ("--engine", "--engines"), for the message.
 const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd,
                                   const std::string& option) {
-  const EngineInfo* info = find_engine(name);
+  const EngineInfo* info = find_engine(current_engine_name(name));
   if (!info) {
     std::string known;
     for (const EngineInfo& e : engine_registry()) known += (known.empty() ? "" : ", ") + e.name;
@@ -253,7 +250,9 @@ int cmd_raster(int argc, char** argv) {
   specs.push_back({"--image", "FILE.png", "write the viewport as PNG, a colour per triangle", ""});
   specs.push_back({"--report", "FILE.json", "write the JSON report", ""});
   specs.push_back({"--cycles", "FILE.csv", "timed engines: per-triangle cycles (docs/timing.md)", ""});
-  specs.push_back({"--trace", "FILE", "timed engines: waveform trace (.vcd; the rtl engine also .fst)", ""});
+  specs.push_back({"--trace", "FILE",
+                   "timed engines: waveform trace (.vcd; improved-rtl and trad-rtl also .fst)",
+                   ""});
   specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
   add_diag_options(specs, false);
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
@@ -395,19 +394,6 @@ int cmd_raster(int argc, char** argv) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  if (s.empty()) return out;
-  size_t start = 0;
-  for (;;) {
-    const size_t comma = s.find(',', start);
-    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
-
 int cmd_compare(int argc, char** argv) {
   auto specs = scene_options();
   specs.insert(specs.begin(), {"--engines", "A,B,...", "engines to run against the golden: " +
@@ -421,7 +407,8 @@ int cmd_compare(int argc, char** argv) {
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
     std::cout << "Run engines on one scene and compare each with the golden pixel for pixel.\n"
-                 "Exit status 0 only if every exact engine (all but trad) agrees with the golden.\n\n"
+                 "Exit status 0 only if every exact engine (all but trad-sc, trad-rtl,\n"
+                 "float-scanline) agrees with the golden.\n\n"
               << a.help_text();
     return 0;
   }
@@ -429,7 +416,7 @@ int cmd_compare(int argc, char** argv) {
   // "file:PATH" stands for spans recorded by another implementation (interchange format); it
   // claims exactness, so any difference from the golden fails the comparison.
   std::vector<EngineInfo> file_engines;
-  std::vector<std::string> names = split_list(a.get("--engines"));
+  std::vector<std::string> names = split(a.get("--engines"), ',');
   for (const std::string& name : names) {
     if (name.empty())
       throw UsageError("trirast compare: --engines: empty engine name in '" + a.get("--engines") +
@@ -462,7 +449,7 @@ int cmd_compare(int argc, char** argv) {
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
               (unsigned long long)ls.scene.source_triangles(),
               (unsigned long long)ls.setup.counts.accepted);
-  std::printf("  %-14s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
+  std::printf("  %-17s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
               "pixels", "missing", "extra", "seconds", "cycles", "work");
   bool any_module_counters = false;
   bool all_exact_agree = true;
@@ -504,7 +491,7 @@ int cmd_compare(int argc, char** argv) {
       if (timed_cycles.empty() && !diag.heatmap_path.empty()) heatmap_spans = run.result.spans;
       timed_cycles.emplace_back(info->name, run.result.cycles);
     }
-    std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
+    std::printf("  %-17s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
                 (long long)diff.extra_pixels, run.seconds, cycles.c_str(), work.c_str(),
@@ -619,7 +606,7 @@ int cmd_engines(int argc, char** argv) {
     return 0;
   }
   for (const EngineInfo& e : engine_registry())
-    std::printf("%-15s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
+    std::printf("%-18s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
                 e.description.c_str());
   return 0;
 }

@@ -1,10 +1,10 @@
-// trirast fuzz (issue 7): random scenes biased toward hard-cases.md, run through several engines
+// trirast fuzz: random scenes biased toward docs/hard-cases.md, run through several engines
 // and held against the golden; every disagreement is written to a .tri reproducer.
 #include <cctype>
 #include <cerrno>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,6 +17,7 @@
 #include "engines.hpp"
 #include "fuzz/fuzz_scene.hpp"
 #include "io/output_file.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
@@ -42,19 +43,6 @@ class FaultyEngine : public Engine {
  private:
   std::unique_ptr<Engine> inner_;
 };
-
-// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  if (s.empty()) return out;
-  size_t start = 0;
-  for (;;) {
-    const size_t comma = s.find(',', start);
-    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
 
 std::string exact_engine_names() {
   std::string s;
@@ -123,9 +111,10 @@ int cmd_fuzz(int argc, char** argv) {
   // The engines: known, exact, each once. Unknown ones name the known ones.
   std::vector<std::string> names;
   std::vector<const EngineInfo*> engines;
-  for (const std::string& name : split_commas(a.get("--engines"))) {
-    if (name.empty())
+  for (const std::string& given : split(a.get("--engines"), ',')) {
+    if (given.empty())
       throw UsageError("trirast fuzz: --engines: empty engine name in '" + a.get("--engines") + "'");
+    const std::string name = current_engine_name(given);
     const EngineInfo* info = find_engine(name);
     if (!info) {
       std::string known;
@@ -149,7 +138,7 @@ int cmd_fuzz(int argc, char** argv) {
 
   EngineInfo faulty;
   if (a.has("--inject-fault")) {
-    const std::string victim = a.get("--inject-fault");
+    const std::string victim = current_engine_name(a.get("--inject-fault"));
     for (const EngineInfo*& info : engines)
       if (info->name == victim && victim != "golden") {
         const auto make = info->make;

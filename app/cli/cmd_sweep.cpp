@@ -1,4 +1,4 @@
-// trirast sweep / fit (issue 6, docs/speed-vs-error.md).
+// trirast sweep / fit (docs/speed-vs-error.md).
 // sweep: engines x configurations x scenes, each point against the golden at S = 8 on the same
 //        float input; writes sweep.csv (per scene), sweep_configs.csv (per configuration) and
 //        sweep.json. --jobs N runs points in N worker processes (the SystemC kernel is one per
@@ -6,6 +6,7 @@
 // fit:   the smallest configuration that is exact on a scene, or within an error budget.
 #include <poll.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,7 +18,6 @@
 #include <cstring>
 #include <iostream>
 #include <sstream>
-#include <sys/stat.h>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
@@ -31,23 +31,16 @@
 #include "sweep/sweep.hpp"
 #include "sweep/sweep_area.hpp"
 #include "sweep/sweep_shard.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::vector<std::string> split_on(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep))
-    if (!item.empty()) out.push_back(item);
+// The items of an option's list, empty ones skipped ("a,,b" is a, b).
+std::vector<std::string> nonempty_items(const std::string& s, char sep) {
+  std::vector<std::string> out = split(s, sep);
+  out.erase(std::remove(out.begin(), out.end(), std::string()), out.end());
   return out;
 }
 
@@ -363,7 +356,7 @@ int cmd_sweep(int argc, char** argv) {
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
              {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
-             {"--engines", "LIST", "comma-separated engines to sweep: golden,model,trad,float-scanline (default) and rtl, unit", ""},
+             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline (default) and improved-rtl, improved-datapath", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
              {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
@@ -392,14 +385,15 @@ int cmd_sweep(int argc, char** argv) {
   base.width = int(a.get_int("--width", 1, kMaxViewport));
   base.height = int(a.get_int("--height", 1, kMaxViewport));
   const std::string out_dir = a.get("--out");
-  std::vector<std::string> engines = split_on(a.get("--engines"), ',');
+  std::vector<std::string> engines = nonempty_items(a.get("--engines"), ',');
+  for (std::string& e : engines) e = current_engine_name(e);
   for (const std::string& e : engines)
     if (!find_engine(e))
       throw UsageError("trirast sweep: --engines: unknown engine '" + e + "'");
   std::vector<SweepScene> scene_specs;
   try {
     if (a.has("--scenes"))
-      for (const std::string& s : split_on(a.get("--scenes"), ';'))
+      for (const std::string& s : nonempty_items(a.get("--scenes"), ';'))
         scene_specs.push_back(parse_sweep_scene(s));
     else
       scene_specs = sweep_scenes(quick);
@@ -687,7 +681,7 @@ int cmd_fit(int argc, char** argv) {
   Json search = Json::array();
   auto make_point = [&](int S, int coord, int box, int K) {
     SweepPoint p;
-    p.engine = "unit";
+    p.engine = "improved-datapath";
     p.group = "fit";
     p.cfg.width = base.width;
     p.cfg.height = base.height;
@@ -771,7 +765,7 @@ int cmd_fit(int argc, char** argv) {
   // Cycles of the default and of the fit on the timed SystemC model.
   auto timed = [&](RasterConfig cfg) {
     SweepPoint p;
-    p.engine = "model";
+    p.engine = "improved-sc";
     p.cfg = cfg;
     return run_sweep_point(p, scene);
   };

@@ -12,8 +12,8 @@ namespace trirast {
 
 std::string timing_unit(const std::string& engine) {
   // The old names and the new ones (improved-sc, improved-rtl, trad-sc, trad-rtl).
-  if (engine == "model" || engine == "rtl" || engine.rfind("improved-", 0) == 0) return "improved";
-  if (engine == "trad" || engine == "rtl-trad" || engine.rfind("trad-", 0) == 0) return "trad";
+  if (engine.rfind("improved-", 0) == 0) return "improved";
+  if (engine.rfind("trad-", 0) == 0) return "trad";
   return engine;
 }
 

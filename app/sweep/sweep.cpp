@@ -8,19 +8,15 @@
 #include <stdexcept>
 
 #include "core/engine.hpp"
-#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
+#include "engines.hpp"
+#include "reference/watertight.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -73,8 +69,9 @@ std::vector<SweepScene> sweep_scenes(bool quick) {
 }
 
 UnitKind SweepPoint::kind() const {
-  if (engine == "model" || engine == "unit" || engine == "rtl") return UnitKind::Improved;
-  if (engine == "trad") return UnitKind::Trad;
+  if (engine == "improved-sc" || engine == "improved-datapath" || engine == "improved-rtl")
+    return UnitKind::Improved;
+  if (engine == "trad-sc") return UnitKind::Trad;
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }
@@ -93,7 +90,7 @@ std::string SweepPoint::config_name() const {
 
 std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>& engines) {
   std::vector<std::string> want = engines;
-  if (want.empty()) want = {"golden", "model", "trad", "float-scanline", "rtl"};
+  if (want.empty()) want = {"golden", "improved-sc", "trad-sc", "float-scanline", "improved-rtl"};
   auto wanted = [&](const std::string& e) {
     return std::find(want.begin(), want.end(), e) != want.end();
   };
@@ -121,34 +118,35 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   if (quick) {
     for (int S : {8, 4, 0})
       for (int N : {1, 4})
-        for (int K : {0, 6}) add("model", "S x N x K", S, 16, 14, K, N);
-    add("model", "box bits", 8, 16, 8, 0, 1);
-    add("model", "coord bits", 8, 12, 14, 0, 1);
-    add("model", "fixed divider", 8, 16, 14, 0, 1, Fx);
-    for (int S : {8, 4}) add("trad", "traditional", S, 16, 14, 0, 1);
+        for (int K : {0, 6}) add("improved-sc", "S x N x K", S, 16, 14, K, N);
+    add("improved-sc", "box bits", 8, 16, 8, 0, 1);
+    add("improved-sc", "coord bits", 8, 12, 14, 0, 1);
+    add("improved-sc", "fixed divider", 8, 16, 14, 0, 1, Fx);
+    for (int S : {8, 4}) add("trad-sc", "traditional", S, 16, 14, 0, 1);
     add("float-scanline", "CPU baseline", 8, 16, 14, 0, 1);
-    for (int N : {1, 4}) add("rtl", "RTL", 8, 16, 14, 0, N);
+    for (int N : {1, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
     return pts;
   }
   for (int S : {8, 6, 4, 2, 0})
     for (int N : {1, 2, 4})
-      for (int K : {0, 10, 8, 6, 5, 4}) add("model", "S x N x K", S, 16, 14, K, N);
+      for (int K : {0, 10, 8, 6, 5, 4}) add("improved-sc", "S x N x K", S, 16, 14, K, N);
   for (int S : {8, 4})
-    for (int box : {12, 10, 9, 8, 7, 6}) add("model", "box bits", S, 16, box, 0, 1);
+    for (int box : {12, 10, 9, 8, 7, 6}) add("improved-sc", "box bits", S, 16, box, 0, 1);
   for (int S : {8, 4})
-    for (int coord : {14, 13, 12, 11}) add("model", "coord bits", S, coord, 14, 0, 1);
+    for (int coord : {14, 13, 12, 11}) add("improved-sc", "coord bits", S, coord, 14, 0, 1);
   for (int S : {8, 4, 0})
-    for (int K : {0, 8}) add("model", "fixed divider", S, 16, 14, K, 1, Fx);
-  add("model", "fixed divider", 8, 16, 10, 0, 1, Fx);
-  for (int N : {1, 4}) add("model", "boundary divide", 8, 16, 14, 0, N, A, BoundaryMode::Divide);
-  add("model", "synthesized", 4, 12, 10, 0, 1);  // scripts/synth.sh "small"
-  add("model", "synthesized", 8, 20, 14, 0, 1);  // scripts/synth.sh "wide"
+    for (int K : {0, 8}) add("improved-sc", "fixed divider", S, 16, 14, K, 1, Fx);
+  add("improved-sc", "fixed divider", 8, 16, 10, 0, 1, Fx);
+  for (int N : {1, 4})
+    add("improved-sc", "boundary divide", 8, 16, 14, 0, N, A, BoundaryMode::Divide);
+  add("improved-sc", "synthesized", 4, 12, 10, 0, 1);  // scripts/synth.sh "small"
+  add("improved-sc", "synthesized", 8, 20, 14, 0, 1);  // scripts/synth.sh "wide"
   for (int S : {6, 4, 2})
-    for (int K : {0, 8, 6}) add("model", "narrow", S, 12, 10, K, 1);
+    for (int K : {0, 8, 6}) add("improved-sc", "narrow", S, 12, 10, K, 1);
   for (int S : {8, 6, 4, 2, 0})
-    for (int coord : {16, 12}) add("trad", "traditional", S, coord, 14, 0, 1);
+    for (int coord : {16, 12}) add("trad-sc", "traditional", S, coord, 14, 0, 1);
   for (int S : {8, 6, 4, 2, 0}) add("float-scanline", "CPU baseline", S, 16, 14, 0, 1);
-  for (int N : {1, 2, 4}) add("rtl", "RTL", 8, 16, 14, 0, N);
+  for (int N : {1, 2, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
   return pts;
 }
 
@@ -176,7 +174,7 @@ SweepSceneData load_sweep_scene(const SweepScene& s, const RasterConfig& base) {
   d.reference = std::move(r.spans);
   d.reference_pixels = count_pixels(d.reference);
   if (s.closed) {
-    const ClosedCount c = count_closed(setup, d.reference, cfg);
+    const WatertightResult c = check_watertight(setup, d.reference, cfg);
     d.reference_cracks = c.cracks;
     d.reference_doubles = c.doubles;
   }
@@ -272,72 +270,12 @@ PointResult run_sweep_point(const SweepPoint& p, const SweepSceneData& scene) {
     r.missing = diff.missing_pixels;
     r.extra = diff.extra_pixels;
     if (scene.spec.closed) {
-      const ClosedCount c = count_closed(setup, out.spans, cfg);
+      const WatertightResult c = check_watertight(setup, out.spans, cfg);
       r.cracks = c.cracks;
       r.doubles = c.doubles;
     }
   } catch (const std::exception& e) {
     r.error = e.what();
-  }
-  return r;
-}
-
-// ---- cracks and double hits ----------------------------------------------------------------------
-
-ClosedCount count_closed(const SetupResult& setup, const SpanList& spans, const RasterConfig& cfg) {
-  ClosedCount r;
-  const size_t W = size_t(cfg.width), H = size_t(cfg.height);
-  std::vector<uint8_t> count(W * H, 0);
-  for (const Span& s : spans) {
-    if (s.y < 0 || size_t(s.y) >= H) continue;
-    for (int32_t x = std::max(s.x_begin, 0); x < s.x_end && size_t(x) < W; ++x) {
-      uint8_t& c = count[size_t(s.y) * W + size_t(x)];
-      if (c < 255) ++c;
-    }
-  }
-  for (uint8_t c : count)
-    if (c > 1) ++r.doubles;
-  // The outline: edges used by exactly one triangle (by their snapped end points).
-  using Point = std::pair<int64_t, int64_t>;
-  auto key = [](const Vec2i& a, const Vec2i& b) {
-    Point pa{a.x, a.y}, pb{b.x, b.y};
-    return pa < pb ? std::make_pair(pa, pb) : std::make_pair(pb, pa);
-  };
-  std::map<std::pair<Point, Point>, int> uses;
-  for (const TriangleSetup& t : setup.tris)
-    for (int i = 0; i < 3; ++i) ++uses[key(t.v[i], t.v[(i + 1) % 3])];
-  // Pixels whose centre lies on an outline edge may stay uncovered (the rule leaves one side).
-  std::vector<uint8_t> outline(W * H, 0);
-  for (const TriangleSetup& t : setup.tris) {
-    if (t.box.empty()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const Vec2i a = t.v[i], b = t.v[(i + 1) % 3];
-      if (uses[key(a, b)] != 1) continue;
-      const EdgeSetup& e = t.edge[i];
-      for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
-        for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
-          const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
-          if (e.eval(cx, cy) != 0) continue;
-          if (cx < std::min(a.x, b.x) || cx > std::max(a.x, b.x) || cy < std::min(a.y, b.y) ||
-              cy > std::max(a.y, b.y))
-            continue;
-          outline[size_t(py) * W + size_t(px)] = 1;
-        }
-    }
-  }
-  // Cracks: uncovered centres inside or on a triangle, off the outline; each counted once.
-  for (const TriangleSetup& t : setup.tris) {
-    if (t.box.empty()) continue;
-    for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
-      for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
-        const size_t at = size_t(py) * W + size_t(px);
-        if (count[at] != 0 || outline[at]) continue;
-        const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
-        if (t.edge[0].eval(cx, cy) < 0 || t.edge[1].eval(cx, cy) < 0 || t.edge[2].eval(cx, cy) < 0)
-          continue;
-        ++r.cracks;
-        count[at] = 255;
-      }
   }
   return r;
 }

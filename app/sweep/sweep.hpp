@@ -1,4 +1,4 @@
-// Speed against error (issue 6, docs/speed-vs-error.md): engines x configurations x scenes.
+// Speed against error (docs/speed-vs-error.md): engines x configurations x scenes.
 // Every point is measured against one reference per scene: the golden at S = 8 with the default
 // coordinate width, on the same float input. This file holds the measurement of one point on
 // one scene and the aggregation over scenes; app/cli/cmd_sweep.cpp runs them (in parallel) and
@@ -86,14 +86,6 @@ struct PointResult {
 // triangle outside the coordinate range is rejected, not fatal), runs the engine (a triangle the
 // engine's widths cannot hold is rejected, not fatal) and measures it against the reference.
 PointResult run_sweep_point(const SweepPoint& p, const SweepSceneData& scene);
-
-// Cracks and double hits of a closed mesh (watertight-style): a crack is an uncovered pixel whose
-// centre lies inside or on a set-up triangle and not on the mesh's outline (edges used by one
-// triangle); a double hit is a pixel covered more than once.
-struct ClosedCount {
-  int64_t cracks = 0, doubles = 0;
-};
-ClosedCount count_closed(const SetupResult& setup, const SpanList& spans, const RasterConfig& cfg);
 
 // A point aggregated over the scenes.
 struct PointSummary {

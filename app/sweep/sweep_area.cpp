@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "util.hpp"
+
 namespace trirast {
 
 const char* unit_kind_name(UnitKind k) {
@@ -40,11 +42,10 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep)) out.push_back(trim(item));
+// The trimmed items of a CSV line or a CONFIGS list.
+std::vector<std::string> trimmed_items(const std::string& s, char sep) {
+  std::vector<std::string> out = split(s, sep);
+  for (std::string& item : out) item = trim(item);
   return out;
 }
 
@@ -114,8 +115,8 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
       const size_t at = line.find("CONFIGS=\"");
       if (at != 0) continue;
       const std::string list = line.substr(9, line.find('"', 9) - 9);
-      for (const std::string& item : split(list, ' ')) {
-        const auto f = split(item, ':');
+      for (const std::string& item : trimmed_items(list, ' ')) {
+        const auto f = trimmed_items(item, ':');
         if (f.size() != 4) continue;
         try {
           widths[f[0]] = {std::stoi(f[1]), std::stoi(f[2]), std::stoi(f[3])};
@@ -132,7 +133,7 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
   while (std::getline(in, line)) {
     ++lineno;
     if (trim(line).empty()) continue;
-    const auto f = split(line, ',');
+    const auto f = trimmed_items(line, ',');
     if (col.empty()) {
       for (size_t i = 0; i < f.size(); ++i) col[lower(f[i])] = int(i);
       for (const char* need : {"unit", "config", "target", "luts", "ffs"})

@@ -1,9 +1,10 @@
-// Differential fuzzing (issue 7): random configurations and triangles biased toward the classes of
-// hard-cases.md, a checker that runs engines against the golden, and the .tri reproducer format.
+// Differential fuzzing: random configurations and triangles biased toward the classes of
+// docs/hard-cases.md, a checker that runs engines against the golden, and the .tri reproducer
+// format.
 //
 // One generator serves two masters through FuzzDraws: `trirast fuzz` draws from a seeded PRNG,
-// the libFuzzer target (dv/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same classes
-// and a byte string the fuzzer mutates maps to a small, local change of the scene.
+// the libFuzzer target (dv/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same
+// classes and a byte string the fuzzer mutates maps to a small, local change of the scene.
 //
 // Depends only on model/core and model/golden, so the libFuzzer build (clang, separate build
 // directory) can compile it without the rest of dv/ and app/.
@@ -58,7 +59,7 @@ class ByteDraws : public FuzzDraws {
   size_t pos_ = 0;
 };
 
-// The triangle classes of hard-cases.md the generator draws from.
+// The triangle classes of docs/hard-cases.md the generator draws from.
 enum class FuzzClass {
   Lattice,         // vertices on pixel centres and pixel corners (cases 2, 3, 4, 5)
   NearCentre,      // pixel centres offset by 0..2 subpixels (cases 2, 3, 10)

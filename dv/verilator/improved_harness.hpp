@@ -126,7 +126,7 @@ void run_improved_build(const SetupResult& setup, const RasterConfig& cfg, uint3
     }
   }
   ImprovedPorts<Top, P> ports;
-  run_cycles<Top>(setup, cfg, x_seed, "rtl", "trirast_top", ports, out);
+  run_cycles<Top>(setup, cfg, x_seed, "improved-rtl", "trirast_top", ports, out);
 }
 
 }  // namespace trirast::rtl

@@ -91,7 +91,7 @@ void run_trad_build(const SetupResult& setup, const RasterConfig& cfg, uint32_t 
     }
   TradPorts<Top, P> ports;
   const CycleCounts counts =
-      run_cycles<Top>(setup, cfg, x_seed, "rtl-trad", "trirast_trad_top", ports, out);
+      run_cycles<Top>(setup, cfg, x_seed, "trad-rtl", "trirast_trad_top", ports, out);
   out.work["trad_collinear"] += counts.early_retirements;
 }
 

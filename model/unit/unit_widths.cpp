@@ -10,7 +10,7 @@ UnitWidths unit_widths(const RasterConfig& cfg) {
   w.vertex = cfg.vertex_bits();     // p = coord_int_bits + F
   w.edge_coef = w.vertex + 1;       // A = a.y - b.y of two p-bit values
   w.step = w.vertex + w.frac;       // |A| < 2^p, times u = 2^F
-  w.edge_value = 2 * w.vertex + 2;  // raster-rules.md: E needs 2p + 2 bits
+  w.edge_value = 2 * w.vertex + 2;  // docs/coverage-rule.md: E needs 2p + 2 bits
   w.box = cfg.box_bits;             // box <= 2^box_bits pixels
   w.quotient = cfg.box_bits + 1;    // Q: a pixel count in the box, or "beyond the box"
   w.remainder = w.step;             // 0 <= r < D, and D has p + F bits

@@ -1,6 +1,6 @@
-// The Verilated RTL (rtl/, engine "rtl"): spans identical to the golden on the hard cases, 10,000
-// random triangles and the meshes; cycles equal to docs/timing.md, both in closed form and against
-// an independent cycle-by-cycle reference written from that document (below); configuration
+// The Verilated RTL (rtl/, engine "improved-rtl"): spans identical to the golden on the hard cases,
+// 10,000 random triangles and the meshes; cycles equal to docs/timing.md, both in closed form and
+// against an independent cycle-by-cycle reference written from that document (below); configuration
 // errors; the FST trace of a window read back with fst2vcd.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The Verilated RTL of the traditional-Bresenham unit (rtl/trirast_trad_*.sv, engine "rtl-trad"):
+// The Verilated RTL of the traditional-Bresenham unit (rtl/trirast_trad_*.sv, engine "trad-rtl"):
 // its spans equal the C++ trad model's (model/unit/trad_bresenham.*, engine make_trad_engine),
-// pixel for pixel, and its cycles equal the SystemC trad model's (engine "trad", docs/timing.md
+// pixel for pixel, and its cycles equal the SystemC trad model's (engine "trad-sc", docs/timing.md
 // "The traditional unit"): accept, first span, done and stall cycles of every triangle, with the
 // sink always ready and with stalling sinks, on the hard cases, random triangles and meshes.
 // Nothing here is a stored result: every expectation comes from running the two models.
@@ -82,7 +82,7 @@ RasterConfig cfg_with(const std::string& sink, int depth, int endpoints = 1) {
 const char* const kSinks[] = {"none", "random:7:30", "periodic:3:2"};
 
 TEST(RtlTrad, RegisteredNotExact) {
-  const EngineInfo* e = find_engine("rtl-trad");
+  const EngineInfo* e = find_engine("trad-rtl");
   ASSERT_NE(e, nullptr);
   EXPECT_FALSE(e->exact);
 }
