@@ -543,7 +543,8 @@ int cmd_compare(int argc, char** argv) {
   }
   if (a.has("--diff-image")) {
     // FILE.png: the first engine that differs (else the first non-golden one); every other
-    // engine beside it as FILE.ENGINE.png. Differing pixels are ringed to be seen at any size.
+    // engine that differs beside it as FILE.ENGINE.png. Differing pixels are ringed to be seen
+    // at any size.
     const std::string path = a.get("--diff-image");
     write_png(diff_image(golden.result.spans, diff_for_image, cfg.width, cfg.height), path,
               "--diff-image");
@@ -551,6 +552,7 @@ int cmd_compare(int argc, char** argv) {
                 path.c_str(), diff_engine.empty() ? "golden" : diff_engine.c_str());
     for (size_t i = 0; i < diffs.size(); ++i) {
       const std::string& name = diffs[i].first;
+      if (name != diff_engine && diffs[i].second.exact()) continue;  // nothing to show
       const std::string engine_path = name == diff_engine ? path : diff_image_path(path, name);
       if (name != diff_engine) {
         write_png(diff_image(golden.result.spans, diffs[i].second, cfg.width, cfg.height),
