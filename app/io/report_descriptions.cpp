@@ -53,6 +53,7 @@ const std::map<std::string, std::string>& table() {
       {"work.rows_stepped", "rows the edge walkers stepped through"},
       {"work.rows_visited", "rows of a bounding box the engine visited"},
       {"work.rtl_x_seed", "seed of the RTL's random initial values (Verilator --x-initial unique)"},
+      {"work.rtl_x_zero_fill", "1: a traced run without TRIRAST_RTL_SEED filled the RTL's initial values with zeros (the trace shows no random numbers)"},
       {"work.sim_cycles_per_second", "simulated clock cycles per wall-clock second"},
       {"work.sim_wall_microseconds", "wall-clock microseconds of the simulation"},
       {"work.total_cycles", "clock cycles of the run"},
