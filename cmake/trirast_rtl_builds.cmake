@@ -49,14 +49,20 @@ function(trirast_add_rtl_builds)
     list(GET _f 2 _coord)
     list(GET _f 3 _box)
     set(_widths_${_name} ${_s} ${_coord} ${_box})
-    # The package and the parameter struct of this configuration.
+    # The package and the parameter struct of this configuration, generated into a scratch
+    # folder and copied only when they changed (configure_file COPYONLY): a reconfiguration, as
+    # scripts/fuzz.sh does on every run, then re-verilates and recompiles nothing.
     execute_process(COMMAND ${Python3_EXECUTABLE} ${A_ROOT}/scripts/gen_params.py
         --subpixel-bits ${_s} --coord-bits ${_coord} --box-bits ${_box}
-        --sv ${_gen}/${_name}/trirast_pkg.sv --hpp ${_gen}/${_name}/params.hpp --struct Params_${_name}
+        --sv ${_gen}/scratch/${_name}/trirast_pkg.sv --hpp ${_gen}/scratch/${_name}/params.hpp
+        --struct Params_${_name}
       RESULT_VARIABLE _rc)
     if(NOT _rc EQUAL 0)
       message(FATAL_ERROR "scripts/gen_params.py failed for the RTL configuration ${_cfg}")
     endif()
+    foreach(_file trirast_pkg.sv params.hpp)
+      configure_file(${_gen}/scratch/${_name}/${_file} ${_gen}/${_name}/${_file} COPYONLY)
+    endforeach()
   endforeach()
 
   set(_list_improved "")
