@@ -75,7 +75,9 @@ TEST(DefectTrace, ScEngineFstIsARealFstWithItsSaveFile) {
   EXPECT_TRUE(file_exists(dir.file("x.gtkw")));
   EXPECT_FALSE(file_exists(dir.file("x.fst.gtkw")));
   EXPECT_NE(r.out.find("x.gtkw"), std::string::npos) << r.out;
-  EXPECT_EQ(dir.entry_count(), 2);  // x.fst, x.gtkw and no temporary
+  // x.fst, x.gtkw, its two translate filters (x.setup_state.filter, x.walk_state.filter), no temporary
+  EXPECT_TRUE(file_exists(dir.file("x.setup_state.filter")));
+  EXPECT_EQ(dir.entry_count(), 4);
 }
 
 TEST(DefectTrace, WroteLinesNameOnlyFilesOfThisRun) {

@@ -1,5 +1,6 @@
 // trirast fuzz: random scenes biased toward docs/hard-cases.md, run through several engines
 // and held against the golden; every disagreement is written to a .tri reproducer.
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -91,7 +92,10 @@ int cmd_fuzz(int argc, char** argv) {
                  "cases (lattice vertices, subpixel offsets from centres, extreme coordinates,\n"
                  "slivers, ...) through every engine, each held against the golden. A disagreement\n"
                  "is written as a .tri reproducer whose header names the engines and the\n"
-                 "configuration. Progress on stderr once a second.\n"
+                 "configuration, with a \"# replay:\" line (also printed) that runs as written\n"
+                 "from this folder: trirast compare on the reproducer, exit status 1 while the\n"
+                 "disagreement holds, 0 once fixed (and for an --inject-fault run, whose fault the\n"
+                 "replay does not have). Progress on stderr once a second.\n"
                  "Exit status: 0 no disagreement, 1 a disagreement, 2 bad usage.\n\n"
               << a.help_text();
     return 0;
@@ -204,12 +208,20 @@ int cmd_fuzz(int argc, char** argv) {
         if (small.size() < tris.size())
           note += "\nreduced to " + std::to_string(small.size()) + " of " +
                   std::to_string(tris.size()) + " triangles";
+        if (!faulty.name.empty())
+          note += "\n" + faulty.name + " ran with --inject-fault: the replay, without the fault, agrees";
+        // The replay names the engines that ran on this scene (not those whose build does not
+        // cover its configuration), so it runs as written.
+        std::vector<std::string> ran;
+        for (const std::string& name : names)
+          if (std::find(skipped.begin(), skipped.end(), name) == skipped.end()) ran.push_back(name);
         OutputFile out(repro_path(n), "--out");
-        out.write(format_reproducer(small, cfg, names, note));
+        out.write(format_reproducer(small, cfg, ran, note, repro_path(n)));
         out.commit();
         ++written;
-        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\n",
-                     (unsigned long long)n, summary.c_str(), repro_path(n).c_str());
+        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\nfuzz: replay: %s\n",
+                     (unsigned long long)n, summary.c_str(), repro_path(n).c_str(),
+                     replay_command(cfg, ran, repro_path(n)).c_str());
       } else {
         std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s)\n", (unsigned long long)n,
                      summary.c_str());

@@ -517,8 +517,16 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 
 // ---- reproducers --------------------------------------------------------------------------------
 
+std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
+                           const std::string& scene_path) {
+  std::string list;
+  for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
+  return "trirast compare --scene " + scene_path + " --engines " + list + " " + config_options(cfg);
+}
+
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
-                              const std::vector<std::string>& engines, const std::string& note) {
+                              const std::vector<std::string>& engines, const std::string& note,
+                              const std::string& scene_path) {
   std::string list;
   for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
   std::string text = "# trirast fuzz reproducer\n# engines: " + list + "\n";
@@ -526,8 +534,7 @@ std::string format_reproducer(const std::vector<InputTriangle>& tris, const Rast
   std::string line;
   while (std::getline(notes, line)) text += "# " + line + "\n";
   text += "# config: " + config_options(cfg) + "\n";
-  text += "# replay: trirast compare --scene THIS_FILE --engines " + list + " " +
-          config_options(cfg) + "\n";
+  text += "# replay: " + replay_command(cfg, engines, scene_path) + "\n";
   char buf[256];
   for (const InputTriangle& t : tris) {
     // %.17g reads back bit for bit; grid values print short and exact (k / 2^(S+1)).

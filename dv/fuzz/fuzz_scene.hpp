@@ -126,9 +126,15 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 
 // The reproducer file: a '#' header naming the engines, the configuration (a "# config:" line
 // that parse_reproducer_config reads back), the command that replays it and `note`, then one
-// triangle per line with coordinates printed so that they read back bit for bit.
+// triangle per line with coordinates printed so that they read back bit for bit. The replay
+// command names the file `scene_path` (trirast fuzz: the path it writes, so the line runs as
+// written from the fuzz run's folder; the libFuzzer target: THIS_FILE, its crash file's name).
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
-                              const std::vector<std::string>& engines, const std::string& note);
+                              const std::vector<std::string>& engines, const std::string& note,
+                              const std::string& scene_path = "THIS_FILE");
+// The replay command of a reproducer: trirast compare on scene_path with its engines and options.
+std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
+                           const std::string& scene_path);
 // The configuration of a reproducer's "# config:" line (defaults when there is none).
 RasterConfig parse_reproducer_config(const std::string& text);
 

@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -39,6 +40,7 @@
 #include "core/engine.hpp"
 #include "core/sink_pattern.hpp"
 #include "harness_util.hpp"
+#include "rtl_gtkw.hpp"
 
 namespace trirast {
 namespace rtl {
@@ -75,9 +77,14 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
 
   // ---- the model ----
   auto ctx = std::make_unique<VerilatedContext>();
-  ctx->randReset(2);  // --x-initial unique: random initial values from the seed below
-  ctx->randSeed(int(x_seed));
   const bool tracing = !cfg.trace_path.empty();
+  // --x-initial unique: random initial values from the seed below. A traced run without
+  // TRIRAST_RTL_SEED fills them with zeros instead (Verilator is two-state: an X cannot be
+  // shown, and zeros read as "not loaded yet" where random numbers look like data); it reports
+  // work rtl_x_zero_fill = 1. The results do not depend on the fill (tests/rtl: seeds agree).
+  const bool zero_fill = tracing && !std::getenv("TRIRAST_RTL_SEED");
+  ctx->randReset(zero_fill ? 0 : 2);
+  ctx->randSeed(int(x_seed));
   if (tracing) ctx->traceEverOn(true);
   auto top = std::make_unique<Top>(ctx.get(), top_name);
   std::unique_ptr<VerilatedFstC> fst;
@@ -85,6 +92,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   RecordingTemporaries recording;  // removed unless finish_trace() moved them to the trace
   if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
+    // The model's time base: cycle c from c ns (the rising edge that starts it) to c + 1 ns. The
+    // recording counts in 100 ps: registers change at 10c (clock high), the harness drives the
+    // inputs at 10c + 5 (clock low), where every signal has its cycle-c value.
+    fst->set_time_unit("1ns");
+    fst->set_time_resolution("100ps");
     top->trace(fst.get(), 99);
     fst_path = fst_recording_path(cfg.trace_path);
     recording.track(fst_path);
@@ -99,6 +111,12 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
   }
   bool trace_open = false, trace_over = false;
+  uint64_t trace_start = 0, trace_end = 0;  // the recording's first and last dump time
+  auto dump = [&](uint64_t t) {
+    if (!trace_open) return;
+    trace_end = t;
+    fst->dump(t);
+  };
 
   // ---- configuration and reset ----
   top->cfg_vp_xmax_i = uint32_t(cfg.width - 1);
@@ -165,6 +183,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     if (tracing && !trace_open && !trace_over && next >= win_a && win_a < n) {
       fst->open(fst_path.c_str());
       trace_open = true;
+      trace_start = 10 * c + 5;
     }
 
     bool progress = false;
@@ -248,11 +267,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
                                " cycles at cycle " + std::to_string(c) +
                                " (does --sink-stall ever let spans out?)");
 
-    // Rising edge c.
-    if (trace_open) fst->dump(2 * c);
+    // Rising edge c (at (c + 1) ns in the trace).
+    dump(10 * c + 5);
     top->clk_i = 1;
     top->eval();
-    if (trace_open) fst->dump(2 * c + 1);
+    dump(10 * (c + 1));
     top->clk_i = 0;
     if (accept) offer(++next);
 
@@ -262,7 +281,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
       top->eval();
       const bool drained = !top->span_valid_o || top->span_tag_o > win_b;
       if (done[win_b] || drained) {
-        fst->dump(2 * c + 2);
+        dump(10 * (c + 1) + 5);
         fst->close();
         trace_open = false;
         trace_over = true;
@@ -270,7 +289,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
   }
   if (trace_open) {
-    fst->dump(2 * c);
+    dump(10 * c + 5);
     fst->close();
   }
   if (tracing && !trace_over && !trace_open && win_a >= n) {
@@ -278,7 +297,16 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     fst->close();
   }
   top->final();
-  if (tracing) finish_trace(fst_path, cfg.trace_path, engine);
+  if (tracing) {
+    const bool trad = std::string(top_name) == "trirast_trad_top";
+    const StateNames setup_states =
+        trad ? StateNames{{0, "StIdle"}, {1, "StSort"}, {2, "StLine"}, {4, "StHold"}}
+             : StateNames{{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {3, "StLanes"}, {4, "StHold"}};
+    write_rtl_gtkw(fst_path, cfg.trace_path, trace_start, std::max(trace_end, trace_start + 10),
+                   setup_states);
+    finish_trace(fst_path, cfg.trace_path, engine);
+    if (zero_fill) out.work["rtl_x_zero_fill"] = 1;
+  }
 
   uint64_t total = 0, spans = 0, pixels = 0;
   for (const TriangleCycles& tc : out.cycles) {

@@ -35,7 +35,7 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     throw std::invalid_argument(opt + ": " + std::to_string(got) +
                                 " is not covered by the rtl engine's Verilated models (" + how +
                                 "; built: " + built_configuration() +
-                                "; add one in dv/verilator/CMakeLists.txt)");
+                                "; add one in cmake/trirast_rtl_builds.cmake)");
   };
   if (!widths) {
     // Name the first option no build of the other two options' values has.

@@ -32,7 +32,7 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     throw std::invalid_argument(opt + ": " + std::to_string(got) +
                                 " is not covered by the rtl-trad engine's Verilated models (" +
                                 how + "; built: " + describe_builds(builds, false) +
-                                "; add one in dv/verilator/CMakeLists.txt)");
+                                "; add one in cmake/trirast_rtl_builds.cmake)");
   };
   if (!widths) {
     bool s = false;

@@ -6,14 +6,23 @@
 #include <stdexcept>
 #include <cstdlib>
 
+#include "core/gtkw_save.hpp"
 #include "core/temporary_files.hpp"
 
 namespace trirast::sc {
 
 int VcdRecorder::add(const std::string& scope, const std::string& name, int width, uint64_t initial,
                      bool counter) {
-  signals_.push_back(Signal{scope, name, width, counter, initial, 0});
+  signals_.push_back(Signal{scope, name, width, counter, initial, 0, {}});
   return int(signals_.size()) - 1;
+}
+
+void VcdRecorder::name_values(int sig, const std::string& filter,
+                              const std::vector<std::pair<uint64_t, std::string>>& labels) {
+  signals_[size_t(sig)].filter = filter;
+  for (const auto& f : filters_)
+    if (f.first == filter) return;
+  filters_.emplace_back(filter, labels);
 }
 
 void VcdRecorder::set_window(uint64_t first, uint64_t last) {
@@ -21,13 +30,7 @@ void VcdRecorder::set_window(uint64_t first, uint64_t last) {
   last_ = last;
 }
 
-std::string VcdRecorder::gtkw_path(const std::string& vcd_path) {
-  for (const std::string ext : {".vcd", ".fst"})
-    if (vcd_path.size() > ext.size() &&
-        vcd_path.compare(vcd_path.size() - ext.size(), ext.size(), ext) == 0)
-      return vcd_path.substr(0, vcd_path.size() - ext.size()) + ".gtkw";
-  return vcd_path + ".gtkw";
-}
+std::string VcdRecorder::gtkw_path(const std::string& vcd_path) { return gtkw_path_of(vcd_path); }
 
 namespace {
 
@@ -164,24 +167,24 @@ void VcdRecorder::write(const std::string& vcd_path, const std::string& top) con
   out += "#" + std::to_string(end) + "\n";
   write_file(vcd_path, out);
 
-  // GTKWave save file: one group per module, buses in decimal, bits as bits.
-  std::string g;
-  g += "[dumpfile] \"" + vcd_path + "\"\n";
-  g += "[timestart] " + std::to_string(t0) + "\n";
-  g += "[sst_expanded] 1\n";
-  g += "[treeopen] " + top + ".\n";
+  // GTKWave save file: one group per module (scope), buses in decimal, states by name.
+  GtkwSave save;
+  save.dump_path = vcd_path;
+  save.window_start = t0;
+  save.window_end = end;
+  save.tree_open = {top + "."};
+  for (const auto& f : filters_) save.filters.push_back(GtkwSave::Filter{f.first, f.second});
   for (const std::string& sc : scopes) {
-    g += "@800200\n-" + sc + "\n";
+    GtkwSave::Group grp{sc, false, {}};
     for (const Signal& s : signals_) {
       if (s.scope != sc) continue;
-      g += s.width == 1 ? "@28\n" : "@24\n";
-      g += top + "." + sc + "." + s.name;
-      if (s.width > 1) g += "[" + std::to_string(s.width - 1) + ":0]";
-      g += "\n";
+      std::string name = top + "." + sc + "." + s.name;
+      if (s.width > 1) name += "[" + std::to_string(s.width - 1) + ":0]";
+      grp.traces.push_back(GtkwSave::Trace{name, s.width, s.filter});
     }
-    g += "@1000200\n-" + sc + "\n";
+    save.groups.push_back(std::move(grp));
   }
-  write_file(gtkw_path(vcd_path), g);
+  write_gtkw(gtkw_path(vcd_path), save);
 }
 
 }  // namespace trirast::sc

@@ -480,10 +480,12 @@ TEST(RtlTrace, FstWindowOfALargeSceneHasTheHandshakes) {
   const std::string text = read_file(vcd);
   for (const char* sig : {"tri_valid_i", "tri_ready_o", "span_valid_o", "span_ready_i", "clk_i"})
     EXPECT_NE(text.find(std::string(" ") + sig + " "), std::string::npos) << sig;
+  // The model's time base: 1 ns per cycle, recorded in 100 ps; cycle c's values at c.5 ns.
+  EXPECT_NE(text.find("$timescale\n\t100ps\n$end"), std::string::npos) << text.substr(0, 300);
   // Only the window: its first timestamp is the cycle triangle 1000 is on the port.
   size_t p1000 = 0;
   while (setup.tris[p1000].index < 1000) ++p1000;
-  const uint64_t first = 2 * (r.cycles[p1000 - 1].accept_cycle + 1);
+  const uint64_t first = 10 * (r.cycles[p1000 - 1].accept_cycle + 1) + 5;
   const size_t t = text.find("\n#");
   ASSERT_NE(t, std::string::npos);
   EXPECT_EQ(std::stoull(text.substr(t + 2)), first);
@@ -492,8 +494,17 @@ TEST(RtlTrace, FstWindowOfALargeSceneHasTheHandshakes) {
   while (p1010 + 1 < setup.tris.size() && setup.tris[p1010 + 1].index <= 1010) ++p1010;
   const size_t last = text.rfind("\n#");
   const uint64_t last_t = std::stoull(text.substr(last + 2));
-  EXPECT_GE(last_t, 2 * r.cycles[p1010].done_cycle + 1);
-  EXPECT_LE(last_t, 2 * r.cycles[p1010].done_cycle + 4);
+  EXPECT_GE(last_t, 10 * r.cycles[p1010].done_cycle + 10);
+  EXPECT_LE(last_t, 10 * r.cycles[p1010].done_cycle + 25);
+  // The save file beside it: the dump named relative to it, the zoom from the window's start,
+  // the setup state through a filter file beside it.
+  const std::string gtkw = read_file(dir + "/rtl_window.gtkw");
+  EXPECT_NE(gtkw.find("[dumpfile] \"rtl_window.fst\"\n"), std::string::npos) << gtkw.substr(0, 300);
+  EXPECT_NE(gtkw.find("[savefile] \"rtl_window.gtkw\"\n"), std::string::npos);
+  EXPECT_NE(gtkw.find("[timestart] " + std::to_string(first * 100) + "\n"), std::string::npos);
+  EXPECT_NE(gtkw.find("^1 rtl_window.setup_state.filter\n@2024\ntrirast_top.setup_state_o[2:0]\n"),
+            std::string::npos);
+  EXPECT_NE(read_file(dir + "/rtl_window.setup_state.filter").find("4 StHold\n"), std::string::npos);
 }
 
 TEST(RtlTrace, VcdOutputIsConverted) {
