@@ -385,7 +385,7 @@ def main():
                          fmt_ppm(s["max_error_ppm"]), fmt_int(s["rejected"]),
                          f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                          f"{s['cycles_per_triangle']:.2f}" if "cycles_per_triangle" in s else "-",
-                         fmt_area(s, "luts"), fmt_area(s, "ffs"),
+                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
                          ", ".join(w for w, f in (("cycles", "whatif_cycles"),
                                                   ("area", "whatif_area")) if s.get(f))])
         L.append(f"{len(whatif)} configurations with quotient truncation `K` (C++ model only: no "
@@ -572,7 +572,7 @@ def main():
                          f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                          f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
                          f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                         fmt_area(s, "luts"), fmt_area(s, "ffs"),
+                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
                          f"{s['wall_ratio']:.2f}"])
         L.append(table(["engine", "configuration", "error ppm", "max ppm", "rejected",
                         "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",
@@ -647,7 +647,12 @@ def main():
                  "bits, then the quotient truncation (binary search, each step checked against "
                  "the reference with the bit-accurate unit model), and keeps the S whose result has "
                  "the fewest LUTs; N = 1 (N does not change the output). Cycles are the SystemC "
-                 "model's, the default against the fit.\n")
+                 "model's, the default against the fit."
+                 + (" Its areas are not the run's synthesis: `trirast fit` reads docs/synth.csv "
+                    "(scripts/synth.sh, which may be of an older RTL) where it covers the "
+                    "configuration, else the estimate (marked); a fit with quotient truncation "
+                    "(K) is a model-only configuration (no RTL, area estimated)."
+                    if merged else "") + "\n")
         rows = []
         for f in fits:
             ft, df, sv = f["fit"], f["default"], f["saved"]
@@ -661,8 +666,9 @@ def main():
                          f"{fmt_int(df['total_cycles'])} -> {fmt_int(ft['total_cycles'])} "
                          f"({sv['cycles_pct']:+.1f}%)",
                          f"{fmt_int(df['luts'])} -> {fmt_int(ft['luts'])} ({sv['luts_pct']:.1f}% "
-                         "saved)" + (" (estimate)" if "estimate" in (df["area_source"],
-                                                                     ft["area_source"]) else ""),
+                         "saved)" + (" (estimate" + (": no RTL" if ft["quotient_bits"] else "")
+                                     + ")" if "estimate" in (df["area_source"],
+                                                             ft["area_source"]) else ""),
                          f"{fmt_int(df['ffs'])} -> {fmt_int(ft['ffs'])} ({sv['ffs_pct']:.1f}% "
                          "saved)"])
         L.append(table(["scene", "budget ppm", "smallest configuration", "error ppm", "rejected",
@@ -690,7 +696,7 @@ def main():
                      f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                      f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
                      f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                     fmt_area(s, "luts"), fmt_area(s, "ffs"), f"{s['wall_ratio']:.2f}",
+                     fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged), f"{s['wall_ratio']:.2f}",
                      str(s["failures"]) if s["failures"] else ""])
     L.append(table(["engine", "group", "configuration", "error ppm", "missing ppm", "extra ppm",
                     "rejected", "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",

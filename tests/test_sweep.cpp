@@ -218,10 +218,12 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
       EXPECT_EQ(r.at("pareto_cycles"), "0") << r.at("config");
       EXPECT_EQ(r.at("pareto_area"), "0") << r.at("config");
     }
-    if (r.at("pareto_cycles") == "1" || r.at("pareto_area") == "1")
+    if (r.at("pareto_cycles") == "1" || r.at("pareto_area") == "1") {
       EXPECT_EQ(r.at("rtl"), "1") << r.at("config");
-    if (r.at("whatif_cycles") == "1" || r.at("whatif_area") == "1")
+    }
+    if (r.at("whatif_cycles") == "1" || r.at("whatif_area") == "1") {
       EXPECT_EQ(r.at("rtl"), "0") << r.at("config");
+    }
   }
   EXPECT_GT(k_rows, 0);
   EXPECT_FALSE(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("luts").empty());

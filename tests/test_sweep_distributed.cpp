@@ -226,8 +226,9 @@ TEST(SweepDistributed, EveryHardwareFrontPointIsSynthesizedByTheRun) {
       EXPECT_EQ(f[col["rtl"]], "0") << row;
       EXPECT_EQ(f[col["area_source"]], "estimate") << row;
     }
-    if (f[col["whatif_cycles"]] == "1" || f[col["whatif_area"]] == "1")
+    if (f[col["whatif_cycles"]] == "1" || f[col["whatif_area"]] == "1") {
       EXPECT_EQ(f[col["rtl"]], "0") << row;
+    }
     if (!on_front) continue;
     ++front;
     EXPECT_EQ(f[col["rtl"]], "1") << row;
