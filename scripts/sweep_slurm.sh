@@ -10,7 +10,9 @@
 #    estimate; they are submitted as a synthesis array (scripts/sweep_synth_task.sh: Yosys
 #    Xilinx 7, and iCE40 place and route for the traditional unit) with a further merge job
 #    afterok on it; up to R rounds (default 3: synthesized areas move points on and off the area
-#    front). Then the final merge: `trirast sweep --merge RESULTS --out OUT`, or with --doc
+#    front). The list holds every buildable configuration on a hardware front (and both default
+#    units) whose area is not from this run's synthesis: docs/synth.csv rows of an older RTL are
+#    redone. Model-only configurations (quotient truncation K) are never synthesized (no RTL). Then the final merge: `trirast sweep --merge RESULTS --out OUT`, or with --doc
 #    scripts/sweep.sh --merge RESULTS (docs/speed-vs-error.md and its plots; --doc-out DIR: there).
 # 3. Waits for RESULTS/done (or RESULTS/failed) unless --no-wait; a failed shard or synthesis job
 #    is named, and the merge names the tasks without a result file.
@@ -29,6 +31,7 @@ if [ "${1:-}" = --stage ]; then
   # shellcheck disable=SC1091
   . "$RES/run.env"
   fail() { echo "sweep_slurm.sh: $*" >&2; echo "$*" > "$RES/failed"; exit 1; }
+  echo "$(date -u +%s) $(cut -d' ' -f1-3 /proc/loadavg) merge-$ROUND" >> "$RES/load.txt"
   if [ "$SYNTH" = 1 ] && [ "$ROUND" -lt "$ROUNDS" ]; then
     TODO="$RES/synth-todo-$ROUND.txt"
     "$BIN" sweep "${SEL[@]}" --merge "$RES" --out "$RES/round-$ROUND" --synth-todo "$TODO" \
@@ -95,7 +98,11 @@ SEL=("${QUICK_ARG[@]}" --no-progress --synth-csv "$ROOT/docs/synth.csv" --synth-
 TASKS=$(wc -l < "$RES/tasks.txt")
 [ "$SHARDS" -le "$TASKS" ] || SHARDS=$TASKS
 JOBNAME="trirast-sweep-$(basename "$RES")-$$"
-rm -f "$RES/done" "$RES/failed" "$RES"/status/*
+rm -f "$RES/done" "$RES/failed" "$RES"/status/* "$RES/load.txt"
+# The load during the run (the report names it): "EPOCH LOAD1 LOAD5 LOAD15 WHAT" lines, one at
+# submission, one per merge job, and every 30 s while this script waits.
+echo "$(nproc)" > "$RES/cpus.txt"
+echo "$(date -u +%s) $(cut -d' ' -f1-3 /proc/loadavg) submit" >> "$RES/load.txt"
 {
   echo "BIN='$BIN'"
   echo "OUT='$OUT'"
@@ -117,7 +124,13 @@ echo "sweep_slurm.sh: $TASKS tasks in $SHARDS shards: array job $SIM, merge job 
 [ "$WAIT" = 1 ] || { echo "sweep_slurm.sh: not waiting: $RES/done (or $RES/failed) appears at the end"; exit 0; }
 
 START=$(date +%s)
+LAST_SAMPLE=$START
 while :; do
+  now=$(date +%s)
+  if [ $((now - LAST_SAMPLE)) -ge 30 ]; then
+    echo "$now $(cut -d' ' -f1-3 /proc/loadavg) wait" >> "$RES/load.txt"
+    LAST_SAMPLE=$now
+  fi
   [ -f "$RES/done" ] && break
   [ -f "$RES/failed" ] && break
   if [ -z "$(squeue -h -n "$JOBNAME" -o %i 2>/dev/null)" ]; then

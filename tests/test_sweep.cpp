@@ -122,6 +122,7 @@ TEST(SweepScript, QuickModeWritesEveryOutput) {
        {"Pareto", "cycles front", "area front", "Improved vs traditional", "32%", "3,120", "4,653",
         "3,728", "6,936", "float scanline", "Cracks and double hits", "trirast fit",
         "builtin:sphere:tess=12", "builtin:lowpoly-near", "builtin:hard-tiny", "estimate",
+        "Model-only what-ifs", "buildable hardware",
         "quick mode"})
     EXPECT_NE(md.find(needle), std::string::npos) << "report lacks: " << needle;
 }
@@ -206,6 +207,25 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
   }
   EXPECT_GT(front_c, 0);
   EXPECT_GT(front_a, 0);
+  // The fronts are of buildable hardware: a quotient-truncation (K) configuration has no RTL and
+  // is never on one (at most a model-only what-if); a point on a front is buildable.
+  int k_rows = 0;
+  for (const auto& r : cfgs) {
+    const bool k = !r.at("quotient_bits").empty() && r.at("quotient_bits") != "0";
+    k_rows += k;
+    if (k) {
+      EXPECT_EQ(r.at("rtl"), "0") << r.at("config");
+      EXPECT_EQ(r.at("pareto_cycles"), "0") << r.at("config");
+      EXPECT_EQ(r.at("pareto_area"), "0") << r.at("config");
+    }
+    if (r.at("pareto_cycles") == "1" || r.at("pareto_area") == "1") {
+      EXPECT_EQ(r.at("rtl"), "1") << r.at("config");
+    }
+    if (r.at("whatif_cycles") == "1" || r.at("whatif_area") == "1") {
+      EXPECT_EQ(r.at("rtl"), "0") << r.at("config");
+    }
+  }
+  EXPECT_GT(k_rows, 0);
   EXPECT_FALSE(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("luts").empty());
 }
 

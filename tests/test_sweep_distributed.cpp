@@ -106,6 +106,144 @@ TEST(SweepDistributed, SynthesisJobRowsReplaceTheEstimateOfTheirConfiguration) {
   EXPECT_NE(area.estimate(UnitKind::Improved, c13).luts, 1234);
 }
 
+// The hardware fronts hold buildable configurations only: an improved configuration with quotient
+// truncation K (C++ model only, no RTL) is never on a front, even when it dominates; it is marked
+// as a model-only what-if instead.
+TEST(SweepDistributed, QuotientTruncationIsAWhatIfNeverOnAHardwareFront) {
+  auto point = [](double err, double cyc, double luts, bool rtl) {
+    PointSummary s;
+    s.error_ppm = err;
+    s.cycles_per_triangle = cyc;
+    s.timed = true;
+    s.area.luts = luts;
+    s.area.source = rtl ? "synth:xilinx7" : "estimate";
+    s.rtl = rtl;
+    return s;
+  };
+  // 0: exact and big; 1: K, dominating 2 on both; 2: hardware; 3: K, dominated by 0.
+  std::vector<PointSummary> all = {point(0, 10, 6000, true), point(5, 8, 4000, false),
+                                   point(10, 9, 5000, true), point(20, 11, 7000, false)};
+  mark_pareto(all);
+  EXPECT_TRUE(all[0].pareto_cycles && all[0].pareto_area);
+  EXPECT_FALSE(all[1].pareto_cycles || all[1].pareto_area);
+  EXPECT_TRUE(all[1].whatif_cycles && all[1].whatif_area);
+  EXPECT_TRUE(all[2].pareto_cycles && all[2].pareto_area);  // K does not push it off
+  EXPECT_FALSE(all[2].whatif_cycles || all[2].whatif_area);
+  EXPECT_FALSE(all[3].pareto_cycles || all[3].pareto_area || all[3].whatif_cycles ||
+               all[3].whatif_area);
+  SweepPoint k;
+  k.engine = "improved-sc";
+  k.cfg.divider_quotient_bits = 6;
+  EXPECT_FALSE(k.rtl());
+  k.cfg.divider_quotient_bits = 0;
+  EXPECT_TRUE(k.rtl());
+  k.engine = "trad-sc";
+  EXPECT_TRUE(k.rtl());
+  k.engine = "float-scanline";
+  EXPECT_FALSE(k.rtl());
+}
+
+// The synthesis rounds of a distributed run: --synth-todo lists the buildable front configurations
+// (and both default units) whose area is not from the run's own synthesis jobs, docs/synth.csv
+// rows included (they may be of an older RTL), never a K configuration; once each listed
+// configuration has a result file, no front point carries an estimated or reused area.
+TEST(SweepDistributed, EveryHardwareFrontPointIsSynthesizedByTheRun) {
+  TempDir d;
+  const std::string res = d.file("res");
+  const CommandResult sim =
+      run_command(kBin + " sweep --quick --no-progress" + kArea + " --shard 0/1 --out " + res);
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  mkdir((res + "/synth").c_str(), 0777);
+  std::set<std::string> synthesized;
+  std::string first_todo;
+  int rounds = 0;
+  for (; rounds < 8; ++rounds) {
+    const std::string todo = d.file("todo-" + std::to_string(rounds));
+    const CommandResult m = run_command(kBin + " sweep --quick --no-progress" + kArea +
+                                        " --merge " + res + " --out " + d.file("m") +
+                                        " --synth-todo " + todo);
+    ASSERT_EQ(m.status, 0) << m.err;
+    const std::string list = slurp(todo);
+    if (rounds == 0) first_todo = list;
+    if (list.empty()) break;
+    std::istringstream in(list);
+    std::string line;
+    while (std::getline(in, line)) {
+      EXPECT_TRUE(synthesized.insert(line).second) << "listed twice: " << line;
+      // A stand-in for scripts/synth.sh --one (its result file format): made-up figures.
+      std::vector<int> f;
+      std::string unit = line.substr(0, line.find(':')), rest = line.substr(line.find(':') + 1);
+      std::istringstream fs(rest);
+      for (std::string x; std::getline(fs, x, ':');) f.push_back(std::stoi(x));
+      ASSERT_EQ(f.size(), 4u) << line;
+      const int luts = (unit == "trad" ? 900 : 2000) + 100 * f[0] + 50 * f[1] + 20 * f[2] + 3000 * (f[3] - 1);
+      test::write_file(res + "/synth/" + unit + "-" + std::to_string(rounds) + "-" +
+                           std::to_string(synthesized.size()) + ".synth",
+                       "# trirast-synth-result 1\n"
+                       "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,"
+                       "coord_bits,box_bits,endpoints,seconds\n" +
+                           unit + ",x,xilinx7," + std::to_string(luts) + "," +
+                           std::to_string(luts / 3) + ",0,0,0,," + std::to_string(f[0]) + "," +
+                           std::to_string(f[1]) + "," + std::to_string(f[2]) + "," +
+                           std::to_string(f[3]) + ",1\n# end\n");
+    }
+  }
+  ASSERT_LT(rounds, 8) << "the synthesis rounds did not converge";
+  // docs/synth.csv covers both default units, yet they are redone (this tree's RTL).
+  EXPECT_NE(first_todo.find("improved:8:16:14:1\n"), std::string::npos) << first_todo;
+  EXPECT_NE(first_todo.find("trad:8:16:14:1\n"), std::string::npos) << first_todo;
+  // The final merge: every front point is buildable and synthesized by the run; K never on one.
+  std::istringstream csv(slurp(d.file("m/sweep_configs.csv")));
+  std::string header, row;
+  std::getline(csv, header);
+  std::map<std::string, size_t> col;
+  {
+    std::istringstream hs(header);
+    size_t i = 0;
+    for (std::string h; std::getline(hs, h, ',');) col[h] = i++;
+  }
+  for (const char* c : {"pareto_cycles", "pareto_area", "area_source", "quotient_bits", "rtl",
+                        "whatif_cycles", "whatif_area", "unit", "subpixel_bits", "coord_bits",
+                        "box_bits", "endpoints"})
+    ASSERT_TRUE(col.count(c)) << c;
+  int front = 0, k_rows = 0;
+  while (std::getline(csv, row)) {
+    std::vector<std::string> f;
+    std::string cell;
+    bool q = false;
+    for (char ch : row) {
+      if (ch == '"') q = !q;
+      else if (ch == ',' && !q) { f.push_back(cell); cell.clear(); }
+      else cell += ch;
+    }
+    f.push_back(cell);
+    ASSERT_EQ(f.size(), col.size()) << row;
+    const bool on_front = f[col["pareto_cycles"]] == "1" || f[col["pareto_area"]] == "1";
+    const bool k = !f[col["quotient_bits"]].empty() && f[col["quotient_bits"]] != "0";
+    if (k) {
+      ++k_rows;
+      EXPECT_FALSE(on_front) << row;
+      EXPECT_EQ(f[col["rtl"]], "0") << row;
+      EXPECT_EQ(f[col["area_source"]], "estimate") << row;
+    }
+    if (f[col["whatif_cycles"]] == "1" || f[col["whatif_area"]] == "1") {
+      EXPECT_EQ(f[col["rtl"]], "0") << row;
+    }
+    if (!on_front) continue;
+    ++front;
+    EXPECT_EQ(f[col["rtl"]], "1") << row;
+    EXPECT_EQ(f[col["area_source"]], "synth:xilinx7") << row;
+    // ... from one of the run's synthesis results, not docs/synth.csv.
+    const bool trad = f[col["unit"]] == "trad";
+    const std::string line = f[col["unit"]] + ":" + f[col["subpixel_bits"]] + ":" +
+                             f[col["coord_bits"]] + ":" + (trad ? "14" : f[col["box_bits"]]) +
+                             ":" + (trad ? "1" : f[col["endpoints"]]);
+    EXPECT_TRUE(synthesized.count(line)) << line;
+  }
+  EXPECT_GT(front, 0);
+  EXPECT_GT(k_rows, 0);
+}
+
 TEST(SweepDistributed, UnknownShardOrTaskIsAOneLineErrorNamingTheOption) {
   TempDir d;
   for (const char* bad : {"4/4", "1-4", "-1/4", "a/4", "3/0", "/4", "1/", "1/4/2"})

@@ -284,6 +284,7 @@ Json area_model_json(const AreaModel& area, const std::string& csv) {
                   .set("ffs", r.ffs)
                   .set("endpoints", r.endpoints)
                   .set("file", r.origin.empty() ? csv : r.origin)
+                  .set("from_run", r.from_run)
                   .set("estimate", [&] {  // the width formula's figures for the same widths
                     RasterConfig c;
                     c.subpixel_bits = r.subpixel_bits;
@@ -367,7 +368,7 @@ int cmd_sweep(int argc, char** argv) {
              {"--task", "I", "run task I only (as --shard)", ""},
              {"--merge", "DIR", "build the outputs from DIR/tasks (and DIR/synth) instead of running the points", ""},
              {"--allow-partial", "", "--merge: merge even when tasks have no result file (the output says partial)", ""},
-             {"--synth-todo", "FILE", "--merge: write the front configurations whose area is an estimate (UNIT:S:COORD:BOX:N lines)", ""},
+             {"--synth-todo", "FILE", "--merge: write the buildable front configurations (and both default units) whose area is not from DIR/synth (UNIT:S:COORD:BOX:N lines)", ""},
          });
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -597,7 +598,7 @@ int cmd_sweep(int argc, char** argv) {
                                                    ") where it covers a configuration, else estimate")
                                                       .c_str()
                                                 : "estimates only (no synthesis CSV)");
-  std::printf("  %-40s %12s %10s %10s %8s  %s\n", "Pareto (error, cycles)", "error ppm",
+  std::printf("  %-40s %12s %10s %10s %8s  %s\n", "Pareto, hardware (error, cycles)", "error ppm",
               "cyc/tri", "LUTs", "cracks", "");
   for (size_t p = 0; p < points.size(); ++p)
     if (summaries[p].pareto_cycles)

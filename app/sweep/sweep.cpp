@@ -76,6 +76,13 @@ UnitKind SweepPoint::kind() const {
   return UnitKind::Cpu;
 }
 
+bool SweepPoint::rtl() const {
+  const UnitKind k = kind();
+  if (k == UnitKind::Trad) return cfg.fifo_depth == RasterConfig{}.fifo_depth;
+  return k == UnitKind::Improved && cfg.divider_quotient_bits == 0 &&
+         cfg.fifo_depth == RasterConfig{}.fifo_depth;
+}
+
 std::string SweepPoint::config_name() const {
   std::string s = "S" + std::to_string(cfg.subpixel_bits) + " c" + std::to_string(cfg.coord_int_bits);
   if (kind() == UnitKind::Improved) {
@@ -286,6 +293,7 @@ PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& s
                        const std::vector<PointResult>& results, const AreaModel& area) {
   PointSummary s;
   s.area = area.area(p.kind(), p.cfg);
+  s.rtl = p.rtl();
   double golden_seconds = 0;
   int n = 0;
   for (size_t i = 0; i < scenes.size(); ++i) {
@@ -329,28 +337,29 @@ PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& s
 }
 
 void mark_pareto(std::vector<PointSummary>& all) {
-  auto front = [&](auto y_of, auto eligible, bool PointSummary::*flag) {
+  // Whether `a` is undominated among the points `competes` admits.
+  auto undominated = [&](const PointSummary& a, auto y_of, auto competes) {
+    for (const PointSummary& b : all) {
+      if (&a == &b || !competes(b)) continue;
+      const bool le = b.error_ppm <= a.error_ppm && y_of(b) <= y_of(a);
+      const bool lt = b.error_ppm < a.error_ppm || y_of(b) < y_of(a);
+      if (le && lt) return false;
+    }
+    return true;
+  };
+  auto fronts = [&](auto y_of, auto eligible, bool PointSummary::*hw, bool PointSummary::*whatif) {
+    auto hardware = [&](const PointSummary& s) { return eligible(s) && s.rtl; };
     for (PointSummary& a : all) {
-      if (!eligible(a)) continue;
-      bool dominated = false;
-      for (const PointSummary& b : all) {
-        if (&a == &b || !eligible(b)) continue;
-        const bool le = b.error_ppm <= a.error_ppm && y_of(b) <= y_of(a);
-        const bool lt = b.error_ppm < a.error_ppm || y_of(b) < y_of(a);
-        if (le && lt) {
-          dominated = true;
-          break;
-        }
-      }
-      a.*flag = !dominated;
+      a.*hw = hardware(a) && undominated(a, y_of, hardware);
+      a.*whatif = eligible(a) && !a.rtl && undominated(a, y_of, eligible);
     }
   };
-  front([](const PointSummary& s) { return s.cycles_per_triangle; },
-        [](const PointSummary& s) { return s.timed && s.failures == 0; },
-        &PointSummary::pareto_cycles);
-  front([](const PointSummary& s) { return s.area.luts; },
-        [](const PointSummary& s) { return s.area.known() && s.failures == 0; },
-        &PointSummary::pareto_area);
+  fronts([](const PointSummary& s) { return s.cycles_per_triangle; },
+         [](const PointSummary& s) { return s.timed && s.failures == 0; },
+         &PointSummary::pareto_cycles, &PointSummary::whatif_cycles);
+  fronts([](const PointSummary& s) { return s.area.luts; },
+         [](const PointSummary& s) { return s.area.known() && s.failures == 0; },
+         &PointSummary::pareto_area, &PointSummary::whatif_area);
 }
 
 // ---- outputs ---------------------------------------------------------------------------------------
@@ -433,7 +442,8 @@ std::string sweep_configs_csv(const std::vector<SweepPoint>& points,
   std::string out = std::string(kConfigHeader) +
                     ",error_ppm,missing_ppm,extra_ppm,max_error_ppm,exact,cracks,doubles,offered,"
                     "rejected,total_cycles,cycles_per_triangle,cycles_per_pixel,luts,ffs,"
-                    "area_source,wall_seconds,wall_ratio,pareto_cycles,pareto_area,failures\n";
+                    "area_source,wall_seconds,wall_ratio,pareto_cycles,pareto_area,failures,rtl,"
+                    "whatif_cycles,whatif_area\n";
   for (size_t p = 0; p < points.size(); ++p) {
     const PointSummary& s = summaries[p];
     out += config_columns(points[p]) + "," + fmt("%.3f", s.error_ppm) + "," +
@@ -445,7 +455,8 @@ std::string sweep_configs_csv(const std::vector<SweepPoint>& points,
            (s.timed ? fmt("%.5f", s.cycles_per_pixel) : "") + "," + area_columns(s.area) + "," +
            fmt("%.6f", s.wall_seconds) + "," + fmt("%.4f", s.wall_ratio) + "," +
            (s.pareto_cycles ? "1" : "0") + "," + (s.pareto_area ? "1" : "0") + "," +
-           std::to_string(s.failures) + "\n";
+           std::to_string(s.failures) + "," + (s.rtl ? "1" : "0") + "," +
+           (s.whatif_cycles ? "1" : "0") + "," + (s.whatif_area ? "1" : "0") + "\n";
   }
   return out;
 }
@@ -504,12 +515,17 @@ Json point_summary_json(const PointSummary& s) {
     j.set("total_cycles", s.total_cycles)
         .set("cycles_per_triangle", s.cycles_per_triangle)
         .set("cycles_per_pixel", s.cycles_per_pixel);
-  if (s.area.known())
+  if (s.area.known()) {
     j.set("luts", s.area.luts).set("ffs", s.area.ffs).set("area_source", s.area.source);
+    if (!s.area.origin.empty()) j.set("area_origin", s.area.origin);
+  }
   j.set("wall_seconds", s.wall_seconds)
       .set("wall_ratio", s.wall_ratio)
       .set("pareto_cycles", s.pareto_cycles)
       .set("pareto_area", s.pareto_area)
+      .set("rtl", s.rtl)
+      .set("whatif_cycles", s.whatif_cycles)
+      .set("whatif_area", s.whatif_area)
       .set("failures", s.failures);
   return j;
 }

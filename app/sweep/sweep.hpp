@@ -36,6 +36,11 @@ struct SweepPoint {
   std::string group;    // the sweep axis the point belongs to ("S x N x K", "box bits", ...)
   RasterConfig cfg;     // cull is taken from the scene
   UnitKind kind() const;
+  // Whether the RTL implements the configuration (buildable hardware, so synthesizable): the
+  // traditional unit, and the improved unit without quotient truncation (K) and with the default
+  // FIFO depth. An improved configuration with K is a C++-model-only what-if: no RTL, its area
+  // stays an estimate, and it is never on a hardware front.
+  bool rtl() const;
   // "S8 c16 b14 K- N1" plus "fixed" / "divide" when not the default.
   std::string config_name() const;
   std::string label() const { return engine + " " + config_name(); }
@@ -105,13 +110,21 @@ struct PointSummary {
   bool timed = false;
   int failures = 0;                // scenes where the point failed
   Area area;
+  bool rtl = false;                // SweepPoint::rtl(): buildable hardware
+  // The hardware fronts: among the buildable (rtl) timed points without failures.
   bool pareto_cycles = false;      // on the front of (error, cycles per triangle)
   bool pareto_area = false;        // on the front of (error, LUTs)
+  // Model-only what-ifs (not rtl): the point would be on the front of (error, cycles) / (error,
+  // LUTs) taken over every point, buildable or not. Never set for a buildable point.
+  bool whatif_cycles = false;
+  bool whatif_area = false;
 };
 
 PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& scenes,
                        const std::vector<PointResult>& results, const AreaModel& area);
-// Marks the Pareto fronts (minimize both coordinates) among timed points without failures.
+// Marks the Pareto fronts (minimize both coordinates) of buildable hardware (rtl) among the points
+// without failures (cycles: timed points; area: points with an area), and the model-only
+// what-if points (whatif_*: not rtl, undominated when every point competes).
 void mark_pareto(std::vector<PointSummary>& summaries);
 
 // Rows of the per-scene CSV / the per-configuration CSV, header first.

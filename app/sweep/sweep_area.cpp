@@ -160,6 +160,7 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
     r.subpixel_bits = w->second[0];
     r.coord_bits = w->second[1];
     r.box_bits = w->second[2];
+    r.origin = synth_csv;
     rows_.push_back(r);
   }
   // One target for every number: Xilinx 7 when present (the paper's FPGA LUTs), else the first.
@@ -172,7 +173,11 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
   rows_.erase(std::remove_if(rows_.begin(), rows_.end(),
                              [&](const SynthRow& r) { return r.target != target_; }),
               rows_.end());
-  // Calibrate the estimate to the synthesized default improved unit.
+  calibrate();
+}
+
+// Scales the estimate to the synthesized default improved unit, when synthesis has it.
+void AreaModel::calibrate() {
   const RasterConfig def;
   if (const SynthRow* d = find("improved", def)) {
     const AreaTerms t = improved_area_terms(def);
@@ -202,7 +207,9 @@ void AreaModel::add_rows(const std::vector<SynthRow>& rows) {
     };
     rows_.erase(std::remove_if(rows_.begin(), rows_.end(), same), rows_.end());
     rows_.push_back(r);
+    rows_.back().from_run = true;
   }
+  calibrate();
 }
 
 Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
@@ -235,6 +242,8 @@ Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
       a.luts = r->luts;
       a.ffs = r->ffs;
       a.source = "synth:" + r->target;
+      a.origin = r->origin;
+      a.from_run = r->from_run;
       return a;
     }
   return estimate(kind, cfg);

@@ -423,16 +423,20 @@ std::string synth_todo(const std::vector<SweepPoint>& points,
   std::string out;
   std::set<std::string> seen;
   no_rtl.clear();
+  const RasterConfig def;
   for (size_t p = 0; p < points.size(); ++p) {
     const PointSummary& s = summaries[p];
-    if (!(s.pareto_cycles || s.pareto_area) || !s.area.estimate()) continue;
     const RasterConfig& c = points[p].cfg;
     const UnitKind k = points[p].kind();
-    if ((k == UnitKind::Improved && c.divider_quotient_bits > 0) ||
-        c.fifo_depth != RasterConfig{}.fifo_depth) {
-      no_rtl.push_back(points[p].label());
-      continue;
-    }
+    if (s.whatif_cycles || s.whatif_area) no_rtl.push_back(points[p].label());
+    if (!points[p].rtl() || !s.area.known() || s.area.from_run) continue;
+    // The default configurations of both units: the estimate's calibration point and the
+    // improved-vs-traditional area comparison.
+    const bool reference = c.subpixel_bits == def.subpixel_bits &&
+                           c.coord_int_bits == def.coord_int_bits &&
+                           (k == UnitKind::Trad ||
+                            (c.box_bits == def.box_bits && c.endpoints == 1));
+    if (!(s.pareto_cycles || s.pareto_area || reference)) continue;
     const std::string line = std::string(unit_kind_name(k)) + ":" +
                              std::to_string(c.subpixel_bits) + ":" +
                              std::to_string(c.coord_int_bits) + ":" +

@@ -11,9 +11,9 @@
 // scene's reference figures and the PointResult; doubles in hex, exact), then "end". Written to a
 // temporary name and renamed when complete, so a file without "end" was cut short.
 //
-// Synthesis tasks: after the simulation, `--merge DIR --synth-todo FILE` lists the configurations
-// on a Pareto front whose area is an estimate and that the RTL can realize (no quotient
-// truncation); scripts/sweep_synth_task.sh synthesizes one line into DIR/synth/NAME.synth, which
+// Synthesis tasks: after the simulation, `--merge DIR --synth-todo FILE` lists the buildable
+// configurations on a hardware Pareto front (no quotient truncation) whose area is not from this
+// run's synthesis (synth_todo); scripts/sweep_synth_task.sh synthesizes one line into DIR/synth/NAME.synth, which
 // the next merge reads (read_synth_results).
 #pragma once
 #include <cstddef>
@@ -100,8 +100,11 @@ void merge_task_results(const std::string& dir, const std::string& fingerprint,
 // short or malformed. No directory: no rows.
 std::vector<SynthRow> read_synth_results(const std::string& dir);
 
-// Configurations on a front (cycles or area) whose area is an estimate: "UNIT:S:COORD:BOX:N" lines
-// for those the RTL realizes (no quotient truncation), deduplicated; the others in `no_rtl`.
+// Configurations to synthesize in a distributed run, as "UNIT:S:COORD:BOX:N" lines (deduplicated):
+// every buildable configuration (SweepPoint::rtl) on a hardware front, and the default improved
+// and traditional units (the estimate's calibration, the units' comparison), whose area is not yet
+// from this run's synthesis jobs (an estimate, or a docs/synth.csv row of an older RTL).
+// `no_rtl`: the model-only what-if points (whatif_cycles / whatif_area), which have no RTL.
 std::string synth_todo(const std::vector<SweepPoint>& points,
                        const std::vector<PointSummary>& summaries,
                        std::vector<std::string>& no_rtl);
