@@ -42,14 +42,9 @@ RES="${RES:-$ROOT/build/sweep-parallel}"
 mkdir -p "$RES/logs"
 RES="$(cd "$RES" && pwd)"
 OUT="${OUT:-$RES/out}"
-BIN="${BIN:-${TRIRAST_BIN:-$ROOT/build/trirast}}"
-[ -x "$BIN" ] || die "no trirast binary at $BIN (build it, or --bin PATH)"
-BIN="$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN")"
-QUICK_ARG=(); [ "$QUICK" = 1 ] && QUICK_ARG=(--quick)
-SEL=("${QUICK_ARG[@]}" --no-progress --synth-csv "$ROOT/docs/synth.csv" --synth-script "$ROOT/scripts/synth.sh" "$@")
-"$BIN" sweep "${SEL[@]}" --list-tasks > "$RES/tasks.txt" || die "trirast sweep --list-tasks failed"
-TASKS=$(wc -l < "$RES/tasks.txt")
-[ "$SHARDS" -le "$TASKS" ] || SHARDS=$TASKS
+# shellcheck source=scripts/sweep_tasks.sh
+. "$ROOT/scripts/sweep_tasks.sh"
+sweep_tasks_prepare "$@"
 START=$(date +%s)
 
 failed_jobs() {  # failed_jobs JOBLOG WHAT: names the jobs of parallel's joblog that failed

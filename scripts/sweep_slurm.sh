@@ -89,14 +89,9 @@ RES="$(cd "$RES" && pwd)"
 OUT="${OUT:-$RES/out}"
 mkdir -p "$OUT"; OUT="$(cd "$OUT" && pwd)"
 if [ -n "$DOC_OUT" ]; then mkdir -p "$DOC_OUT"; DOC_OUT="$(cd "$DOC_OUT" && pwd)"; fi
-BIN="${BIN:-${TRIRAST_BIN:-$ROOT/build/trirast}}"
-[ -x "$BIN" ] || die "no trirast binary at $BIN (build it, or --bin PATH)"
-BIN="$(cd "$(dirname "$BIN")" && pwd)/$(basename "$BIN")"
-QUICK_ARG=(); [ "$QUICK" = 1 ] && QUICK_ARG=(--quick)
-SEL=("${QUICK_ARG[@]}" --no-progress --synth-csv "$ROOT/docs/synth.csv" --synth-script "$ROOT/scripts/synth.sh" "${SEL_EXTRA[@]}")
-"$BIN" sweep "${SEL[@]}" --list-tasks > "$RES/tasks.txt" || die "trirast sweep --list-tasks failed"
-TASKS=$(wc -l < "$RES/tasks.txt")
-[ "$SHARDS" -le "$TASKS" ] || SHARDS=$TASKS
+# shellcheck source=scripts/sweep_tasks.sh
+. "$ROOT/scripts/sweep_tasks.sh"
+sweep_tasks_prepare "${SEL_EXTRA[@]}"
 JOBNAME="trirast-sweep-$(basename "$RES")-$$"
 rm -f "$RES/done" "$RES/failed" "$RES"/status/* "$RES/load.txt"
 # The load during the run (the report names it): "EPOCH LOAD1 LOAD5 LOAD15 WHAT" lines, one at
