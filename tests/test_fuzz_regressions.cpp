@@ -374,7 +374,14 @@ TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
               "improved-datapath --out " +
               again.path());
   ASSERT_EQ(files_in(again.path(), ".tri"), files);
-  for (const std::string& f : files) EXPECT_EQ(slurp(again.file(f)), slurp(dir.file(f)));
+  // Equal but for the folder the replay line names the reproducer in.
+  auto in_folder = [](std::string text, const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+    return text;
+  };
+  for (const std::string& f : files)
+    EXPECT_EQ(slurp(again.file(f)), in_folder(slurp(dir.file(f)), dir.path(), again.path()));
   // --max-reproducers caps the files, not the count.
   TempDir capped;
   const CommandResult c =
