@@ -2,6 +2,7 @@
 // packing and the FST -> VCD conversion of a trace.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -16,16 +17,24 @@ namespace rtl {
 
 constexpr int words(int bits) { return (bits + 31) / 32; }
 
+// Set bits of a 3-bit lane mask (no popcount instruction is assumed).
+constexpr unsigned ones3(unsigned v) { return (v & 1u) + ((v >> 1) & 1u) + ((v >> 2) & 1u); }
+
 // A little-endian bit buffer of Words 32-bit words for the wide ports.
 template <int Words>
 struct Bits {
   uint32_t w[Words] = {};
+  // Writes the low `width` bits of v (sign-extended beyond 64) at bit lsb, a word at a time.
   void put(int lsb, int width, int64_t v) {
-    const uint64_t u = uint64_t(v);
-    for (int b = 0; b < width; ++b) {
-      const int pos = lsb + b;
-      const uint32_t bit = b < 64 ? uint32_t((u >> b) & 1u) : uint32_t(u >> 63);
-      w[pos / 32] = (w[pos / 32] & ~(1u << (pos % 32))) | (bit << (pos % 32));
+    int b = 0;
+    while (b < width) {
+      const int pos = lsb + b, word = pos / 32, shift = pos % 32;
+      const int n = std::min(width - b, 32 - shift);
+      const uint64_t chunk = b < 64 ? uint64_t(v) >> b | (b > 0 && v < 0 ? ~uint64_t(0) << (64 - b) : 0)
+                                    : (v < 0 ? ~uint64_t(0) : 0);
+      const uint32_t mask = (n == 32 ? ~0u : ((1u << n) - 1u)) << shift;
+      w[word] = (w[word] & ~mask) | ((uint32_t(chunk) << shift) & mask);
+      b += n;
     }
   }
 };

@@ -56,8 +56,8 @@ struct ImprovedPorts {
   // boundary column step.
   void observe_setup(const Top& top, TriangleCycles& tc) const {
     const unsigned busy = top.lane_busy_o, div = top.lane_div_o;
-    tc.divider_iterations += unsigned(__builtin_popcount(busy & div));
-    tc.boundary_steps += unsigned(__builtin_popcount(busy & ~div & 7u));
+    tc.divider_iterations += ones3(busy & div);
+    tc.boundary_steps += ones3(busy & ~div & 7u);
   }
   void observe_handoff(const Top& top, TriangleCycles& tc) const {
     tc.box_width = uint64_t(top.box_xmax_o) + 1;
@@ -75,7 +75,6 @@ struct ImprovedPorts {
   // the walk stage and the span generator in a cycle whose group goes, and the walk stage stalls
   // in a cycle without room.
   void count(const Top& top, ModuleCycles& m) const {
-    const auto* r = top.rootp;
     const unsigned st = top.setup_state_o;
     m.busy[kImpSetup] += st >= kRtlStBox && st <= kRtlStLanes;
     m.stall[kImpSetup] += st == kRtlStHold && top.walk_busy_o;
@@ -84,12 +83,10 @@ struct ImprovedPorts {
     m.busy[kImpLane0 + 0] += lanes & 1u;
     m.busy[kImpLane0 + 1] += (lanes >> 1) & 1u;
     m.busy[kImpLane0 + 2] += (lanes >> 2) & 1u;
-    m.busy[kImpDivider0 + 0] +=
-        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__0__KET____DOT__u_lane__DOT__div_en;
-    m.busy[kImpDivider0 + 1] +=
-        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__1__KET____DOT__u_lane__DOT__div_en;
-    m.busy[kImpDivider0 + 2] +=
-        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__2__KET____DOT__u_lane__DOT__div_en;
+    const unsigned dividers = top.probe_div_en_o;
+    m.busy[kImpDivider0 + 0] += dividers & 1u;
+    m.busy[kImpDivider0 + 1] += (dividers >> 1) & 1u;
+    m.busy[kImpDivider0 + 2] += (dividers >> 2) & 1u;
     if (top.walk_busy_o) {
       const bool stall = top.walk_stall_o;
       m.busy[kImpWalk] += !stall;

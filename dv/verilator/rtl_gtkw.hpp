@@ -56,13 +56,19 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
       // (Parameters are constants, and an unnamed block's variables loop counters: left out.)
       if (group_of.back() < 0) {
         group_of.back() = int(save.groups.size());
-        // The top's ports open; each module instance a closed group named by its path.
-        // Named by the instance path below the top ("u_setup.g_edge[0].u_lane"); the top's
-        // ports are "ports", the top module's own signals "top".
-        std::string gname = scope.size() == 1 ? "ports" : scope.size() == 2 ? "top" : "";
-        for (size_t i = 2; i < scope.size(); ++i) gname += (i > 2 ? "." : "") + scope[i];
+        // Scopes: the model's ports (1), the harness's top TOP_sim (2: the configuration
+        // register and probes, scripts/gen_sim_top.py), the unit u_dut (3) and its instances.
+        // The ports open; each module instance a closed group named by its path below the unit
+        // ("u_setup.g_edge[0].u_lane"), the unit's own signals "top".
+        constexpr size_t kUnitDepth = 3;
+        std::string gname = scope.size() == 1               ? "ports"
+                            : scope.size() == kUnitDepth - 1 ? "harness (configuration register)"
+                            : scope.size() == kUnitDepth     ? "top"
+                                                             : "";
+        for (size_t i = kUnitDepth; i < scope.size(); ++i)
+          gname += (i > kUnitDepth ? "." : "") + scope[i];
         save.groups.push_back(GtkwSave::Group{gname, scope.size() > 1, {}});
-        if (scope.size() <= 2) save.tree_open.push_back(path() + ".");
+        if (scope.size() <= kUnitDepth) save.tree_open.push_back(path() + ".");
       }
       // FST names a bus "name [msb:lsb]"; GTKWave lists it as "name[msb:lsb]".
       std::string name(h->u.var.name, h->u.var.name_length);

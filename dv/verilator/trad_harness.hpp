@@ -59,7 +59,6 @@ struct TradPorts {
   // and stalls in StHold while the walk stage is busy; the walk stage is busy in a cycle of a row
   // (not a stall); the long walker counts its steps, the short walker its two edges' steps.
   void count(const Top& top, ModuleCycles& m) const {
-    const auto* r = top.rootp;
     const unsigned st = top.setup_state_o;
     m.busy[kTradSetup] += st >= 1 && st <= 3;
     m.stall[kTradSetup] += st == kRtlStHold && top.walk_busy_o;
@@ -67,8 +66,8 @@ struct TradPorts {
       m.busy[kTradWalk] += !top.walk_stall_o;
       m.stall[kTradWalk] += top.walk_stall_o;
     }
-    m.busy[kTradLongWalker] += r->trirast_trad_top__DOT__u_walk__DOT__long_step;
-    m.busy[kTradShortWalker] += r->trirast_trad_top__DOT__u_walk__DOT__short_step;
+    m.busy[kTradLongWalker] += top.probe_long_step_o;
+    m.busy[kTradShortWalker] += top.probe_short_step_o;
   }
   void add_counters(const ModuleCycles& m, std::map<std::string, uint64_t>& work) const {
     work["busy_cycles.setup"] += m.busy[kTradSetup];
