@@ -19,6 +19,7 @@
 #include "fuzz/fuzz_scene.hpp"
 #include "io/output_file.hpp"
 #include "util.hpp"
+#include "verilator/rtl_builds.hpp"
 
 namespace trirast {
 
@@ -95,7 +96,9 @@ int cmd_fuzz(int argc, char** argv) {
                  "configuration, with a \"# replay:\" line (also printed) that runs as written\n"
                  "from this folder: trirast compare on the reproducer, exit status 1 while the\n"
                  "disagreement holds, 0 once fixed (and for an --inject-fault run, whose fault the\n"
-                 "replay does not have). Progress on stderr once a second.\n"
+                 "replay does not have). Progress on stderr once a second. With an RTL engine\n"
+                 "among --engines, the widths (subpixel, coordinate and box bits) are those of\n"
+                 "the Verilated builds, so no scene skips the RTL; without one, any widths.\n"
                  "Exit status: 0 no disagreement, 1 a disagreement, 2 bad usage.\n\n"
               << a.help_text();
     return 0;
@@ -163,8 +166,22 @@ int cmd_fuzz(int argc, char** argv) {
 
   std::string engine_list;
   for (const std::string& n : names) engine_list += (engine_list.empty() ? "" : ",") + n;
-  std::fprintf(stderr, "fuzz: seed %llu, engines %s, %s\n", (unsigned long long)seed,
-               engine_list.c_str(),
+  // With an RTL engine among them, the widths are those of its Verilated builds (every width
+  // configuration of docs/synth.md), so that no scene skips it.
+  std::vector<FuzzWidths> widths;
+  for (const EngineInfo* info : engines)
+    if (info->name.size() > 4 && info->name.compare(info->name.size() - 4, 4, "-rtl") == 0 &&
+        widths.empty())
+      for (const rtl::RtlBuild& b : rtl::improved_builds()) {
+        const FuzzWidths w{b.subpixel_bits, b.coord_int_bits, b.box_bits};
+        if (std::none_of(widths.begin(), widths.end(), [&](const FuzzWidths& o) {
+              return o.subpixel_bits == w.subpixel_bits && o.coord_int_bits == w.coord_int_bits &&
+                     o.box_bits == w.box_bits;
+            }))
+          widths.push_back(w);
+      }
+  std::fprintf(stderr, "fuzz: seed %llu, engines %s, widths %s, %s\n", (unsigned long long)seed,
+               engine_list.c_str(), widths.empty() ? "any" : "of the RTL builds",
                time_limited ? (std::to_string(seconds) + " s").c_str()
                             : (std::to_string(max_scenes) + " scenes").c_str());
 
@@ -181,7 +198,7 @@ int cmd_fuzz(int argc, char** argv) {
          (!time_limited || elapsed() < double(seconds))) {
     const uint64_t n = scenes++;
     RngDraws draws(scene_seed(seed, n));
-    const RasterConfig cfg = draw_fuzz_config(draws);
+    const RasterConfig cfg = draw_fuzz_config(draws, widths);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris));
     triangles += tris.size();
     uint64_t golden_pixels = 0;

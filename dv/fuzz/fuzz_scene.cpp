@@ -72,24 +72,35 @@ int bits_for(int64_t n) {  // smallest b with 2^b >= n
 
 }  // namespace
 
-RasterConfig draw_fuzz_config(FuzzDraws& d) {
+RasterConfig draw_fuzz_config(FuzzDraws& d, const std::vector<FuzzWidths>& widths) {
   RasterConfig cfg;
   cfg.width = draw_extent(d);
   cfg.height = d.chance(30) ? cfg.width : draw_extent(d);
-  // Two configurations in five keep the default widths (16.8, 14-bit boxes), the ones a Verilated
-  // RTL is built for; the rest vary every width.
-  const bool default_widths = d.chance(40);
-  cfg.subpixel_bits = default_widths || d.chance(30) ? 8 : int(d.range(0, 7));
-  const int extent = std::max(cfg.width, cfg.height);
-  // The range must hold the viewport (2^(N-1) >= extent) and keep edge values within 63 bits.
-  const int min_bits = std::max(2, bits_for(extent) + 1);
-  const int max_bits = std::min(24, 30 - cfg.frac_bits());
-  cfg.coord_int_bits = ((default_widths || d.chance(30)) && 16 >= min_bits && 16 <= max_bits)
-                           ? 16
-                           : int(d.range(min_bits, max_bits));
-  // The box is clipped to the viewport, so a box_bits that holds the viewport holds every box.
-  const int min_box = std::max(1, bits_for(extent));
-  cfg.box_bits = default_widths || d.chance(30) ? 14 : int(d.range(min_box, 14));
+  if (!widths.empty()) {
+    const FuzzWidths& w = widths[d.below(widths.size())];
+    cfg.subpixel_bits = w.subpixel_bits;
+    cfg.coord_int_bits = w.coord_int_bits;
+    cfg.box_bits = w.box_bits;
+    // The range must hold the viewport (2^(N-1) >= extent), and the box bits its extent.
+    const int cap = std::min(1 << (w.coord_int_bits - 1), 1 << w.box_bits);
+    cfg.width = std::min(cfg.width, cap);
+    cfg.height = std::min(cfg.height, cap);
+  } else {
+    // Two configurations in five keep the default widths (16.8, 14-bit boxes); the rest vary
+    // every width.
+    const bool default_widths = d.chance(40);
+    cfg.subpixel_bits = default_widths || d.chance(30) ? 8 : int(d.range(0, 7));
+    const int extent = std::max(cfg.width, cfg.height);
+    // The range must hold the viewport (2^(N-1) >= extent) and keep edge values within 63 bits.
+    const int min_bits = std::max(2, bits_for(extent) + 1);
+    const int max_bits = std::min(24, 30 - cfg.frac_bits());
+    cfg.coord_int_bits = ((default_widths || d.chance(30)) && 16 >= min_bits && 16 <= max_bits)
+                             ? 16
+                             : int(d.range(min_bits, max_bits));
+    // The box is clipped to the viewport, so a box_bits that holds the viewport holds every box.
+    const int min_box = std::max(1, bits_for(extent));
+    cfg.box_bits = default_widths || d.chance(30) ? 14 : int(d.range(min_box, 14));
+  }
   cfg.boundary = d.chance(50) ? BoundaryMode::Step : BoundaryMode::Divide;
   const uint64_t cull = d.below(10);
   cfg.cull = cull < 7 ? CullMode::None : cull < 9 ? CullMode::Back : CullMode::Front;

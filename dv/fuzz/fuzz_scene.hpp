@@ -79,10 +79,16 @@ enum class FuzzClass {
 };
 const char* fuzz_class_name(FuzzClass c);
 
+// Widths a configuration may be drawn with (a Verilated RTL build's package).
+struct FuzzWidths {
+  int subpixel_bits, coord_int_bits, box_bits;
+};
+
 // A configuration every engine must accept: viewport, subpixel bits, coordinate range, box bits
 // (always large enough for the viewport), boundary mode, culling, and the timed engines'
-// endpoints, FIFO depth and sink pattern.
-RasterConfig draw_fuzz_config(FuzzDraws& d);
+// endpoints, FIFO depth and sink pattern. With `widths` given, the widths are one of them (drawn
+// evenly) and the viewport is cut to what they hold; otherwise any widths.
+RasterConfig draw_fuzz_config(FuzzDraws& d, const std::vector<FuzzWidths>& widths = {});
 
 // One triangle of class `c`, vertices inside the configured coordinate range, in a random vertex
 // order and winding.
