@@ -69,10 +69,19 @@ function(trirast_add_rtl_builds)
 
   # The harness's top around each unit (scripts/gen_sim_top.py: the configuration register and
   # the probes the harness counts busy cycles from), generated like the packages.
-  foreach(_unit_top trirast_top trirast_trad_top)
+  set(_unit_tops "")
+  foreach(_b ${A_BUILDS})
+    string(REPLACE ":" ";" _f "${_b}")
+    list(GET _f 1 _t)
+    list(APPEND _unit_tops ${_t})
+  endforeach()
+  list(REMOVE_DUPLICATES _unit_tops)
+  foreach(_unit_top ${_unit_tops})
+    # The probes: internal signals the unit's harness counts busy cycles from.
+    set(_probes "")
     if(_unit_top STREQUAL "trirast_top")
       set(_probes --probe probe_div_en_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_en, u_dut.u_setup.g_edge[1].u_lane.div_en, u_dut.u_setup.g_edge[0].u_lane.div_en}")
-    else()
+    elseif(_unit_top STREQUAL "trirast_trad_top")
       set(_probes --probe probe_long_step_o 1 u_dut.u_walk.long_step
                   --probe probe_short_step_o 1 u_dut.u_walk.short_step)
     endif()
