@@ -5,6 +5,7 @@
 
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
+#include "unit/halfspace_unit.hpp"
 #include "unit/improved_unit.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "verilator/rtl_trad_engine.hpp"
@@ -30,6 +31,9 @@ const std::vector<EngineInfo>& engine_registry() {
       {"rtl-trad",
        "traditional Bresenham unit, Verilated RTL (rtl/trirast_trad.f): trad-sc's spans and cycles",
        false, make_rtl_trad_engine},
+      {"halfspace-datapath",
+       "half-space (edge-function) tile unit, bit-accurate datapath, untimed (docs/unit.md)", true,
+       make_halfspace_engine},
       {"float-scanline",
        "float scanline with the top-left rule as ceil(x - 0.5): a CPU baseline, not exact", false,
        make_float_scanline_engine},
