@@ -28,8 +28,12 @@ HalfspaceUnit::HalfspaceUnit(const RasterConfig& cfg)
 HsTriangleResult HalfspaceUnit::run_triangle(const TriangleSetup& t, SpanList& out) {
   HsTriangleResult res;
   res.setup = setup_.run(t);
+  if (!res.setup.empty) walk(res, out);
+  return res;
+}
+
+void HalfspaceUnit::walk(HsTriangleResult& res, SpanList& out) {
   const HsSetupOut& s = res.setup;
-  if (s.empty) return res;
   const int64_t U = p_.unit();
   const int64_t S = p_.stamp;
   HsWork& w = res.work;
@@ -75,7 +79,6 @@ HsTriangleResult HalfspaceUnit::run_triangle(const TriangleSetup& t, SpanList& o
     ++w.bands;
     res.bands.push_back(band);
   }
-  return res;
 }
 
 void add_hs_work(const HsWork& w, std::map<std::string, uint64_t>& work) {

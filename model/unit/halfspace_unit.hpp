@@ -39,6 +39,10 @@ class HalfspaceUnit {
   explicit HalfspaceUnit(const RasterConfig& cfg);
   // Runs one set-up triangle, appending its spans in row order.
   HsTriangleResult run_triangle(const TriangleSetup& t, SpanList& out);
+  // The two halves the timed views run in different stages: the setup stage's box and edge
+  // setup, and the walk stage's tile walker, stamp tester and span emitter (res.setup set).
+  HsSetupOut set_up(const TriangleSetup& t) const { return setup_.run(t); }
+  void walk(HsTriangleResult& res, SpanList& out);
 
  private:
   HsParams p_;
