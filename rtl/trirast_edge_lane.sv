@@ -78,7 +78,7 @@ module trirast_edge_lane (
   logic div_en, div_busy, div_last, div_sat;
   logic [NumerBits-1:0] div_n;
   logic [StepBits-1:0] div_d;
-  logic [QuotBits-1:0] div_q;
+  logic [QuotBits-1:0] div_quot;  // the divider's quotient
   logic [$clog2(QuotBits+1)-1:0] div_bits;
   logic [RemBits-1:0] div_r;
 
@@ -91,7 +91,7 @@ module trirast_edge_lane (
     .bits_i    (div_bits),
     .busy_o    (div_busy),
     .last_o    (div_last),
-    .quot_o    (div_q),
+    .quot_o    (div_quot),
     .rem_o     (div_r),
     .sat_o     (div_sat)
   );
@@ -100,12 +100,13 @@ module trirast_edge_lane (
   // dir +: f >= 0 on column 0; dir -: f < 0 on column Xmax. The operation the lane works on
   // skips the ones the edge does not need. (Plain signals, no functions: Icarus 11 loops on
   // functions with locals called from several always_comb blocks.)
-  logic entered_q, entered_d;
-  logic [1:0] skip1_q, skip2_q, skip3_q, skip1_d, skip2_d, skip3_d;
+  // Combinational: _now from this cycle's registers (_q), _next from the next state (_d).
+  logic entered_now, entered_next;
+  logic [1:0] skip1_now, skip2_now, skip3_now, skip1_next, skip2_next, skip3_next;
 
-  logic in_box_q, in_box_d;          // j <= Ymax
-  logic need_trav_q, need_trav_d;    // the traversal has work at (v, j)
-  logic need_entry_q, need_entry_d;  // the entry-x division is needed at (v, j)
+  logic in_box_now, in_box_next;          // j <= Ymax
+  logic need_trav_now, need_trav_next;    // the traversal has work at (v, j)
+  logic need_entry_now, need_entry_next;  // the entry-x division is needed at (v, j)
   logic [1:0] cur;                       // this cycle's operation
   logic div_busy_next;
   // Divide-mode traversal results.
@@ -118,14 +119,14 @@ module trirast_edge_lane (
   // This cycle's operation and the divider's operands: from the registers only.
   always_comb begin
     // Needs at the registered (v, j).
-    in_box_q     = j_q <= RowBits'(ymax_i);
-    entered_q    = dir_q ? !v_q[EdgeBits-1] : v_q[EdgeBits-1];
-    need_trav_q  = !entered_q && (divide_i ? (s_q != '0) : in_box_q);
-    need_entry_q = !horiz_q && entered_q && in_box_q;
-    skip1_q      = (phase_q == PhSlope && horiz_q) ? PhTrav : phase_q;
-    skip2_q      = (skip1_q == PhTrav && !need_trav_q) ? PhEntry : skip1_q;
-    skip3_q      = (skip2_q == PhEntry && !need_entry_q) ? PhDone : skip2_q;
-    cur          = div_busy ? phase_q : skip3_q;
+    in_box_now     = j_q <= RowBits'(ymax_i);
+    entered_now    = dir_q ? !v_q[EdgeBits-1] : v_q[EdgeBits-1];
+    need_trav_now  = !entered_now && (divide_i ? (s_q != '0) : in_box_now);
+    need_entry_now = !horiz_q && entered_now && in_box_now;
+    skip1_now      = (phase_q == PhSlope && horiz_q) ? PhTrav : phase_q;
+    skip2_now      = (skip1_now == PhTrav && !need_trav_now) ? PhEntry : skip1_now;
+    skip3_now      = (skip2_now == PhEntry && !need_entry_now) ? PhDone : skip2_now;
+    cur            = div_busy ? phase_q : skip3_now;
     // The divider's operands (single assignments; see below for why):
     // slope s / D -> q_s, r_s (X' moves q_s per row plus a carry from r_s), along x;
     // entry row (divide mode): dir + divides -T by s (first j with T + j*s >= 0), dir - divides
@@ -155,11 +156,11 @@ module trirast_edge_lane (
     ex_d    = ex_q;
     ee_d    = ee_q;
 
-    case (cur)
+    unique case (cur)
       PhSlope: begin
         phase_d = PhSlope;
         if (div_last) begin
-          qs_d    = div_q;
+          qs_d    = div_quot;
           rs_d    = div_r;
           ssat_d  = div_sat;
           phase_d = PhTrav;
@@ -185,9 +186,9 @@ module trirast_edge_lane (
         if (div_last) begin
           phase_d = PhDone;
           if (dir_q) begin
-            ex_d  = WalkerXBits'(div_q);
+            ex_d  = WalkerXBits'(div_quot);
             ee_d  = div_r;
-            est_d = (div_sat || div_q >= QuotBits'(xmax_i)) ? RowClear : RowBound;
+            est_d = (div_sat || div_quot >= QuotBits'(xmax_i)) ? RowClear : RowBound;
           end else begin
             ex_d  = xneg;
             ee_d  = carry ? d_q - div_r : '0;
@@ -215,28 +216,28 @@ module trirast_edge_lane (
   // Divider results turned into traversal and entry values (each assigned once).
   always_comb begin
     // Entry row: dir + j = q + (r != 0), value s - r (0 when r = 0); dir - j = q + 1, value r - s.
-    jdiv  = dir_q ? RowBits'(div_q) + RowBits'(div_r != '0) : RowBits'(div_q) + 1'b1;
+    jdiv  = dir_q ? RowBits'(div_quot) + RowBits'(div_r != '0) : RowBits'(div_quot) + 1'b1;
     vdiv  = dir_q ? ((div_r == '0) ? '0 : EdgeBits'(s_q) - EdgeBits'(div_r))
                   : EdgeBits'(div_r) - EdgeBits'(s_q);
     // Entry x, dir -: X'' = -q - (r != 0), X' = Xmax + X''.
     carry = div_r != '0;
-    xneg  = WalkerXBits'(xmax_i) - WalkerXBits'(div_q) - WalkerXBits'(carry);
+    xneg  = WalkerXBits'(xmax_i) - WalkerXBits'(div_quot) - WalkerXBits'(carry);
   end
 
   // Look ahead: will the lane still have work next cycle?
   always_comb begin
-    div_busy_next = div_en ? !div_last : div_busy;
-    in_box_d      = j_d <= RowBits'(ymax_i);
-    entered_d     = dir_d ? !v_d[EdgeBits-1] : v_d[EdgeBits-1];
-    need_trav_d   = !entered_d && (divide_i ? (s_d != '0) : in_box_d);
-    need_entry_d  = !horiz_d && entered_d && in_box_d;
-    skip1_d       = (phase_d == PhSlope && horiz_d) ? PhTrav : phase_d;
-    skip2_d       = (skip1_d == PhTrav && !need_trav_d) ? PhEntry : skip1_d;
-    skip3_d       = (skip2_d == PhEntry && !need_entry_d) ? PhDone : skip2_d;
+    div_busy_next    = div_en ? !div_last : div_busy;
+    in_box_next      = j_d <= RowBits'(ymax_i);
+    entered_next     = dir_d ? !v_d[EdgeBits-1] : v_d[EdgeBits-1];
+    need_trav_next   = !entered_next && (divide_i ? (s_d != '0) : in_box_next);
+    need_entry_next  = !horiz_d && entered_next && in_box_next;
+    skip1_next       = (phase_d == PhSlope && horiz_d) ? PhTrav : phase_d;
+    skip2_next       = (skip1_next == PhTrav && !need_trav_next) ? PhEntry : skip1_next;
+    skip3_next       = (skip2_next == PhEntry && !need_entry_next) ? PhDone : skip2_next;
   end
   // Outputs as continuous assignments, not always_comb writes (Icarus 11 re-runs blocks whose
   // output ports share a vector with other instances' ports).
-  assign done_next_o = (div_busy_next ? phase_d : skip3_d) == PhDone;
+  assign done_next_o = (div_busy_next ? phase_d : skip3_next) == PhDone;
   assign busy_o      = cur != PhDone;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -271,7 +272,7 @@ module trirast_edge_lane (
   assign qs_o       = qs_q;
   assign rs_o       = rs_q;
   assign ssat_o     = ssat_q;
-  assign enters_o   = entered_q && in_box_q;
+  assign enters_o   = entered_now && in_box_now;
   assign j_entry_o  = j_q;
   // A horizontal edge has no bound: past its entry it is clear (dir +) or out (dir -).
   assign entry_state_o = horiz_q ? (dir_q ? RowClear : RowOut) : est_q;

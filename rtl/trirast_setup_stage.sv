@@ -5,6 +5,8 @@
 //   StEdge : corner values and normalizers; the lanes load their edges.
 //   StLanes: the lanes run (L = max L_k cycles).
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
+`include "trirast_assert.svh"
+
 module trirast_setup_stage (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -179,7 +181,7 @@ module trirast_setup_stage (
     lanes_load       = state_q == StEdge;
     hand_valid_o     = state_q == StHold;
     state_d          = state_q;
-    case (state_q)
+    unique case (state_q)
       StIdle: begin
         if (accept) state_d = StBox;
       end
@@ -204,5 +206,24 @@ module trirast_setup_stage (
   end
 
   assign state_o = state_q;
+
+  // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
+  // port, unchanged, until the handshake.
+  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT(TriDataStable_A, tri_valid_i && !tri_ready_o |=>
+          $stable(tri_tag_i) && $stable(tri_vx_i) && $stable(tri_vy_i) && $stable(tri_a_i) &&
+          $stable(tri_b_i) && $stable(tri_c_i) && $stable(tri_bias_i), clk_i, !rst_ni)
+  // The hand-off (what this stage guarantees the walk stage): the set-up triangle is held in
+  // StHold, unchanged, until the walk stage takes it.
+  `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
+  `ASSERT(HandDataStable_A, hand_valid_o && !hand_ready_i |=>
+          $stable(hand_tag_o) && $stable(hand_x0_o) && $stable(hand_y0_o) &&
+          $stable(hand_xmax_o) && $stable(hand_ymax_o) && $stable(hand_mirror_o) &&
+          $stable(hand_dir_down_o) && $stable(hand_d_o) && $stable(hand_qs_o) &&
+          $stable(hand_rs_o) && $stable(hand_ssat_o) && $stable(hand_enters_o) &&
+          $stable(hand_j_entry_o) && $stable(hand_entry_state_o) && $stable(hand_entry_x_o) &&
+          $stable(hand_entry_e_o), clk_i, !rst_ni)
+  `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
+          state_q == StLanes || state_q == StHold, clk_i, !rst_ni)
 
 endmodule

@@ -3,6 +3,8 @@
 // in row order), one pop per cycle. span_valid_o = (count > 0), the output shows the oldest entry.
 // A span pushed in cycle t can be popped from t + 1; count_o is the occupancy at the start of the
 // cycle (the walk stage's admission test uses it, so a pop does not make room in its own cycle).
+`include "trirast_assert.svh"
+
 module trirast_span_fifo #(
   parameter int NumEndpoints = 1,  // push ports
   parameter int FifoDepth = 8,     // entries (a power of two)
@@ -74,5 +76,13 @@ module trirast_span_fifo #(
 
   assign count_o = count_q;
   assign data_o  = mem_q[rptr_q];
+
+  // No push into a full FIFO: the walk stage admits a group only when count + n <= DEPTH at the
+  // start of the cycle (DEPTH <= FifoDepth), so the pushes fit without the cycle's pop.
+  `ASSERT(FifoNoOverflow_A, 32'(count_q) + 32'(pushes) <= FifoDepth, clk_i, !rst_ni)
+  // No pop from an empty FIFO, and the occupancy in 0..FifoDepth.
+  `ASSERT(FifoNoUnderflow_A, pop |-> count_q != '0, clk_i, !rst_ni)
+  `ASSERT(FifoCountInRange_A, 32'(count_q) <= FifoDepth, clk_i, !rst_ni)
+  `ASSERT_INIT(FifoDepthPow2_A, FifoDepth >= 1 && (FifoDepth & (FifoDepth - 1)) == 0)
 
 endmodule

@@ -3,19 +3,15 @@
 // register and its pushes captured by registers. WithFifo = 1: the walk stage and the span FIFO
 // connected as in trirast_top, because the pushes are combinational from the walkers into the
 // FIFO's pointers, count and storage (a path that crosses the boundary and is only timed when both
-// are placed together). Inputs are bits of a serially loaded shift register, outputs are captured
-// by flip-flops with no logic in between and read back through a serial shift register, so the
-// timing paths are the stages' own. NumEndpoints and FifoDepth are the synthesized defaults and
-// the runtime n and DEPTH are tied to them, as in rtl/trirast_synth_wrapper.sv.
+// are placed together). The registers around them are trirast_synth_shell's, so the timing paths
+// are the stages' own. NumEndpoints and FifoDepth are the synthesized defaults and the runtime n
+// and DEPTH are tied to them, as in the whole unit's wrapper (scripts/synth.sh).
 module trirast_synth_walk #(
   parameter int WithFifo = 0
 ) (
-  input  logic clk_i,
-  input  logic rst_ni,
-  input  logic shift_i,   // shift the input word by one bit
-  input  logic din_i,     // the bit shifted in
-  input  logic load_i,    // copy the captured outputs into the output shift register
-  output logic dout_o     // the output shift register's last bit
+  input  logic clk_i, rst_ni,
+  input  logic shift_i, din_i, load_i,  // trirast_synth_shell's serial port
+  output logic dout_o
 );
   localparam int N = trirast_pkg::DefaultEndpoints;
   localparam int Depth = trirast_pkg::DefaultFifoDepth;
@@ -39,10 +35,14 @@ module trirast_synth_walk #(
   localparam int OutBits = 5 + TB + WB + (WithFifo != 0 ? CountBits + 1 + EntryBits :
                                                           N + N * EntryBits);
 
-  logic [InBits-1:0] in_q;
-  logic [OutBits-1:0] out_d, out_q, sh_q;
+  logic [InBits-1:0] dut_in;     // the stages' inputs, from the shell's input register
+  logic [OutBits-1:0] dut_out;   // their outputs, into the shell's output register
+  trirast_synth_shell #(.InBits (InBits), .OutBits (OutBits)) u_shell (
+    .clk_i (clk_i), .shift_i (shift_i), .din_i (din_i), .load_i (load_i),
+    .dout_o (dout_o), .in_q_o (dut_in), .out_d_i (dut_out));
+
   logic [HandBits-1:0] hand;
-  assign hand = in_q[InBits-2 -: HandBits];
+  assign hand = dut_in[InBits-2 -: HandBits];
 
   logic hand_ready, busy, stall, last, retire;
   logic [TB-1:0] tag;
@@ -60,7 +60,7 @@ module trirast_synth_walk #(
     .rst_ni             (rst_ni),
     .endpoints_i        (3'(N)),
     .fifo_depth_i       (CountBits'(Depth)),
-    .hand_valid_i       (in_q[InBits-1]),
+    .hand_valid_i       (dut_in[InBits-1]),
     .hand_ready_o       (hand_ready),
     .hand_tag_i         (hand[HandBits-1 -: TB]),
     .hand_x0_i          (hand[HandBits-1-TB -: PB]),
@@ -92,34 +92,17 @@ module trirast_synth_walk #(
   if (WithFifo != 0) begin : g_fifo
     logic span_valid;
     logic [EntryBits-1:0] head;
-    trirast_span_fifo #(
-      .NumEndpoints (N),
-      .FifoDepth    (Depth),
-      .EntryBits    (EntryBits)
-    ) u_span_fifo (
-      .clk_i   (clk_i),
-      .rst_ni  (rst_ni),
-      .push_i  (push),
-      .data_i  (push_data),
-      .count_o (fifo_count),
-      .valid_o (span_valid),
-      .ready_i (in_q[0]),
-      .data_o  (head)
-    );
-    assign out_d = {hand_ready, busy, stall, last, retire, tag, row, fifo_count, span_valid, head};
+    trirast_span_port #(.NumEndpoints (N), .FifoDepth (Depth)) u_span_port (
+      .clk_i (clk_i), .rst_ni (rst_ni),
+      .push_i (push), .push_data_i (push_data), .count_o (fifo_count),
+      .span_valid_o (span_valid), .span_ready_i (dut_in[0]),
+      .span_tag_o (head[EntryBits-1 -: TB]),
+      .span_y_o (head[3*PB -: PB]), .span_x_begin_o (head[2*PB -: PB]), .span_x_end_o (head[PB:0]));
+    assign dut_out = {hand_ready, busy, stall, last, retire, tag, row, fifo_count, span_valid,
+                      head};
   end else begin : g_alone
-    assign fifo_count = in_q[CountBits-1:0];
-    assign out_d = {hand_ready, busy, stall, last, retire, tag, row, push, push_data};
+    assign fifo_count = dut_in[CountBits-1:0];
+    assign dut_out = {hand_ready, busy, stall, last, retire, tag, row, push, push_data};
   end
-
-  // Wrapper registers: no reset (the stages' own control registers are reset through rst_ni).
-  always_ff @(posedge clk_i) begin
-    if (shift_i) in_q <= {in_q[InBits-2:0], din_i};
-    out_q <= out_d;
-    if (load_i) sh_q <= out_q;
-    else sh_q <= {1'b0, sh_q[OutBits-1:1]};
-  end
-
-  assign dout_o = sh_q[0];
 
 endmodule

@@ -1,8 +1,10 @@
 // The improved-Bresenham unit (docs/unit.md, docs/timing.md):
 //   setup stage (interface, 3 normalizers, 3 edge lanes) -> walk stage (3 walkers,
-//   NumEndpoints span generators) -> span FIFO -> span port.
+//   NumEndpoints span generators) -> span FIFO and span port (trirast_span_port).
 // Every boundary is a valid/ready handshake: triangle port, hand-off, FIFO pushes (admitted by
 // the occupancy test), span port. The cfg_* inputs are static during a run (docs/rtl.md).
+`include "trirast_assert.svh"
+
 module trirast_top #(
   parameter int NumEndpoints = trirast_pkg::DefaultEndpoints,  // rows per cycle (hardware)
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
@@ -111,8 +113,6 @@ module trirast_top #(
 
   logic [NumEndpoints-1:0] push;
   logic [NumEndpoints*EntryBits-1:0] push_data;
-  logic [CountBits-1:0] fifo_count;
-  logic [EntryBits-1:0] head;
 
   trirast_walk_stage #(
     .NumEndpoints (NumEndpoints),
@@ -141,7 +141,7 @@ module trirast_top #(
     .hand_entry_state_i (hand_entry_state),
     .hand_entry_x_i     (hand_entry_x),
     .hand_entry_e_i     (hand_entry_e),
-    .fifo_count_i       (fifo_count),
+    .fifo_count_i       (fifo_count_o),
     .push_o             (push),
     .push_data_o        (push_data),
     .busy_o             (walk_busy_o),
@@ -152,26 +152,28 @@ module trirast_top #(
     .row_o              (walk_row)
   );
 
-  trirast_span_fifo #(
-    .NumEndpoints (NumEndpoints),
-    .FifoDepth    (FifoDepth),
-    .EntryBits    (EntryBits)
-  ) u_span_fifo (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .push_i  (push),
-    .data_i  (push_data),
-    .count_o (fifo_count),
-    .valid_o (span_valid_o),
-    .ready_i (span_ready_i),
-    .data_o  (head)
-  );
-
-  assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = head;
-  assign fifo_count_o = fifo_count;
-
   // Observed in traces only.
   logic unused_obs;
   assign unused_obs = ^{setup_state, lane_busy, walk_row};
+
+  trirast_span_port #(.NumEndpoints (NumEndpoints), .FifoDepth (FifoDepth)) u_span_port (
+    .clk_i (clk_i), .rst_ni (rst_ni),
+    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
+    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
+    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
+
+  // Runtime configuration within the hardware maximums: 1 <= n <= NumEndpoints and
+  // n <= DEPTH <= FifoDepth (a larger n or DEPTH would overflow the walk stage or the FIFO).
+  `ASSERT(CfgEndpointsInRange_A, cfg_endpoints_i >= 3'd1 && 32'(cfg_endpoints_i) <= NumEndpoints,
+          clk_i, !rst_ni)
+  `ASSERT(CfgFifoDepthInRange_A, 32'(cfg_fifo_depth_i) >= 32'(cfg_endpoints_i) &&
+          32'(cfg_fifo_depth_i) <= FifoDepth, clk_i, !rst_ni)
+  `ASSERT_INIT(NumEndpointsInRange_A, NumEndpoints >= 1 && NumEndpoints <= 7)
+  // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
+  // and observation strobes always, a tag when its strobe is high.
+  `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, box_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
+                                walk_retire_o}, clk_i, !rst_ni)
+  `ASSERT(RetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
+  `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 
 endmodule

@@ -5,6 +5,8 @@
 //            triangle here (retire_o), else the sorted pixels are registered.
 //   StLine : Bresenham set-up of the lines p0->p2 (long), p0->p1, p1->p2, registered.
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
+`include "trirast_assert.svh"
+
 module trirast_trad_setup_stage (
   input  logic                                    clk_i,
   input  logic                                    rst_ni,
@@ -88,7 +90,7 @@ module trirast_trad_setup_stage (
     retire_tag_o = tag_q;
     hand_valid_o = state_q == StHold;
     state_d      = state_q;
-    case (state_q)
+    unique case (state_q)
       StIdle:  if (accept) state_d = StSort;
       StSort: begin  // (if/else, not ?:, for Icarus 11's enum casts)
         if (collinear) state_d = StIdle;
@@ -145,5 +147,20 @@ module trirast_trad_setup_stage (
   assign hand_dmin_o    = dmin_q;
   assign hand_d0_o      = d0_q;
   assign state_o        = state_q;
+
+  // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
+  // port, unchanged, until the handshake.
+  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT(TriDataStable_A, tri_valid_i && !tri_ready_o |=>
+          $stable(tri_tag_i) && $stable(tri_vx_i) && $stable(tri_vy_i), clk_i, !rst_ni)
+  // The hand-off (what this stage guarantees the walk stage): held in StHold, unchanged, until
+  // the walk stage takes it.
+  `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
+  `ASSERT(HandDataStable_A, hand_valid_o && !hand_ready_i |=>
+          $stable(hand_tag_o) && $stable(hand_px_o) && $stable(hand_py_o) &&
+          $stable(hand_sx_neg_o) && $stable(hand_x_major_o) && $stable(hand_dmaj_o) &&
+          $stable(hand_dmin_o) && $stable(hand_d0_o), clk_i, !rst_ni)
+  `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StSort || state_q == StLine ||
+          state_q == StHold, clk_i, !rst_ni)
 
 endmodule

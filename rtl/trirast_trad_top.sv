@@ -1,13 +1,16 @@
 // The traditional-Bresenham unit (model/unit/trad_bresenham.*, docs/timing.md "The traditional
 // unit"), the baseline of the improved unit (trirast_top) with the same port protocol:
 //   setup stage (quantizer + sorter, line set-up) -> walk stage (long-edge walker, short-side
-//   walker, span filler) -> span FIFO (trirast_span_fifo, one push port) -> span port.
+//   walker, span filler) -> span FIFO and span port
+//   (trirast_span_port, one push port).
 // Every boundary is a valid/ready handshake: triangle port, hand-off, FIFO push (admitted by the
 // occupancy test count <= DEPTH - 1), span port. The cfg_* inputs are static during a run.
 // Differences from trirast_top's ports (docs/rtl.md): the triangle port carries the vertices only
 // (no edge functions: the unit draws Bresenham lines between integer pixels); no boundary,
 // divider or endpoints configuration; setup_retire_o (collinear pixels, StSort) stands where
 // trirast_top has box_retire_o (empty box, StBox).
+`include "trirast_assert.svh"
+
 module trirast_trad_top #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
@@ -80,8 +83,7 @@ module trirast_trad_top #(
   );
 
   logic push;
-  logic [EntryBits-1:0] push_data, head;
-  logic [CountBits-1:0] fifo_count;
+  logic [EntryBits-1:0] push_data;
   logic [WBits-1:0] walk_row;
 
   trirast_trad_walk_stage #(
@@ -103,7 +105,7 @@ module trirast_trad_top #(
     .hand_dmaj_i    (hand_dmaj),
     .hand_dmin_i    (hand_dmin),
     .hand_d0_i      (hand_d0),
-    .fifo_count_i   (fifo_count),
+    .fifo_count_i   (fifo_count_o),
     .push_o         (push),
     .push_data_o    (push_data),
     .busy_o         (walk_busy_o),
@@ -114,26 +116,24 @@ module trirast_trad_top #(
     .row_o          (walk_row)
   );
 
-  trirast_span_fifo #(
-    .NumEndpoints (1),
-    .FifoDepth    (FifoDepth),
-    .EntryBits    (EntryBits)
-  ) u_span_fifo (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .push_i  (push),
-    .data_i  (push_data),
-    .count_o (fifo_count),
-    .valid_o (span_valid_o),
-    .ready_i (span_ready_i),
-    .data_o  (head)
-  );
-
-  assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = head;
-  assign fifo_count_o = fifo_count;
-
   // Observed in traces only.
   logic unused_obs;
   assign unused_obs = ^{setup_state, walk_row};
+
+  trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
+    .clk_i (clk_i), .rst_ni (rst_ni),
+    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
+    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
+    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
+
+  // Runtime configuration within the hardware maximum: 1 <= DEPTH <= FifoDepth.
+  `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i != '0 && 32'(cfg_fifo_depth_i) <= FifoDepth,
+          clk_i, !rst_ni)
+  // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
+  // and observation strobes always, a tag when its strobe is high.
+  `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, setup_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
+                                walk_retire_o}, clk_i, !rst_ni)
+  `ASSERT(RetireTagKnown_A, setup_retire_o |-> !$isunknown(setup_retire_tag_o), clk_i, !rst_ni)
+  `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 
 endmodule

@@ -180,7 +180,7 @@ module trirast_trad_walk_stage #(
     l2_dmaj_d    = l2_dmaj_q;
     l2_dmin_d    = l2_dmin_q;
     l2_d0_d      = l2_d0_q;
-    case (state_q)
+    unique case (state_q)
       StWalkIdle: begin
         if (load) begin
           state_d      = StWalk;

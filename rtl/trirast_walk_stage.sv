@@ -153,7 +153,7 @@ module trirast_walk_stage #(
     ymax_d  = ymax_q;
     row_d   = row_q;
     any_d   = any_q;
-    case (state_q)
+    unique case (state_q)
       StWalkIdle: begin
         if (load) begin
           state_d = StWalk;

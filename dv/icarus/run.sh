@@ -9,13 +9,14 @@ ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 VECTORS="$1"
 WORK="$2"
 mkdir -p "$WORK"
-SOURCES="$ROOT/rtl/trirast_pkg.sv $ROOT/rtl/trirast_adder_divider.sv $ROOT/rtl/trirast_edge_lane.sv
-  $ROOT/rtl/trirast_edge_normalizer.sv $ROOT/rtl/trirast_interface.sv $ROOT/rtl/trirast_edge_walker.sv
-  $ROOT/rtl/trirast_span_generator.sv $ROOT/rtl/trirast_span_fifo.sv $ROOT/rtl/trirast_setup_stage.sv
-  $ROOT/rtl/trirast_walk_stage.sv $ROOT/rtl/trirast_top.sv $ROOT/dv/icarus/tb_trirast.sv"
+# The improved unit's file list (rtl/trirast_improved.f: one path a line, relative to rtl/).
+SOURCES="$(sed 's#//.*##' "$ROOT/rtl/trirast_improved.f" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}')
+  $ROOT/dv/icarus/tb_trirast.sv"
 # Icarus prints "sorry: constant selects in always_* processes" for loops over arrays in
-# always_comb (a sensitivity-list simplification, harmless); keep the rest.
-iverilog -g2012 -o "$WORK/tb_trirast.vvp" $SOURCES 2> >(grep -v "constant selects" >&2)
+# always_comb (a sensitivity-list simplification, harmless), and "sorry: Case unique/unique0
+# qualities are ignored" (Verilator checks them); keep the rest.
+iverilog -g2012 -I "$ROOT/rtl" -o "$WORK/tb_trirast.vvp" $SOURCES \
+  2> >(grep -v "constant selects\|qualities are ignored" >&2)
 status=0
 # scene  ready  stall
 for case in "builtin:fan:n=12 1 0" "builtin:random:count=120,size=small,seed=3 3 2" \

@@ -1,0 +1,26 @@
+# trirast_read_filelist(OUT_VAR FILE): the source files of a unit's file list (rtl/*.f) as
+# absolute paths, in the list's order. FILE holds one path per line, relative to FILE's folder;
+# `//` starts a comment, blank lines are skipped. A path that does not exist is a configure error
+# naming FILE. Editing FILE re-runs the configuration.
+function(trirast_read_filelist out_var file)
+  get_filename_component(_list ${file} ABSOLUTE)
+  if(NOT EXISTS ${_list})
+    message(FATAL_ERROR "trirast_read_filelist: no file list ${_list}")
+  endif()
+  get_filename_component(_dir ${_list} DIRECTORY)
+  file(STRINGS ${_list} _lines)
+  set(_paths)
+  foreach(_line IN LISTS _lines)
+    string(REGEX REPLACE "//.*$" "" _line "${_line}")
+    string(STRIP "${_line}" _line)
+    if(_line STREQUAL "")
+      continue()
+    endif()
+    if(NOT EXISTS ${_dir}/${_line})
+      message(FATAL_ERROR "${_list}: listed file ${_line} does not exist in ${_dir}")
+    endif()
+    list(APPEND _paths ${_dir}/${_line})
+  endforeach()
+  set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_list})
+  set(${out_var} ${_paths} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,46 @@
+// Assertion macros of the RTL (as Ibex's prim_assert.sv): a module includes this header and
+// writes its protocol assumptions beside the logic they guard.
+//
+//   `ASSERT(Name, Prop, Clk, Rst)        Prop holds at every rising edge of Clk while Rst is 0
+//                                        (Rst is the "in reset" condition, e.g. !rst_ni)
+//   `ASSERT_KNOWN(Name, Sig, Clk, Rst)   Sig has no X or Z bit at every such edge
+//   `ASSERT_INIT(Name, Prop)             Prop (on parameters) holds at time zero
+//
+// A failure prints "[ASSERT FAILED] [instance] Name" through $error, which stops a Verilated
+// model (--assert) with a non-zero exit. Only Verilator evaluates them: Yosys 0.23 (which defines
+// SYNTHESIS) does not parse concurrent assertions in read_verilog -sv, and neither does Icarus 11
+// (it defines __ICARUS__; "sorry: concurrent_assertion_item not supported"), so for those tools
+// the macros expand to nothing. Every argument must be given (no defaults: the empty forms take
+// four arguments too); a concatenation ({a, b}) is one argument in all three tools.
+`ifndef TRIRAST_ASSERT_SVH
+`define TRIRAST_ASSERT_SVH
+
+`ifdef VERILATOR
+`define TRIRAST_ASSERTIONS_ON
+`endif
+
+`ifdef TRIRAST_ASSERTIONS_ON
+
+`define ASSERT(__name, __prop, __clk, __rst)                                    \
+  /* verilator lint_off SYNCASYNCNET */                                          \
+  __name: assert property (@(posedge __clk) disable iff (__rst) (__prop))        \
+    else $error("[ASSERT FAILED] [%m] %s", `"__name`");                          \
+  /* verilator lint_on SYNCASYNCNET */
+
+`define ASSERT_KNOWN(__name, __sig, __clk, __rst)                               \
+  `ASSERT(__name, !$isunknown(__sig), __clk, __rst)
+
+`define ASSERT_INIT(__name, __prop)                                             \
+  initial begin : __name                                                         \
+    assert (__prop) else $error("[ASSERT FAILED] [%m] %s", `"__name`");          \
+  end
+
+`else
+
+`define ASSERT(__name, __prop, __clk, __rst)
+`define ASSERT_KNOWN(__name, __sig, __clk, __rst)
+`define ASSERT_INIT(__name, __prop)
+
+`endif
+
+`endif  // TRIRAST_ASSERT_SVH
