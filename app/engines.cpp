@@ -8,6 +8,7 @@
 #include "unit/halfspace_unit.hpp"
 #include "unit/improved_unit.hpp"
 #include "verilator/rtl_engine.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "verilator/rtl_trad_engine.hpp"
 
 namespace trirast {
@@ -37,6 +38,10 @@ const std::vector<EngineInfo>& engine_registry() {
       {"halfspace-sc",
        "half-space tile unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
        true, make_halfspace_model_engine},
+      {"halfspace-rtl",
+       "half-space tile unit, Verilated RTL (rtl/trirast_halfspace.f): halfspace-sc's spans and "
+       "cycles",
+       true, make_rtl_halfspace_engine},
       {"float-scanline",
        "float scanline with the top-left rule as ceil(x - 0.5): a CPU baseline, not exact", false,
        make_float_scanline_engine},
