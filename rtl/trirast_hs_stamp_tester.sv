@@ -19,10 +19,15 @@ module trirast_hs_stamp_tester #(
   localparam int EdgeBits = trirast_pkg::EdgeBits;
   localparam int PB = trirast_pkg::BoxBits + 1;
 
+  logic [StampSize-1:0] any;
+  logic [StampSize*PB-1:0] first, last;
+  assign row_any_o = any;
+  assign row_first_o = first;
+  assign row_last_o = last;
   always_comb begin
-    row_any_o = '0;
-    row_first_o = '0;
-    row_last_o = '0;
+    any = '0;
+    first = '0;
+    last = '0;
     for (int dj = StampSize - 1; dj >= 0; dj--) begin
       for (int di = StampSize - 1; di >= 0; di--) begin
         logic in;
@@ -38,9 +43,9 @@ module trirast_hs_stamp_tester #(
         end
         if (in) begin
           // Scanning right to left: the last hit is the first column.
-          if (!row_any_o[dj]) row_last_o[dj*PB +: PB] = i;
-          row_first_o[dj*PB +: PB] = i;
-          row_any_o[dj] = 1'b1;
+          if (!any[dj]) last[dj*PB +: PB] = i;
+          first[dj*PB +: PB] = i;
+          any[dj] = 1'b1;
         end
       end
     end

@@ -150,6 +150,20 @@ module trirast_hs_tile_walker #(
   assign band_end = unit_done && (last_unit || (WalkZigzag && seen_q && is_rej));
   assign band_last = j0_q + PB'(U) > {1'b0, ymax_q};
 
+  // The next stamp row's start and the next band's first and last unit.
+  logic [3*EdgeBits-1:0] esr_next, ebl_next, ebr_next;
+  always_comb begin
+    for (int k = 0; k < 3; k++) begin
+      esr_next[k*EdgeBits +: EdgeBits] = esr_q[k*EdgeBits +: EdgeBits] +
+                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(S));
+      ebl_next[k*EdgeBits +: EdgeBits] = ebl_q[k*EdgeBits +: EdgeBits] +
+                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
+      ebr_next[k*EdgeBits +: EdgeBits] = ebr_q[k*EdgeBits +: EdgeBits] +
+                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
+    end
+  end
+  logic next_back;  // the next band runs right to left
+  assign next_back = WalkZigzag && !back_q;
   assign band_j0_o = j0_q;
   assign hand_ready_o = state_q == WIdle;
 
@@ -224,11 +238,8 @@ module trirast_hs_tile_walker #(
         end else if (!stamp_last_row) begin
           si_d = i0_q;
           sj_d = sj_q + PB'(S);
-          for (int k = 0; k < 3; k++) begin
-            esr_d[k*EdgeBits +: EdgeBits] = esr_q[k*EdgeBits +: EdgeBits] +
-                                            (b_q[k*EdgeBits +: EdgeBits] << $clog2(S));
-            es_d[k*EdgeBits +: EdgeBits] = esr_d[k*EdgeBits +: EdgeBits];
-          end
+          esr_d = esr_next;
+          es_d = esr_next;
         end
       end
       WWait, WDrain: ;
@@ -259,16 +270,12 @@ module trirast_hs_tile_walker #(
         end else begin
           state_d = WUnit;
           j0_d = j0_q + PB'(U);
-          back_d = WalkZigzag && !back_q;
+          back_d = next_back;
           seen_d = 1'b0;
-          for (int k = 0; k < 3; k++) begin
-            ebl_d[k*EdgeBits +: EdgeBits] = ebl_q[k*EdgeBits +: EdgeBits] +
-                                            (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
-            ebr_d[k*EdgeBits +: EdgeBits] = ebr_q[k*EdgeBits +: EdgeBits] +
-                                            (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
-          end
-          i0_d = back_d ? iend_q : '0;
-          eu_d = back_d ? ebr_d : ebl_d;
+          ebl_d = ebl_next;
+          ebr_d = ebr_next;
+          eu_d = next_back ? ebr_next : ebl_next;
+          i0_d = next_back ? iend_q : '0;
         end
       end
     end

@@ -11,6 +11,7 @@
 
 #include "core/setup.hpp"
 #include "verilator/rtl_engine.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "scene/scene.hpp"
 #include "verilator/trirast_rtl_params.hpp"
 
@@ -43,8 +44,8 @@ struct HexBits {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL\n";
+  if (argc != 5 && !(argc == 6 && std::string(argv[5]) == "halfspace")) {
+    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace]\n";
     return 2;
   }
   try {
@@ -62,7 +63,10 @@ int main(int argc, char** argv) {
                             : read_tri_file(spec);
     const SetupResult setup = setup_scene(scene.tris, cfg);
     EngineResult res;
-    rtl::run_rtl(setup, cfg, rtl::RtlRunOptions{}, res);
+    if (argc == 6)  // the half-space unit at trirast_hs_top's default build parameters
+      rtl::run_rtl_halfspace(setup, cfg, 1, res);
+    else
+      rtl::run_rtl(setup, cfg, rtl::RtlRunOptions{}, res);
 
     std::ofstream tris(dir + "/tris.hex"), spans(dir + "/spans.hex"), acc(dir + "/accept.hex"),
         args(dir + "/plusargs.txt");

@@ -33,6 +33,15 @@ module tb_trirast;
   logic [CountBits-1:0] fifo_count;
   logic [PB-1:0] vpx, vpy;
 
+`ifdef TRIRAST_TB_HALFSPACE
+  // The half-space unit at its default build parameters (stamp 2, tile 8, zig-zag): same ports
+  // but no boundary, divider or endpoints configuration.
+  trirast_hs_top u_dut (
+    .clk_i            (clk),
+    .rst_ni           (rst_n),
+    .cfg_vp_xmax_i    (vpx),
+    .cfg_vp_ymax_i    (vpy),
+`else
   trirast_top u_dut (
     .clk_i            (clk),
     .rst_ni           (rst_n),
@@ -41,6 +50,7 @@ module tb_trirast;
     .cfg_divide_i     (1'b0),
     .cfg_adaptive_i   (1'b1),
     .cfg_endpoints_i  (3'd1),
+`endif
     .cfg_fifo_depth_i (CountBits'(trirast_pkg::DefaultFifoDepth)),
     .tri_valid_i      (tri_valid),
     .tri_ready_o      (tri_ready),

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/engine.hpp"
+#include "core/setup.hpp"
 
 namespace trirast {
 
@@ -16,6 +17,11 @@ std::unique_ptr<Engine> make_rtl_halfspace_engine();
 namespace rtl {
 // "--stamp 2 --tile 8 --hs-walk zigzag, ..." : the Verilated configurations.
 std::string halfspace_built_configurations();
+// Runs the Verilated model matching cfg's --stamp/--tile/--hs-walk once (x_seed as
+// RtlRunOptions::x_seed). Throws std::invalid_argument naming the option when no built model
+// covers cfg, WidthError for a triangle that does not fit the widths.
+void run_rtl_halfspace(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
+                       EngineResult& out);
 }  // namespace rtl
 
 }  // namespace trirast
