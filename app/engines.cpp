@@ -1,7 +1,10 @@
 // The list of engines. Adding an engine: include its factory's header and add one line below.
-// Names are <unit>-<view>: the improved-Bresenham unit and the traditional one, each as a
-// bit-accurate datapath, a SystemC model (sc) and Verilated RTL (rtl).
+// Names are <unit>-<view>: the improved-Bresenham unit as a bit-accurate datapath (-datapath), a
+// SystemC model (-sc) and Verilated RTL (-rtl); the traditional unit as -sc and -rtl.
 #include "engines.hpp"
+
+#include <cstdio>
+#include <set>
 
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
@@ -17,31 +20,31 @@ const std::vector<EngineInfo>& engine_registry() {
   static const std::vector<EngineInfo> engines = {
       {"golden", "half-space rasterizer, the coverage rule of docs/coverage-rule.md (the truth)",
        true, [] { return make_golden_engine(); }},
-      {"unit",
+      {"improved-datapath",
        "improved-Bresenham unit, bit-accurate datapath model, untimed (docs/unit.md)", true,
        make_unit_engine},
-      {"model",
+      {"improved-sc",
        "improved-Bresenham unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
-       true, make_model_engine},
-      {"rtl", "improved-Bresenham unit, Verilated RTL (rtl/trirast_improved.f)", true,
-       make_rtl_engine},
-      {"trad",
+       true, make_model_engine, /*timed=*/true},
+      {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/trirast_improved.f)", true,
+       make_rtl_engine, /*timed=*/true},
+      {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "
        "coverage, not the rule",
-       false, make_trad_model_engine},
-      {"rtl-trad",
+       false, make_trad_model_engine, /*timed=*/true},
+      {"trad-rtl",
        "traditional Bresenham unit, Verilated RTL (rtl/trirast_trad.f): trad-sc's spans and cycles",
-       false, make_rtl_trad_engine},
+       false, make_rtl_trad_engine, /*timed=*/true},
       {"halfspace-datapath",
        "half-space (edge-function) tile unit, bit-accurate datapath, untimed (docs/unit.md)", true,
        make_halfspace_engine},
       {"halfspace-sc",
        "half-space tile unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
-       true, make_halfspace_model_engine},
+       true, make_halfspace_model_engine, /*timed=*/true},
       {"halfspace-rtl",
        "half-space tile unit, Verilated RTL (rtl/trirast_halfspace.f): halfspace-sc's spans and "
        "cycles",
-       true, make_rtl_halfspace_engine},
+       true, make_rtl_halfspace_engine, /*timed=*/true},
       {"float-scanline",
        "float scanline with the top-left rule as ceil(x - 0.5): a CPU baseline, not exact", false,
        make_float_scanline_engine},
@@ -50,10 +53,24 @@ const std::vector<EngineInfo>& engine_registry() {
 }
 
 std::string engine_alias(const std::string& name) {
-  static const std::pair<const char*, const char*> kOldNames[] = {{"", ""}};
+  // Old names, kept for one release: the next release drops this list.
+  static const std::pair<const char*, const char*> kOldNames[] = {
+      {"unit", "improved-datapath"}, {"model", "improved-sc"}, {"rtl", "improved-rtl"},
+      {"trad", "trad-sc"},           {"rtl-trad", "trad-rtl"},
+  };
   for (const auto& [old_name, new_name] : kOldNames)
     if (name == old_name) return new_name;
   return {};
+}
+
+std::string current_engine_name(const std::string& name) {
+  const std::string alias = engine_alias(name);
+  if (alias.empty()) return name;
+  static std::set<std::string> noted;
+  if (noted.insert(name).second)
+    std::fprintf(stderr, "trirast: engine '%s' is now '%s' (the old name works for this release)\n",
+                 name.c_str(), alias.c_str());
+  return alias;
 }
 
 const EngineInfo* find_engine(const std::string& name) {

@@ -26,6 +26,7 @@ module trirast_edge_lane (
   // ---- progress ----
   output logic                                 busy_o,        // does a unit of work this cycle
   output logic                                 done_next_o,   // has no work from next cycle on
+  output logic                                 div_o,         // ... and it is a divider iteration
   // ---- results: the walker's start registers (docs/unit.md, section 4) ----
   output logic                                 horiz_o,
   output logic                                 mirror_o,
@@ -75,7 +76,8 @@ module trirast_edge_lane (
   logic [RemBits-1:0] ee_q, ee_d;
 
   // The divider.
-  logic div_en, div_busy, div_last, div_sat;
+  logic div_en /* verilator public_flat_rd */;  // counted by the harness: divider busy cycles
+  logic div_busy, div_last, div_sat;
   logic [NumerBits-1:0] div_n;
   logic [StepBits-1:0] div_d;
   logic [QuotBits-1:0] div_quot;  // the divider's quotient
@@ -239,6 +241,7 @@ module trirast_edge_lane (
   // output ports share a vector with other instances' ports).
   assign done_next_o = (div_busy_next ? phase_d : skip3_next) == PhDone;
   assign busy_o      = cur != PhDone;
+  assign div_o       = div_en;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

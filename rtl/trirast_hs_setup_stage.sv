@@ -97,29 +97,32 @@ module trirast_hs_setup_stage #(
       logic [ProdBits-1:0] prod;
       prod = {{(ProdBits - CoefBits){hand_a_o[k*CoefBits + CoefBits-1]}},
               hand_a_o[k*CoefBits +: CoefBits]} * {{(ProdBits - BoxBits){1'b0}}, xlast};
-      eend[k*EdgeBits +: EdgeBits] = el[k*EdgeBits +: EdgeBits] +
-          {{(EdgeBits - ProdBits - F){prod[ProdBits-1]}}, prod, {F{1'b0}}};
+      // E_end fits EdgeBits (a box pixel's value): the sum is exact modulo 2^EdgeBits even where
+      // the product is wider than EdgeBits - F (a box wider than the coordinate range).
+      eend[k*EdgeBits +: EdgeBits] = el[k*EdgeBits +: EdgeBits] + (EdgeBits'($signed(prod)) << F);
     end
   end
   assign e0_d = (state_q == StEdge) ? el : e0_q;
   assign eend_d = (state_q == StEdge) ? eend : eend_q;
 
   always_comb begin
+    hs_setup_state_e next;  // one write of state_d (Icarus 11: see trirast_hs_stamp_tester.sv)
     box_en = state_q == StBox;
-    box_retire_o = box_en && empty;
+    box_retire_o = state_q == StBox && empty;
     box_retire_tag_o = hand_tag_o;
     hand_valid_o = state_q == StHold;
-    state_d = state_q;
+    next = state_q;
     unique case (state_q)
-      StIdle: if (accept) state_d = StBox;
+      StIdle: if (accept) next = StBox;
       StBox: begin
-        if (empty) state_d = StIdle;
-        else state_d = StEdge;
+        if (empty) next = StIdle;
+        else next = StEdge;
       end
-      StEdge: state_d = StHold;
-      StHold: if (hand_ready_i) state_d = StIdle;
-      default: state_d = StIdle;
+      StEdge: next = StHold;
+      StHold: if (hand_ready_i) next = StIdle;
+      default: next = StIdle;
     endcase
+    state_d = next;
   end
 
   assign hand_e0_o = e0_q;
@@ -138,7 +141,6 @@ module trirast_hs_setup_stage #(
   logic unused_er;
   assign unused_er = ^er_unused;
 
-  `ASSERT_INIT(HsSetupWidths_A, EdgeBits >= ProdBits + F)
   `ASSERT(HsSetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
           state_q == StHold, clk_i, !rst_ni)
   // The hand-off holds its triangle until the walk stage takes it.

@@ -44,33 +44,42 @@ module trirast_hs_span_emitter #(
   logic [RowBits-1:0] row;
   logic [UnitSize-1:0] pend_next;
 
-  // The collect buffer merged with this cycle's pieces.
+  // The collect buffer merged with this cycle's pieces. Every combinational block writes each
+  // module-level variable once, from block-local temporaries (Icarus 11: see
+  // trirast_hs_stamp_tester.sv).
   always_comb begin
-    merged = acc_q | merge_i;
-    mf = accf_q;
-    ml = accl_q;
+    logic [UnitSize*PB-1:0] f, l;
+    f = accf_q;
+    l = accl_q;
     for (int r = 0; r < UnitSize; r++) begin
       if (merge_i[r]) begin
         if (!acc_q[r] || merge_first_i[r*PB +: PB] < accf_q[r*PB +: PB])
-          mf[r*PB +: PB] = merge_first_i[r*PB +: PB];
+          f[r*PB +: PB] = merge_first_i[r*PB +: PB];
         if (!acc_q[r] || merge_last_i[r*PB +: PB] > accl_q[r*PB +: PB])
-          ml[r*PB +: PB] = merge_last_i[r*PB +: PB];
+          l[r*PB +: PB] = merge_last_i[r*PB +: PB];
       end
     end
+    merged = acc_q | merge_i;
+    mf = f;
+    ml = l;
   end
   assign any_o = |merged;
 
   // The emit buffer: the lowest pending row goes when the FIFO has room.
   assign room = fifo_count_i < fifo_depth_i;
   always_comb begin
-    row = '0;
-    for (int r = UnitSize - 1; r >= 0; r--) if (pend_q[r]) row = RowBits'(r);
+    logic [RowBits-1:0] lowest;
+    lowest = '0;
+    for (int r = UnitSize - 1; r >= 0; r--) if (pend_q[r]) lowest = RowBits'(r);
+    row = lowest;
   end
   assign push_o = |pend_q && room;
   assign stall_o = |pend_q && !room;
   always_comb begin
-    pend_next = pend_q;
-    if (push_o) pend_next[row] = 1'b0;
+    logic [UnitSize-1:0] left;
+    left = pend_q;
+    if (push_o) left[row] = 1'b0;
+    pend_next = left;
   end
   assign free_o = ~|pend_next;
 
@@ -83,22 +92,13 @@ module trirast_hs_span_emitter #(
     push_data_o = {tag_i, y, xb, xe};
   end
 
-  always_comb begin
-    acc_d = merged;
-    accf_d = mf;
-    accl_d = ml;
-    pend_d = pend_next;
-    outf_d = outf_q;
-    outl_d = outl_q;
-    outj0_d = outj0_q;
-    if (band_load_i) begin
-      acc_d = '0;
-      pend_d = merged;
-      outf_d = mf;
-      outl_d = ml;
-      outj0_d = band_j0_i;
-    end
-  end
+  assign acc_d = band_load_i ? '0 : merged;
+  assign accf_d = mf;
+  assign accl_d = ml;
+  assign pend_d = band_load_i ? merged : pend_next;
+  assign outf_d = band_load_i ? mf : outf_q;
+  assign outl_d = band_load_i ? ml : outl_q;
+  assign outj0_d = band_load_i ? band_j0_i : outj0_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

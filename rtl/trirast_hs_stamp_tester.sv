@@ -3,11 +3,12 @@
 // E = e + di*a + dj*b with a = A*u, b = B*u (constant multiples: adders); a pixel is covered when
 // every E >= 0 and it lies in the box. Per stamp row: any pixel, first and last covered column.
 module trirast_hs_stamp_tester #(
-  parameter int StampSize = 2
+  parameter int StampSize = 2,
+  parameter int EdgeBits = trirast_pkg::EdgeBits  // the walker's edge values (HsEdgeBits)
 ) (
-  input  logic [3*trirast_pkg::EdgeBits-1:0]     e_i,       // E of edge k at the stamp origin
-  input  logic [3*trirast_pkg::EdgeBits-1:0]     a_i,       // a = A*u of edge k (EdgeBits)
-  input  logic [3*trirast_pkg::EdgeBits-1:0]     b_i,       // b = B*u of edge k
+  input  logic [3*EdgeBits-1:0]                  e_i,       // E of edge k at the stamp origin
+  input  logic [3*EdgeBits-1:0]                  a_i,       // a = A*u of edge k
+  input  logic [3*EdgeBits-1:0]                  b_i,       // b = B*u of edge k
   input  logic [trirast_pkg::BoxBits:0]          i0_i,      // stamp origin, box-relative
   input  logic [trirast_pkg::BoxBits:0]          j0_i,
   input  logic [trirast_pkg::BoxBits-1:0]        xmax_i,
@@ -16,15 +17,14 @@ module trirast_hs_stamp_tester #(
   output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_first_o,
   output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_last_o
 );
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
   localparam int PB = trirast_pkg::BoxBits + 1;
 
-  logic [StampSize-1:0] any;
-  logic [StampSize*PB-1:0] first, last;
-  assign row_any_o = any;
-  assign row_first_o = first;
-  assign row_last_o = last;
+  // Icarus 11: a combinational block writes each module-level variable once, from block-local
+  // temporaries (docs/rtl.md, "Icarus"); a variable written twice glitches, and the glitch wakes
+  // the blocks that read it (here the walker's) in the same time step, again and again.
   always_comb begin
+    logic [StampSize-1:0] any;
+    logic [StampSize*PB-1:0] first, last;
     any = '0;
     first = '0;
     last = '0;
@@ -49,5 +49,8 @@ module trirast_hs_stamp_tester #(
         end
       end
     end
+    row_any_o = any;
+    row_first_o = first;
+    row_last_o = last;
   end
 endmodule

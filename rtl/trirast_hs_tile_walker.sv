@@ -12,7 +12,13 @@ module trirast_hs_tile_walker #(
   parameter int StampSize = 2,   // S: 1, 2, 4
   parameter int TileSize = 8,    // T: 8, 16, or 0 (no tiles)
   parameter bit WalkZigzag = 1'b1,        // zig-zag bands with early band end; 0: row order
-  parameter int UnitSize = (TileSize > 0) ? TileSize : StampSize  // derived
+  parameter int UnitSize = (TileSize > 0) ? TileSize : StampSize,  // derived
+  // Signed bits of the edge values at a unit's corners, up to U - 1 pixels past the box (and so
+  // past the coordinate range): trirast_pkg::HsEdgeBits<U> (docs/unit.md). Derived.
+  parameter int HsEdgeBits = (UnitSize == 1) ? trirast_pkg::HsEdgeBits1 :
+                             (UnitSize == 2) ? trirast_pkg::HsEdgeBits2 :
+                             (UnitSize == 4) ? trirast_pkg::HsEdgeBits4 :
+                             (UnitSize == 8) ? trirast_pkg::HsEdgeBits8 : trirast_pkg::HsEdgeBits16
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -48,7 +54,8 @@ module trirast_hs_tile_walker #(
 );
   localparam int F = trirast_pkg::FracBits;
   localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
+  localparam int EdgeBits = HsEdgeBits;  // the walker's values; the hand-off's are pkg EdgeBits
+  localparam int InBits = trirast_pkg::EdgeBits;
   localparam int BoxBits = trirast_pkg::BoxBits;
   localparam int PB = BoxBits + 1;
   localparam int S = StampSize;
@@ -98,7 +105,7 @@ module trirast_hs_tile_walker #(
   logic [S*PB-1:0] st_first, st_last;
   logic stamp_mode;
   assign stamp_mode = state_q == WStamp;
-  trirast_hs_stamp_tester #(.StampSize (S)) u_stamp (
+  trirast_hs_stamp_tester #(.StampSize (S), .EdgeBits (EdgeBits)) u_stamp (
     .e_i         (stamp_mode ? es_q : eu_q),
     .a_i         (a_q),
     .b_i         (b_q),
@@ -116,25 +123,31 @@ module trirast_hs_tile_walker #(
   assign tile_i1 = (i0_q + PB'(U - 1) > {1'b0, xmax_q}) ? {1'b0, xmax_q} : i0_q + PB'(U - 1);
   always_comb begin
     logic [PB-1:0] srow;
+    logic [U-1:0] m;
+    logic [U*PB-1:0] mf, ml;
     srow = stamp_mode ? sj_q - j0_q : '0;
-    merge_o = '0;
-    merge_first_o = '0;
-    merge_last_o = '0;
+    m = '0;
+    mf = '0;
+    ml = '0;
     for (int r = 0; r < U; r++) begin
       if (state_q == WUnit && accept) begin
-        merge_o[r] = j0_q + PB'(r) <= {1'b0, ymax_q};
-        merge_first_o[r*PB +: PB] = i0_q;
-        merge_last_o[r*PB +: PB] = tile_i1;
+        m[r] = j0_q + PB'(r) <= {1'b0, ymax_q};
+        mf[r*PB +: PB] = i0_q;
+        ml[r*PB +: PB] = tile_i1;
       end
       for (int dj = 0; dj < S; dj++) begin
         if ((stamp_mode || (state_q == WUnit && !Tiles)) && srow + PB'(dj) == PB'(r) &&
             st_any[dj]) begin
-          merge_o[r] = 1'b1;
-          merge_first_o[r*PB +: PB] = st_first[dj*PB +: PB];
-          merge_last_o[r*PB +: PB] = st_last[dj*PB +: PB];
+          m[r] = 1'b1;
+          mf[r*PB +: PB] = st_first[dj*PB +: PB];
+          ml[r*PB +: PB] = st_last[dj*PB +: PB];
         end
       end
     end
+    // One write each (Icarus 11: see trirast_hs_stamp_tester.sv).
+    merge_o = m;
+    merge_first_o = mf;
+    merge_last_o = ml;
   end
 
   // ---- the walk ----
@@ -168,6 +181,7 @@ module trirast_hs_tile_walker #(
   assign hand_ready_o = state_q == WIdle;
 
   always_comb begin
+    logic band_load, last, retire;  // one write each of the outputs (Icarus 11)
     state_d = state_q;
     tag_d = tag_q;
     x0_d = x0_q;
@@ -189,9 +203,9 @@ module trirast_hs_tile_walker #(
     back_d = back_q;
     seen_d = seen_q;
     spans_d = spans_q;
-    band_load_o = 1'b0;
-    last_o = 1'b0;
-    retire_o = 1'b0;
+    band_load = 1'b0;
+    last = 1'b0;
+    retire = 1'b0;
 
     unique case (state_q)
       WIdle: begin
@@ -208,9 +222,11 @@ module trirast_hs_tile_walker #(
             b_d[k*EdgeBits +: EdgeBits] = {{(EdgeBits - CoefBits - F){hand_b_i[k*CoefBits + CoefBits-1]}},
                                            hand_b_i[k*CoefBits +: CoefBits], {F{1'b0}}};
           end
-          eu_d = hand_e0_i;
-          ebl_d = hand_e0_i;
-          ebr_d = hand_eend_i;
+          for (int k = 0; k < 3; k++) begin  // sign-extended to the walker's width
+            eu_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits +: InBits]));
+            ebl_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits +: InBits]));
+            ebr_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_eend_i[k*InBits +: InBits]));
+          end
           i0_d = '0;
           j0_d = '0;
           iend_d = {1'b0, hand_xmax_i & ~BoxBits'(U - 1)};
@@ -259,14 +275,14 @@ module trirast_hs_tile_walker #(
       if (!emit_free_i) begin
         state_d = WWait;
       end else begin
-        band_load_o = 1'b1;
+        band_load = 1'b1;
         spans_d = spans_q || emit_any_i;
         if (band_last) begin
           // The last band: done now if it has no span, else when its last span is pushed.
           if (emit_any_i) state_d = WDrain;
           else state_d = WIdle;
-          last_o = !emit_any_i;
-          retire_o = !emit_any_i && !spans_q;
+          last = !emit_any_i;
+          retire = !emit_any_i && !spans_q;
         end else begin
           state_d = WUnit;
           j0_d = j0_q + PB'(U);
@@ -281,8 +297,11 @@ module trirast_hs_tile_walker #(
     end
     if (state_q == WDrain && emit_free_i) begin
       state_d = WIdle;
-      last_o = 1'b1;
+      last = 1'b1;
     end
+    band_load_o = band_load;
+    last_o = last;
+    retire_o = retire;
   end
 
   assign tag_o = tag_q;
@@ -318,6 +337,9 @@ module trirast_hs_tile_walker #(
     spans_q <= spans_d;
   end
 
+  `ASSERT_INIT(HsEdgeBitsLegal_A, EdgeBits >= InBits)
+  // Box-relative positions are PB = BoxBits + 1 bits: a unit past the box must not wrap.
+  `ASSERT_INIT(HsBoxHoldsUnit_A, (1 << BoxBits) >= U)
   `ASSERT_INIT(HsParamsLegal_A, (StampSize == 1 || StampSize == 2 || StampSize == 4) &&
                (TileSize == 0 || TileSize == 8 || TileSize == 16) &&
                (TileSize == 0 || TileSize % StampSize == 0))

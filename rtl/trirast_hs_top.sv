@@ -47,7 +47,11 @@ module trirast_hs_top #(
   output logic                                  walk_last_o,
   output logic                                  walk_retire_o,
   output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o
+  output logic [CountBits-1:0]                  fifo_count_o,
+  output logic [2:0]                            setup_state_o,    // StIdle, StBox, StEdge, StHold (0, 1, 2, 4)
+  output logic                                  handoff_o,        // the walk stage loads
+  output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,       // its box: Xmax, Ymax
+  output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o        //   (valid with handoff_o)
 );
   localparam int PixBits = trirast_pkg::PixBits;
   localparam int TagBits = trirast_pkg::TagBits;
@@ -164,10 +168,14 @@ module trirast_hs_top #(
     .stall_o       (walk_stall_o)
   );
   assign walk_tag_o = tag;
+  assign setup_state_o = setup_state;
+  assign handoff_o = hand_valid && hand_ready;
+  assign box_xmax_o = hand_xmax;
+  assign box_ymax_o = hand_ymax;
 
   // Observed in traces only.
   logic unused_obs;
-  assign unused_obs = ^{setup_state, walk_state};
+  assign unused_obs = ^walk_state;
 
   trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
     .clk_i (clk_i), .rst_ni (rst_ni),

@@ -49,7 +49,8 @@ module trirast_setup_stage (
   output logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_o,
   // ---- observation ----
   output logic [2:0]                            state_o,
-  output logic [2:0]                            lane_busy_o
+  output logic [2:0]                            lane_busy_o,
+  output logic [2:0]                            lane_div_o    // lane k's divider iterates
 );
   localparam int CoefBits = trirast_pkg::CoefBits;
   localparam int EdgeBits = trirast_pkg::EdgeBits;
@@ -156,6 +157,7 @@ module trirast_setup_stage (
       .xmax_i        (hand_xmax_o),
       .ymax_i        (hand_ymax_o),
       .busy_o        (lane_busy_o[k]),
+      .div_o         (lane_div_o[k]),
       .done_next_o   (lane_done_next[k]),
       .horiz_o       (horiz_unused),
       .mirror_o      (hand_mirror_o[k]),

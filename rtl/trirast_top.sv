@@ -44,7 +44,14 @@ module trirast_top #(
   output logic                                  walk_last_o,      // its last group goes
   output logic                                  walk_retire_o,    // ... and it has no span
   output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o      // occupancy at cycle start
+  output logic [CountBits-1:0]                  fifo_count_o,     // occupancy at cycle start
+  // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
+  output logic [2:0]                            setup_state_o,    // StIdle..StHold (0..4)
+  output logic [2:0]                            lane_busy_o,      // lane k works this cycle
+  output logic [2:0]                            lane_div_o,       // ... a divider iteration
+  output logic                                  handoff_o,        // the walk stage loads
+  output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,       // its box: Xmax, Ymax
+  output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o        //   (valid with handoff_o)
 );
   localparam int PixBits = trirast_pkg::PixBits;
   localparam int TagBits = trirast_pkg::TagBits;
@@ -68,7 +75,11 @@ module trirast_top #(
   logic [3*RowBits-1:0] hand_j_entry;
   logic [5:0] hand_entry_state;
   logic [3*XBits-1:0] hand_entry_x;
-  logic [2:0] setup_state, lane_busy;
+  // Observation signals (the trace; the harness counts module busy cycles from them, hence
+  // public: Verilator keeps them even in a build without tracing).
+  logic [2:0] setup_state /* verilator public_flat_rd */;
+  logic [2:0] lane_busy /* verilator public_flat_rd */;
+  logic [2:0] lane_div;
   logic [RowBits-1:0] walk_row;
 
   trirast_setup_stage u_setup (
@@ -108,7 +119,8 @@ module trirast_top #(
     .hand_entry_x_o     (hand_entry_x),
     .hand_entry_e_o     (hand_entry_e),
     .state_o            (setup_state),
-    .lane_busy_o        (lane_busy)
+    .lane_busy_o        (lane_busy),
+    .lane_div_o         (lane_div)
   );
 
   logic [NumEndpoints-1:0] push;
@@ -152,9 +164,15 @@ module trirast_top #(
     .row_o              (walk_row)
   );
 
-  // Observed in traces only.
+  // Observation outputs; the walk row is observed in traces only.
+  assign setup_state_o = setup_state;
+  assign lane_busy_o   = lane_busy;
+  assign lane_div_o    = lane_div;
+  assign handoff_o     = hand_valid && hand_ready;
+  assign box_xmax_o    = hand_xmax;
+  assign box_ymax_o    = hand_ymax;
   logic unused_obs;
-  assign unused_obs = ^{setup_state, lane_busy, walk_row};
+  assign unused_obs = ^walk_row;
 
   trirast_span_port #(.NumEndpoints (NumEndpoints), .FifoDepth (FifoDepth)) u_span_port (
     .clk_i (clk_i), .rst_ni (rst_ni),
@@ -172,7 +190,9 @@ module trirast_top #(
   // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
   // and observation strobes always, a tag when its strobe is high.
   `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, box_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
-                                walk_retire_o}, clk_i, !rst_ni)
+                                walk_retire_o, setup_state_o, lane_busy_o, lane_div_o, handoff_o},
+                clk_i, !rst_ni)
+  `ASSERT(BoxKnown_A, handoff_o |-> !$isunknown({box_xmax_o, box_ymax_o}), clk_i, !rst_ni)
   `ASSERT(RetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
   `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 

@@ -42,7 +42,12 @@ module trirast_trad_top #(
   output logic                                  walk_last_o,      // its last row ends
   output logic                                  walk_retire_o,    // ... and it has no span
   output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o      // occupancy at cycle start
+  output logic [CountBits-1:0]                  fifo_count_o,     // occupancy at cycle start
+  // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
+  output logic [2:0]                            setup_state_o,    // StIdle, StSort, StLine, StHold
+  output logic                                  handoff_o,        // the walk stage loads
+  output logic [3*trirast_pkg::CoordIntBits-1:0] hand_px_o,       // its sorted pixels p0..p2
+  output logic [3*trirast_pkg::CoordIntBits-1:0] hand_py_o        //   (valid with handoff_o)
 );
   localparam int PixBits = trirast_pkg::PixBits;
   localparam int TagBits = trirast_pkg::TagBits;
@@ -56,7 +61,8 @@ module trirast_trad_top #(
   logic hand_valid, hand_ready;
   logic [TagBits-1:0] hand_tag;
   logic [3*CBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
-  logic [2:0] hand_sx_neg, hand_x_major, setup_state;
+  logic [2:0] hand_sx_neg, hand_x_major;
+  logic [2:0] setup_state /* verilator public_flat_rd */;  // observation (trace, busy counts)
   logic [3*DecBits-1:0] hand_d0;
 
   trirast_trad_setup_stage u_setup (
@@ -116,9 +122,13 @@ module trirast_trad_top #(
     .row_o          (walk_row)
   );
 
-  // Observed in traces only.
+  // Observation outputs; the walk row is observed in traces only.
+  assign setup_state_o = setup_state;
+  assign handoff_o     = hand_valid && hand_ready;
+  assign hand_px_o     = hand_px;
+  assign hand_py_o     = hand_py;
   logic unused_obs;
-  assign unused_obs = ^{setup_state, walk_row};
+  assign unused_obs = ^walk_row;
 
   trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
     .clk_i (clk_i), .rst_ni (rst_ni),
@@ -132,7 +142,8 @@ module trirast_trad_top #(
   // Known values on the outputs (the span port's are checked in trirast_span_port): the handshake
   // and observation strobes always, a tag when its strobe is high.
   `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, setup_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
-                                walk_retire_o}, clk_i, !rst_ni)
+                                walk_retire_o, setup_state_o, handoff_o}, clk_i, !rst_ni)
+  `ASSERT(HandPixelsKnown_A, handoff_o |-> !$isunknown({hand_px_o, hand_py_o}), clk_i, !rst_ni)
   `ASSERT(RetireTagKnown_A, setup_retire_o |-> !$isunknown(setup_retire_tag_o), clk_i, !rst_ni)
   `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
 

@@ -68,7 +68,8 @@ module trirast_trad_walk_stage #(
   logic load, walking, room, stall, go, row_end;
   logic long_has, long_more, long_last_unused;
   logic short_has, short_more, short_last, short_switch, short_load;
-  logic long_step, short_step;
+  logic long_step /* verilator public_flat_rd */;   // counted by the harness: walker busy
+  logic short_step /* verilator public_flat_rd */;
   logic signed [WBits-1:0] long_x, short_x;
 
   // The short walker's load: p0->p1 at the hand-off, p1->p2 at the switch.

@@ -19,11 +19,10 @@ configs=("default|" "n4|--endpoints 4" "divide|--boundary divide" "fixed|--divid
 for scene in "${scenes[@]}"; do
   name=$(basename "$scene" | tr ':=,' '___')
   "$bin" raster --scene "$scene" --engine golden --spans "$out/$name.golden.spans" >/dev/null
-  # Old engine names: model = improved unit (SystemC), rtl = its RTL, trad / rtl-trad likewise.
-  for engine in model rtl trad rtl-trad; do
+  for engine in improved-sc improved-rtl trad-sc trad-rtl; do
     for c in "${configs[@]}"; do
       label=${c%%|*}; opts=${c#*|}
-      case "$engine:$label" in trad*:n4|trad*:divide|trad*:fixed|rtl-trad:n4) continue ;; esac
+      case "$engine:$label" in trad-sc:n4|trad-sc:divide|trad-sc:fixed|trad-rtl:n4) continue ;; esac
       # shellcheck disable=SC2086
       "$bin" raster --scene "$scene" --engine "$engine" $opts \
         --spans "$out/$name.$engine.$label.spans" --cycles "$out/$name.$engine.$label.csv" \

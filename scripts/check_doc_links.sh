@@ -30,9 +30,13 @@ if not docs:
 # Top-level folders whose paths are checked: the usual ones (also once they are gone, so that a
 # document still naming a moved folder fails) and every top-level folder of the tree.
 prefixes = {"docs", "scripts", "rtl", "model", "tests", "tb", "dv", "app", "tools", "cmake"}
+# Folders git ignores (build/, out/: what runs write) hold no repository paths.
+def ignored(name):
+    return subprocess.run(["git", "-C", root, "check-ignore", "-q", name + "/"],
+                          stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL).returncode == 0
 for name in os.listdir(root):
     if os.path.isdir(os.path.join(root, name)) and not name.startswith(".") \
-            and not name.startswith("build"):
+            and not name.startswith("build") and not ignored(name):
         prefixes.add(name)
 prefix_alt = "|".join(sorted(map(re.escape, prefixes), key=len, reverse=True))
 path_re = re.compile(r"(?<![\w./~$-])((?:%s)/[\w./*+-]*)" % prefix_alt)

@@ -11,9 +11,11 @@ PACKAGES=(
   verilator iverilog                      # RTL simulation
   yosys nextpnr-ice40 fpga-icestorm       # synthesis, place and route
   gtkwave                                 # waveform viewer (traces)
+  xvfb xauth imagemagick                  # GTKWave headless in tests/gtkwave (xvfb-run), screenshots
   libglm-dev libassimp-dev assimp-testmodels  # mesh scenes and camera
   libpng-dev                              # PNG images
   python3-matplotlib                      # plots (scripts call /usr/bin/python3)
+  slurm-wlm munge parallel                # distributed sweep: local Slurm (scripts/slurm_local.sh), GNU parallel
 )
 
 missing=()

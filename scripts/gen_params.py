@@ -56,6 +56,17 @@ def derive(base):
         "DefaultEndpoints": (base["endpoints"], "N of the default (synthesized) unit"),
         "DefaultFifoDepth": (base["fifo_depth"], "DEPTH of the default (synthesized) unit"),
     }
+    # The half-space unit's corner values, per unit side U (model/unit/unit_widths.cpp
+    # hs_edge_bits, which explains the bound): |E| <= 2 (2^p - 1) reach + 1.
+    lim = 1 << (base["coord_int_bits"] - 1)
+    for u in (1, 2, 4, 8, 16):
+        one, half = 1 << frac, 1 << (frac - 1)
+        up = lambda v: (v + u - 1) // u * u
+        reach = max((up(min(1 << box, lim)) - 1) * one + half + lim * one,
+                    up(min(1 << box, lim - 1)) * one)
+        bound = 2 * ((1 << p) - 1) * reach + 1
+        d[f"HsEdgeBits{u}"] = (bound.bit_length() + 1,
+                               f"half-space corner values, unit side {u} (docs/unit.md)")
     if not (0 <= s <= 8 and 2 <= base["coord_int_bits"] <= 24 and 1 <= box <= 14):
         raise SystemExit("gen_params.py: configuration outside the ranges RasterConfig accepts")
     if d["EdgeBits"][0] > 63:
@@ -94,11 +105,18 @@ def make_sv(base, d):
     return "\n".join(lines)
 
 
-def make_hpp(base, d):
+def make_hpp(base, d, struct=None):
+    """The header; with struct, the constants are static members of struct `struct` (one per
+    Verilated configuration, dv/verilator/CMakeLists.txt) instead of namespace constants."""
     lines = [header_comment(base, "//"),
              "#pragma once", "", "namespace trirast::rtl {", ""]
+    if struct:
+        lines.append(f"struct {struct} {{")
     for name, (value, comment) in d.items():
-        lines.append(f"constexpr int k{name} = {value};  // {comment}")
+        lead = "  static constexpr int" if struct else "constexpr int"
+        lines.append(f"{lead} k{name} = {value};  // {comment}")
+    if struct:
+        lines.append("};")
     lines += ["", "}  // namespace trirast::rtl", ""]
     return "\n".join(lines)
 
@@ -113,6 +131,7 @@ def main():
     ap.add_argument("--fifo-depth", type=int, default=DEFAULTS["fifo_depth"])
     ap.add_argument("--sv", help="package output (default: rtl/trirast_pkg.sv)")
     ap.add_argument("--hpp", help="header output (default: dv/verilator/trirast_rtl_params.hpp)")
+    ap.add_argument("--struct", help="header: the constants as static members of this struct")
     ap.add_argument("--check", action="store_true",
                     help="compare with the checked-in files instead of writing")
     a = ap.parse_args()
@@ -124,7 +143,7 @@ def main():
     if a.sv or not a.hpp:
         outputs.append((a.sv or SV_PATH, make_sv(base, d)))
     if a.hpp or not a.sv:
-        outputs.append((a.hpp or HPP_PATH, make_hpp(base, d)))
+        outputs.append((a.hpp or HPP_PATH, make_hpp(base, d, a.struct)))
     stale = []
     for path, text in outputs:
         if a.check:

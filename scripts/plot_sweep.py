@@ -43,11 +43,27 @@ def fmt_int(v):
     return "" if v is None else f"{int(round(v)):,}"
 
 
-def fmt_area(s, key):
+def stale_synth(s):
+    """Synthesized, but read from docs/synth.csv (scripts/synth.sh: maybe an older RTL) rather
+    than from the distributed run's own synthesis jobs (a .synth file)."""
+    return (s.get("area_source", "").startswith("synth")
+            and not s.get("area_origin", "").endswith(".synth"))
+
+
+def fmt_area(s, key, merged=False):
     if key not in s:
         return "-"
     v = fmt_int(s[key])
-    return v + (" (estimate)" if s.get("area_source") == "estimate" else "")
+    if s.get("area_source") == "estimate":
+        return v + (" (estimate)" if s.get("rtl", True) else " (estimate: no RTL)")
+    if merged and stale_synth(s):
+        return v + " (docs/synth.csv)"
+    return v
+
+
+def rel(path):
+    """A path of this machine as the report names it: relative to the repository."""
+    return path.replace(ROOT + "/", "") if isinstance(path, str) else path
 
 
 def table(header, rows, align=None):
@@ -70,19 +86,26 @@ def symlog_x(ax):
     ax.set_xlim(left=-0.3)
 
 
-COLORS = {"model": "tab:blue", "trad": "tab:red", "rtl": "tab:green", "float-scanline": "tab:purple",
-          "golden": "black", "unit": "tab:cyan"}
+COLORS = {"improved-sc": "tab:blue", "trad-sc": "tab:red", "improved-rtl": "tab:green",
+          "float-scanline": "tab:purple", "golden": "black", "improved-datapath": "tab:cyan"}
 MARKERS = {"S x N x K": "o", "box bits": "s", "coord bits": "^", "fixed divider": "v",
            "boundary divide": "D", "synthesized": "*", "narrow": "P", "traditional": "X",
            "RTL": "h", "CPU baseline": "d", "reference": "o"}
 
 
-def pareto_plot(points, ykey, ylabel, title, path, flag):
+def pareto_plot(points, ykey, ylabel, title, path, flag, whatif_flag):
     fig, ax = plt.subplots(figsize=(9, 6))
     seen = set()
     for p in points:
         s = p["summary"]
         if ykey not in s or s["failures"]:
+            continue
+        if not s.get("rtl", True) and "area_source" in s:
+            # A model-only what-if (quotient truncation K): its own series, apart from hardware.
+            label = ("model only (K: no RTL" + (", area estimated)" if ykey == "luts" else ")"))
+            ax.scatter(s["error_ppm"], s[ykey], c="lightgray" if not s.get(whatif_flag) else "gray",
+                       marker="x", s=30, label=None if label in seen else label, alpha=0.9)
+            seen.add(label)
             continue
         est = s.get("area_source") == "estimate" and ykey == "luts"
         label = f'{p["engine"]}: {p["group"]}' + (" (area estimate)" if est else "")
@@ -97,7 +120,8 @@ def pareto_plot(points, ykey, ylabel, title, path, flag):
     if front:
         xs = [f[0] for f in front]
         ys = [f[1] for f in front]
-        ax.step(xs, ys, where="post", color="orange", linewidth=1.5, label="Pareto front")
+        ax.step(xs, ys, where="post", color="orange", linewidth=1.5,
+                label="Pareto front (buildable hardware)")
         ax.scatter(xs, ys, s=140, facecolors="none", edgecolors="orange", linewidths=1.5)
         for i, (x, y, p) in enumerate(front):
             ax.annotate(str(i + 1), (x, y), textcoords="offset points", xytext=(3, 5), fontsize=7,
@@ -113,6 +137,36 @@ def pareto_plot(points, ykey, ylabel, title, path, flag):
     fig.tight_layout()
     fig.savefig(path, dpi=110, metadata={"Software": None})
     plt.close(fig)
+
+
+def load_text(d):
+    """The machine's load during a distributed run: RESULTS/load.txt (scripts/sweep_slurm.sh:
+    "EPOCH LOAD1 LOAD5 LOAD15 WHAT" lines) and RESULTS/cpus.txt."""
+    res = d.get("merged_from") or ""
+    path = os.path.join(res, "load.txt")
+    if not res or not os.path.isfile(path):
+        return ("Load during the run: not recorded (the results directory has no load.txt; "
+                "scripts/sweep_slurm.sh writes it).\n")
+    samples = []
+    for line in open(path):
+        f = line.split()
+        if len(f) >= 4:
+            samples.append((int(f[0]), float(f[1])))
+    cpus = ""
+    cp = os.path.join(res, "cpus.txt")
+    if os.path.isfile(cp):
+        cpus = open(cp).read().strip()
+    if not samples:
+        return "Load during the run: load.txt is empty.\n"
+    loads = [l for _, l in samples]
+    span = (samples[-1][0] - samples[0][0]) / 60.0
+    return (f"Load during the run: the 1-minute load average, sampled {len(samples)} times over "
+            f"{span:.0f} minutes (at submission, every 30 s while scripts/sweep_slurm.sh waited, "
+            f"and at each merge job): mean **{sum(loads) / len(loads):.1f}**, from "
+            f"{min(loads):.1f} to {max(loads):.1f}, on a machine of {cpus or '?'} CPUs shared "
+            "with other work (the tasks' wall times and the synthesis jobs' durations are "
+            "stretched by it; cycles, pixels and areas are not). Samples: `"
+            + rel(path) + "` (not checked in).\n")
 
 
 def main():
@@ -133,19 +187,19 @@ def main():
 
     # ---- plots ----
     pareto_plot(points, "cycles_per_triangle", "cycles per scene triangle (all scenes, log)",
-                "Cycles against error (timed engines; Pareto front in orange, numbered as in the "
-                "table)",
-                os.path.join(args.img, "cycles_vs_error.png"), "pareto_cycles")
+                "Cycles against error (timed engines; Pareto front of buildable hardware in "
+                "orange, numbered as in the table; x: model-only K what-ifs)",
+                os.path.join(args.img, "cycles_vs_error.png"), "pareto_cycles", "whatif_cycles")
     pareto_plot(points, "luts", "LUTs, log" + ("" if am["have_synth"] else " (estimate)"),
-                "Area against error (hollow: estimated area; Pareto front in orange, numbered as "
-                "in the table)",
-                os.path.join(args.img, "area_vs_error.png"), "pareto_area")
+                "Area against error (hollow: estimated area; Pareto front of buildable hardware "
+                "in orange, numbered as in the table; x: model-only K what-ifs, area estimated)",
+                os.path.join(args.img, "area_vs_error.png"), "pareto_area", "whatif_area")
 
     # Error against subpixel bits.
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for engine, cfg_of, label in [
-            ("model", lambda S: f"S{S} c16 b14 K- N1", "improved unit (the exact rule at S)"),
-            ("trad", lambda S: f"S{S} c16", "traditional Bresenham"),
+            ("improved-sc", lambda S: f"S{S} c16 b14 K- N1", "improved unit (the exact rule at S)"),
+            ("trad-sc", lambda S: f"S{S} c16", "traditional Bresenham"),
             ("float-scanline", lambda S: f"S{S} c16", "float scanline (CPU)")]:
         xs, ys = [], []
         for S in range(0, 9):
@@ -166,7 +220,7 @@ def main():
     plt.close(fig)
 
     # Improved vs traditional cycles per scene.
-    imp, trad = find(points, "model", DEFAULT_CONFIG), find(points, "trad", TRAD_DEFAULT)
+    imp, trad = find(points, "improved-sc", DEFAULT_CONFIG), find(points, "trad-sc", TRAD_DEFAULT)
     cmp_rows = []
     if imp and trad:
         labels, ic, tc = [], [], []
@@ -179,10 +233,10 @@ def main():
                 cmp_rows.append((sc, a, b))
         fig, ax = plt.subplots(figsize=(9, 4.5))
         x = range(len(labels))
-        ax.bar([i - 0.2 for i in x], ic, width=0.4, label="improved (model, default)",
-               color=COLORS["model"])
-        ax.bar([i + 0.2 for i in x], tc, width=0.4, label="traditional (trad, S = 8)",
-               color=COLORS["trad"])
+        ax.bar([i - 0.2 for i in x], ic, width=0.4, label="improved (improved-sc, default)",
+               color=COLORS["improved-sc"])
+        ax.bar([i + 0.2 for i in x], tc, width=0.4, label="traditional (trad-sc, S = 8)",
+               color=COLORS["trad-sc"])
         ax.set_yscale("log")
         ax.set_xticks(list(x))
         ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=7)
@@ -200,20 +254,43 @@ def main():
     L = []
     L.append("# Speed against error: configuration sweep, Pareto fronts, smallest configurations\n")
     L.append(f"Generated by `{args.command}`"
-             + (f" in **{elapsed:.0f} s** wall time" if elapsed is not None else "")
-             + f" ({d['jobs']} jobs; `trirast sweep` itself {d['wall_seconds']['total']:.1f} s for "
-             f"{len(points)} configurations x {len(scenes)} scenes"
+             + ((f" (its final merge and report: **{elapsed:.0f} s** wall time; the tasks and "
+                 "synthesis jobs ran before, into the results directory it names;"
+                 if d.get("merged_from") else f" in **{elapsed:.0f} s** wall time")
+                if elapsed is not None else "")
+             + (f" `trirast sweep --merge` {d['wall_seconds']['total']:.1f} s for " if d.get("merged_from")
+                else f" ({d['jobs']} jobs; `trirast sweep` itself {d['wall_seconds']['total']:.1f} s for ")
+             + f"{len(points)} configurations x {len(scenes)} scenes"
              + (", **quick mode**" if d["quick"] else "") + "). Sweep command: `"
-             + d["command"].replace(ROOT + "/", "") + "`. Data: `sweep.csv` (one row per configuration and scene), "
+             + rel(d["command"]) + "`. Data: `sweep.csv` (one row per configuration and scene), "
              "`sweep_configs.csv` (one row per configuration), `sweep.json`, `fit_*.json` in `"
              + os.path.relpath(args.data, os.path.dirname(os.path.abspath(args.doc))) + "`.\n")
     L.append("Every number below was produced by that command in that run, except the paper's "
              "(Zhang & Ruan, \"A triangle rasterization based on improved Bresenham algorithm\"), "
              "which are quoted and marked *paper*"
              + ("; LUT and flip-flop counts marked *synth* were read from "
-                f"`{am['synth_csv'].replace(ROOT + '/', '')}` (scripts/synth.sh)" if am["have_synth"] else "")
+                f"`{rel(am['synth_csv'])}` (scripts/synth.sh)"
+                + (" or from the run's own synthesis jobs (the table *Synthesized area and the "
+                   "estimate's error* names each one's file)" if d.get("merged_from") else "")
+                if am["have_synth"] else "")
              + ". Cycles are exact (SystemC model, docs/timing.md); wall times are noisy (a shared "
              "machine) and shown only as ratios within this run.\n")
+    if d.get("merged_from"):
+        task_wall = sum(r["wall_seconds"] for p in points for r in p["scenes"])
+        L.append(f"The simulation ran as {len(points) * len(scenes)} independent tasks "
+                 "(configuration x scene) of the distributed sweep, each writing its own result "
+                 "file; `trirast sweep --merge` built `sweep.csv`, `sweep_configs.csv` and "
+                 "`sweep.json` from them (the engines' own wall time summed over the tasks: "
+                 f"{task_wall:.1f} s)"
+                 + (", **partial: " + str(len(d["missing_tasks"])) + " tasks had no result**"
+                    if d.get("partial") else "")
+                 + ". Every buildable configuration on a hardware front (and the default improved "
+                 "and traditional units) was synthesized in this run, on this tree's RTL, by "
+                 "synthesis jobs into the same results directory (scripts/sweep_synth_task.sh, "
+                 "`scripts/synth.sh --one`, one configuration each; a docs/synth.csv row for the "
+                 "same configuration is replaced, not reused); their results are in the table "
+                 "*Synthesized area and the estimate's error* below, each with its result file.\n")
+        L.append(load_text(d))
     if d.get("skipped_engines"):
         L.append("Engines left out (they do not run in this build): "
                  + ", ".join(d["skipped_engines"]) + ".\n")
@@ -240,10 +317,19 @@ def main():
              "exact default; `K6`: every division capped at 6 quotient bits, so a larger quotient "
              "saturates and is read as \"beyond the box\"), `N` endpoints per cycle, `fixed` the "
              "fixed divider (Q iterations per division), `divide` the divide boundary mode.\n"
+             "- **Fronts** (columns of `sweep_configs.csv` and `sweep.json`): `pareto_cycles` "
+             "and `pareto_area` mark the fronts of buildable hardware (`rtl` = 1: the "
+             "configuration the RTL implements); `whatif_cycles` and `whatif_area` mark a "
+             "model-only configuration (`rtl` = 0: quotient truncation K) that no other "
+             "configuration, buildable or not, dominates. `rtl`, `whatif_cycles` and "
+             "`whatif_area` are the last three columns (added after `failures`).\n"
              "- **Area**: " + ("LUTs and flip-flops from synthesis (" + am["target"] + ") where "
-                               "docs/synth.csv covers the configuration (*synth*), otherwise "
+                               "the run's synthesis jobs or docs/synth.csv cover the "
+                               "configuration (a number without a mark; from docs/synth.csv, "
+                               "which may be of an older RTL, marked *(docs/synth.csv)* in a "
+                               "distributed run), otherwise "
                                if am["have_synth"] else "no synthesis results were found "
-                               f"(`{am['synth_csv']}`), so every area is ")
+                               f"(`{rel(am['synth_csv'])}`), so every area is ")
              + "an estimate from the datapath widths, marked *estimate*. " + am["formula"] + "\n")
 
     L.append("## Scenes\n")
@@ -261,8 +347,17 @@ def main():
     L.append(f"![cycles against error]({img_rel}/cycles_vs_error.png)\n")
     L.append(f"![area against error]({img_rel}/area_vs_error.png)\n")
     L.append("Points on a front: no other configuration has both less error and fewer cycles "
-             "(or LUTs). The float scanline has neither cycles nor area (a CPU baseline) and is "
-             "in the tables only.\n")
+             "(or LUTs). Both fronts are fronts of **buildable hardware**: the configurations "
+             "the RTL implements (the improved unit without quotient truncation, the traditional "
+             "unit), whose area is synthesized. A configuration with quotient truncation `K` "
+             "exists only in the C++ models (the RTL's divider always has Q = box bits + 1 "
+             "quotient bits; the improved-rtl engine refuses K, dv/verilator/rtl_engine.cpp): "
+             "there is nothing to synthesize, its area is an estimate, and it is shown apart, "
+             "as the grey x series of the plots and the table *Model-only what-ifs* below, "
+             "never on a front. The float scanline has neither cycles nor area (a CPU baseline) "
+             "and is in the tables only.\n")
+    merged = bool(d.get("merged_from"))
+
     for flag, ykey, what in (("pareto_cycles", "cycles_per_triangle", "cycles"),
                              ("pareto_area", "luts", "area")):
         front = sorted((p for p in points if p["summary"].get(flag)),
@@ -275,12 +370,105 @@ def main():
                          fmt_int(s["rejected"]),
                          f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                          f"{s['cycles_per_triangle']:.2f}" if "cycles_per_triangle" in s else "-",
-                         fmt_area(s, "luts"), fmt_area(s, "ffs")])
-        L.append(f"The {what} front (error, {'cycles per triangle' if what == 'cycles' else 'LUTs'}):\n")
+                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged)])
+        L.append(f"The {what} front of buildable hardware (error, "
+                 f"{'cycles per triangle' if what == 'cycles' else 'LUTs'}):\n")
         L.append(table(["#", "engine", "configuration", "error ppm (mean)", "max ppm", "rejected",
                         "cracks / doubles", "cycles/tri", "LUTs", "FFs"], rows,
                        ["---:", "---", "---", "---:", "---:", "---:", "---:", "---:", "---:",
                         "---:"]) + "\n")
+
+    # The model-only what-ifs: K configurations that would be on a front if they were hardware.
+    whatif = sorted((p for p in points
+                     if p["summary"].get("whatif_cycles") or p["summary"].get("whatif_area")),
+                    key=lambda p: (p["summary"]["error_ppm"], p["config"]))
+    L.append("### Model-only what-ifs (no RTL, area estimated)\n")
+    if whatif:
+        rows = []
+        for p in whatif:
+            s = p["summary"]
+            rows.append([p["engine"], f"`{p['config']}`", fmt_ppm(s["error_ppm"]),
+                         fmt_ppm(s["max_error_ppm"]), fmt_int(s["rejected"]),
+                         f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
+                         f"{s['cycles_per_triangle']:.2f}" if "cycles_per_triangle" in s else "-",
+                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
+                         ", ".join(w for w, f in (("cycles", "whatif_cycles"),
+                                                  ("area", "whatif_area")) if s.get(f))])
+        L.append(f"{len(whatif)} configurations with quotient truncation `K` (C++ model only: no "
+                 "RTL, so no synthesis; their LUTs and flip-flops are the width estimate, whose "
+                 "error against synthesis is reported below) would lie on the cycles or the area "
+                 "front if every configuration competed (column *undominated on*). They are not "
+                 "hardware and are not on the fronts above; their cycles and error are exact.\n")
+        L.append(table(["engine", "configuration", "error ppm (mean)", "max ppm", "rejected",
+                        "cracks / doubles", "cycles/tri", "LUTs", "FFs", "undominated on"], rows,
+                       ["---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---:",
+                        "---"]) + "\n")
+    else:
+        L.append("No configuration with quotient truncation `K` would lie on a front if every "
+                 "configuration competed.\n")
+
+    # Synthesized area on the fronts and the estimate's error against synthesis.
+    on_front = [p for p in points if p["summary"].get("pareto_cycles") or p["summary"].get("pareto_area")]
+    hw_front = [p for p in on_front if "area_source" in p["summary"]]
+    est_front = [p for p in hw_front if p["summary"]["area_source"] == "estimate"]
+    stale_front = [p for p in hw_front if merged and stale_synth(p["summary"])]
+    distinct = lambda ps: len({(p["summary"].get("area_origin"), p["config"]) for p in ps})
+    L.append("### Synthesized area and the estimate's error\n")
+    L.append(f"{len(hw_front)} points of buildable hardware are on a front: "
+             f"{len(hw_front) - len(est_front) - len(stale_front)} with area synthesized "
+             f"({am['target'] or '-'})" + (" in this run" if merged else "")
+             + (f", {len(stale_front)} with area read from docs/synth.csv ("
+                + ", ".join(f"`{p['engine']} {p['config']}`" for p in stale_front) + ")"
+                if stale_front else "")
+             + (f", {len(est_front)} with an estimate ("
+                + ", ".join(f"`{p['engine']} {p['config']}`" for p in est_front) + ")"
+                if est_front else ", none with an estimate")
+             + ".\n")
+    rows, errs = [], {}
+    # A distributed run: the rows of its own synthesis jobs (this tree's RTL) only; the estimate's
+    # error is measured against them.
+    for r in am.get("synth_rows", []):
+        e = r.get("estimate")
+        if not e or (merged and not r.get("from_run")):
+            continue
+        calib = (r["unit"] == "improved" and r["subpixel_bits"] == 8 and r["coord_bits"] == 16
+                 and r["box_bits"] == 14 and r.get("endpoints", 1) == 1)
+        el = 100.0 * (e["luts"] - r["luts"]) / r["luts"] if r["luts"] else 0.0
+        ef = 100.0 * (e["ffs"] - r["ffs"]) / r["ffs"] if r["ffs"] else 0.0
+        if not calib:
+            errs.setdefault(r["unit"], ([], []))
+            errs[r["unit"]][0].append(el)
+            errs[r["unit"]][1].append(ef)
+        src = os.path.relpath(r["file"], ROOT) if r["file"].startswith(ROOT) else r["file"]
+        src = src if not src.startswith("/") else os.path.basename(src)
+        rows.append([r["unit"], f"S{r['subpixel_bits']} c{r['coord_bits']} b{r['box_bits']} "
+                     f"N{r.get('endpoints', 1)}", fmt_int(r["luts"]), fmt_int(e["luts"]),
+                     "calibration" if calib else f"{el:+.1f}%", fmt_int(r["ffs"]),
+                     fmt_int(e["ffs"]), "calibration" if calib else f"{ef:+.1f}%", f"`{src}`"])
+    if rows:
+        L.append(table(["unit", "widths", "LUTs synth", "LUTs estimate", "LUT error",
+                        "FFs synth", "FFs estimate", "FF error", "result file"], rows,
+                       ["---", "---", "---:", "---:", "---:", "---:", "---:", "---:", "---"]) + "\n")
+    if errs:
+        mean_abs = lambda v: sum(abs(x) for x in v) / len(v)
+        parts = []
+        for unit, (el, ef) in sorted(errs.items()):
+            parts.append(f"the {unit} unit, {len(el)} configurations: LUTs mean |error| "
+                         f"**{mean_abs(el):.1f}%** (from {min(el):+.1f}% to {max(el):+.1f}%), "
+                         f"flip-flops mean |error| **{mean_abs(ef):.1f}%** (from {min(ef):+.1f}% "
+                         f"to {max(ef):+.1f}%)")
+        L.append("The estimate against synthesis, every configuration synthesized "
+                 + ("in this run " if merged else "") + "but the "
+                 "calibration point (the default improved unit, to which both units' estimates "
+                 "are scaled): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
+                 "synthesis." + (" Synthesis job results: `" + rel(d["merged_from"]) + "/synth/` "
+                                 "(not checked in)." if merged else "") + "\n")
+    fm = d.get("ice40_fmax", [])
+    if fm:
+        L.append("iCE40 Fmax (nextpnr-ice40, HX8K, seed 1, from the synthesis jobs' place and route; "
+                 "only the traditional unit fits the HX8K at these widths): "
+                 + ", ".join(f"`{f['engine']} {f['config']}` {f['fmax_mhz']:.2f} MHz" for f in fm)
+                 + ".\n")
 
     # Improved vs traditional.
     L.append("## Improved vs traditional unit\n")
@@ -304,8 +492,8 @@ def main():
         rows.append(["**all scenes**", fmt_int(ti), fmt_int(tt), f"**{gain_all:+.1f}%**", "", ""])
         rows.append(["**median of the scenes**", "", "", f"**{gain_median:+.1f}%**", "", ""])
         rows.append(["*paper* (Zhang & Ruan)", "", "", f"*about +{PAPER_SPEEDUP_PCT}%*", "", ""])
-        L.append(f"Improved = `model {DEFAULT_CONFIG}` (the default), traditional = "
-                 f"`trad {TRAD_DEFAULT}`; \"improved vs trad\" is (trad - improved) / trad, "
+        L.append(f"Improved = `improved-sc {DEFAULT_CONFIG}` (the default), traditional = "
+                 f"`trad-sc {TRAD_DEFAULT}`; \"improved vs trad\" is (trad - improved) / trad, "
                  "positive when the improved unit needs fewer cycles.\n")
         L.append(table(["scene", "improved cycles", "trad cycles", "improved vs trad",
                         "improved cyc/tri", "trad cyc/tri"], rows,
@@ -353,7 +541,7 @@ def main():
     rows = []
     for S in (8, 6, 4, 2, 0):
         row = [f"S = {S}"]
-        for engine, cfg in (("model", f"S{S} c16 b14 K- N1"), ("trad", f"S{S} c16"),
+        for engine, cfg in (("improved-sc", f"S{S} c16 b14 K- N1"), ("trad-sc", f"S{S} c16"),
                             ("float-scanline", f"S{S} c16")):
             p = find(points, engine, cfg)
             if p is None:
@@ -390,7 +578,7 @@ def main():
                          f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                          f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
                          f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                         fmt_area(s, "luts"), fmt_area(s, "ffs"),
+                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
                          f"{s['wall_ratio']:.2f}"])
         L.append(table(["engine", "configuration", "error ppm", "max ppm", "rejected",
                         "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",
@@ -403,23 +591,23 @@ def main():
                 "saturated quotient as \"beyond the box\": boxes wider or taller than about 2^K "
                 "pixels lose or gain pixels. Fewer quotient bits also mean fewer divider "
                 "iterations (cycles).",
-                lambda p: p["engine"] == "model" and p["group"] == "S x N x K"
+                lambda p: p["engine"] == "improved-sc" and p["group"] == "S x N x K"
                 and p["config"].startswith("S8 ") and p["config"].endswith("N1"))
     group_table("Divider width: box bits (the divider's Q = box bits + 1)",
                 "A box wider or taller than 2^box_bits pixels is rejected by the unit's interface. "
                 "Boxes are clipped to the 1024 x 768 viewport, so 10 bits hold every box.",
-                lambda p: p["engine"] == "model" and (p["group"] == "box bits"
+                lambda p: p["engine"] == "improved-sc" and (p["group"] == "box bits"
                                                       or p["config"] == DEFAULT_CONFIG))
     group_table("Coordinate width",
                 "A vertex outside [-2^(c-1), 2^(c-1)) pixels rejects its triangle; a 1024-pixel "
                 "viewport needs c >= 11.",
-                lambda p: p["engine"] == "model" and (p["group"] == "coord bits"
+                lambda p: p["engine"] == "improved-sc" and (p["group"] == "coord bits"
                                                       or p["config"] in (DEFAULT_CONFIG,
                                                                          "S4 c16 b14 K- N1")))
     group_table("Endpoints per cycle N (S = 8), divider and boundary modes",
                 "N does not change the output; it trades walk-stage area for cycles, which help "
                 "only where the walk, not the set-up, is the bottleneck.",
-                lambda p: p["engine"] in ("model", "rtl") and (
+                lambda p: p["engine"] in ("improved-sc", "improved-rtl") and (
                     (p["group"] == "S x N x K" and p["config"].startswith("S8 ")
                      and " K- " in p["config"]) or p["group"] in ("fixed divider",
                                                                  "boundary divide", "RTL")))
@@ -429,15 +617,15 @@ def main():
                 "The float scanline (after the devlog \"Software rasterization: a fast and exact "
                 "triangle rasterization algorithm in C\") runs on the CPU: no cycles, no area; its wall time "
                 "is a ratio to the golden's in this run.",
-                lambda p: p["engine"] in ("trad", "float-scanline", "golden"))
+                lambda p: p["engine"] in ("trad-sc", "float-scanline", "golden"))
 
     # Cracks on closed meshes per scene.
     closed = [i for i, sc in enumerate(scenes) if sc["closed"]]
     if closed:
         L.append("## Cracks and double hits on the closed meshes, per scene\n")
-        picks = [("golden", "S8 c16"), ("model", DEFAULT_CONFIG), ("model", "S0 c16 b14 K- N1"),
-                 ("model", "S8 c16 b14 K6 N1"), ("model", "S8 c16 b14 K4 N1"),
-                 ("trad", "S8 c16"), ("trad", "S0 c16"), ("float-scanline", "S8 c16"),
+        picks = [("golden", "S8 c16"), ("improved-sc", DEFAULT_CONFIG), ("improved-sc", "S0 c16 b14 K- N1"),
+                 ("improved-sc", "S8 c16 b14 K6 N1"), ("improved-sc", "S8 c16 b14 K4 N1"),
+                 ("trad-sc", "S8 c16"), ("trad-sc", "S0 c16"), ("float-scanline", "S8 c16"),
                  ("float-scanline", "S0 c16")]
         rows = []
         for engine, cfg in picks:
@@ -465,7 +653,12 @@ def main():
                  "bits, then the quotient truncation (binary search, each step checked against "
                  "the reference with the bit-accurate unit model), and keeps the S whose result has "
                  "the fewest LUTs; N = 1 (N does not change the output). Cycles are the SystemC "
-                 "model's, the default against the fit.\n")
+                 "model's, the default against the fit."
+                 + (" Its areas are not the run's synthesis: `trirast fit` reads docs/synth.csv "
+                    "(scripts/synth.sh, which may be of an older RTL) where it covers the "
+                    "configuration, else the estimate (marked); a fit with quotient truncation "
+                    "(K) is a model-only configuration (no RTL, area estimated)."
+                    if merged else "") + "\n")
         rows = []
         for f in fits:
             ft, df, sv = f["fit"], f["default"], f["saved"]
@@ -479,8 +672,9 @@ def main():
                          f"{fmt_int(df['total_cycles'])} -> {fmt_int(ft['total_cycles'])} "
                          f"({sv['cycles_pct']:+.1f}%)",
                          f"{fmt_int(df['luts'])} -> {fmt_int(ft['luts'])} ({sv['luts_pct']:.1f}% "
-                         "saved)" + (" (estimate)" if "estimate" in (df["area_source"],
-                                                                     ft["area_source"]) else ""),
+                         "saved)" + (" (estimate" + (": no RTL" if ft["quotient_bits"] else "")
+                                     + ")" if "estimate" in (df["area_source"],
+                                                             ft["area_source"]) else ""),
                          f"{fmt_int(df['ffs'])} -> {fmt_int(ft['ffs'])} ({sv['ffs_pct']:.1f}% "
                          "saved)"])
         L.append(table(["scene", "budget ppm", "smallest configuration", "error ppm", "rejected",
@@ -508,7 +702,7 @@ def main():
                      f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
                      f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
                      f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                     fmt_area(s, "luts"), fmt_area(s, "ffs"), f"{s['wall_ratio']:.2f}",
+                     fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged), f"{s['wall_ratio']:.2f}",
                      str(s["failures"]) if s["failures"] else ""])
     L.append(table(["engine", "group", "configuration", "error ppm", "missing ppm", "extra ppm",
                     "rejected", "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Speed against error: regenerates docs/speed-vs-error.md and its plots from nothing.
-#   scripts/sweep.sh [--quick] [--jobs N] [--out DIR] [--synth]
+#   scripts/sweep.sh [--quick] [--jobs N] [--out DIR] [--synth] [--merge RESULTS] [--command TEXT]
+#                    [-- SWEEP-OPTIONS...]
 # - builds build/trirast if needed (TRIRAST_BIN=PATH uses that binary and builds nothing);
 # - --synth first runs scripts/synth.sh (Yosys; minutes), so that docs/synth.csv is from this run;
 #   without it an existing docs/synth.csv is read, and the report says so;
@@ -10,6 +11,9 @@
 # Outputs: default: data in build/sweep/, docs/speed-vs-error.md, plots in docs/img/speed-vs-error/.
 #          --out DIR: everything in DIR (DIR/speed-vs-error.md, DIR/img/speed-vs-error/, data).
 # --quick: three small scenes and ~20 configurations (the test suite runs it; a few seconds).
+# --merge RESULTS: the sweep's data from a distributed run's result files (`trirast sweep --merge`,
+#          scripts/sweep_slurm.sh and scripts/sweep_parallel.sh) instead of running it here;
+#          --command: the command the report names (theirs). SWEEP-OPTIONS go to trirast sweep.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 START=$(date +%s.%N)
@@ -17,13 +21,18 @@ QUICK=0
 JOBS=2
 OUT=""
 SYNTH=0
+MERGE=""
+CMD_OVERRIDE=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --quick) QUICK=1 ;;
     --jobs) JOBS="${2:?--jobs needs a number}"; shift ;;
     --out) OUT="${2:?--out needs a directory}"; shift ;;
     --synth) SYNTH=1 ;;
-    -h|--help) sed -n "2,11p" "$0"; exit 0 ;;
+    --merge) MERGE="${2:?--merge needs a directory}"; shift ;;
+    --command) CMD_OVERRIDE="${2:?--command needs a text}"; shift ;;
+    --) shift; break ;;
+    -h|--help) sed -n "2,15p" "$0"; exit 0 ;;
     *) echo "sweep.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
   esac
   shift
@@ -63,8 +72,13 @@ mkdir -p "$DATA" "$IMG"
 
 QUICK_ARG=()
 [ "$QUICK" = 1 ] && QUICK_ARG=(--quick)
-"$BIN" sweep "${QUICK_ARG[@]}" --jobs "$JOBS" --out "$DATA" \
-  --synth-csv "$ROOT/docs/synth.csv" --synth-script "$ROOT/scripts/synth.sh"
+if [ -n "$MERGE" ]; then
+  "$BIN" sweep "${QUICK_ARG[@]}" --merge "$MERGE" --out "$DATA" \
+    --synth-csv "$ROOT/docs/synth.csv" --synth-script "$ROOT/scripts/synth.sh" "$@"
+else
+  "$BIN" sweep "${QUICK_ARG[@]}" --jobs "$JOBS" --out "$DATA" \
+    --synth-csv "$ROOT/docs/synth.csv" --synth-script "$ROOT/scripts/synth.sh" "$@"
+fi
 
 fit() {  # fit N SCENE [options...]
   local n="$1"; shift
@@ -88,6 +102,7 @@ CMD="scripts/sweep.sh"
 [ "$JOBS" != 2 ] && CMD="$CMD --jobs $JOBS"
 [ -n "$OUT" ] && CMD="$CMD --out DIR"
 [ "$SYNTH" = 1 ] && CMD="$CMD --synth"
+[ -n "$CMD_OVERRIDE" ] && CMD="$CMD_OVERRIDE"
 "$PY" "$ROOT/scripts/plot_sweep.py" --data "$DATA" --doc "$DOC" --img "$IMG" --start "$START" \
   --command "$CMD"
 echo "sweep.sh: wrote $DOC, plots in $IMG, data in $DATA ($(awk -v a="$START" -v b="$(date +%s.%N)" 'BEGIN { printf "%.0f", b - a }') s)" >&2

@@ -29,11 +29,17 @@ ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 JOBS=2
 REPORT_ONLY=0
 ONLY=""
+ONE=""       # --one UNIT:S:COORD:BOX:N  one configuration (a job of the distributed sweep)
+ONE_OUT=""   # --one-out FILE            its result file (written whole, then renamed)
+ONE_PNR=0    # --one-pnr                 also place and route it on the iCE40 HX8K (trad only: fits)
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) JOBS="$2"; shift 2 ;;
     --report-only) REPORT_ONLY=1; shift ;;
     --only) ONLY="$2"; shift 2 ;;
+    --one) ONE="$2"; shift 2 ;;
+    --one-out) ONE_OUT="$2"; shift 2 ;;
+    --one-pnr) ONE_PNR=1; shift ;;
     -h|--help) sed -n '2,30p' "$0"; exit 0 ;;
     *) break ;;
   esac
@@ -114,6 +120,45 @@ gen_wrapper() {  # gen_wrapper NAME TOP UNIT CONFIG [--tie PORT=VALUE ...]: $WOR
 # The runtime n and DEPTH of a wrapped unit are tied to the synthesized NumEndpoints and FifoDepth.
 TIE_N="--tie cfg_endpoints_i=trirast_pkg::DefaultEndpoints"
 TIE_DEPTH="--tie cfg_fifo_depth_i=trirast_pkg::DefaultFifoDepth"
+
+# ---- --one: one configuration of one unit for the distributed sweep (scripts/sweep_slurm.sh) ----
+# Xilinx 7 synthesis (the sweep's area target) and, with --one-pnr, iCE40 place and route for Fmax.
+# Writes ONE_OUT: "# trirast-synth-result 1", a CSV header, one row per target, "# end".
+if [ -n "$ONE" ]; then
+  IFS=: read -r unit s c b n <<< "$ONE"
+  [ -n "$n" ] && [ -n "$ONE_OUT" ] || { echo "synth.sh: --one UNIT:S:COORD:BOX:N needs --one-out FILE" >&2; exit 2; }
+  name="$unit-S$s-c$c-b$b-N$n"
+  mkdir -p "$WORK/$name"
+  python3 "$ROOT/scripts/gen_params.py" --subpixel-bits "$s" --coord-bits "$c" --box-bits "$b" \
+    --endpoints "$n" --sv "$WORK/$name/trirast_pkg.sv"
+  t0=$(date +%s)
+  yosys_stat "$unit" "$name" xilinx
+  f="$WORK/$name/$unit.xilinx.stat"
+  fm=""
+  if [ "$ONE_PNR" = 1 ] && [ "$unit" = trad ]; then
+    # shellcheck disable=SC2086
+    gen_wrapper trirast_synth_trad trirast_trad_top trad "$name" $TIE_DEPTH
+    pnr "trad.$name" trad "$name" trirast_synth_trad "" "$WORK/$name/trirast_synth_trad.sv $ROOT/rtl/trirast_synth_shell.sv" || true
+    log="$WORK/pnr/trad.$name/nextpnr.log"
+    if [ -f "$log" ] && grep -q "Program finished normally" "$log"; then
+      fm=$(grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/")
+    fi
+  fi
+  tmp="$ONE_OUT.tmp.$$"
+  {
+    echo "# trirast-synth-result 1"
+    echo "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,box_bits,endpoints,seconds"
+    echo "$unit,$name,xilinx7,$(count '^LUT[1-6]$' "$f"),$(count '^FD[RSCPE]*$' "$f"),$(count '^CARRY4$' "$f"),$(count '^RAMB' "$f"),$(count '^DSP48' "$f"),,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    if [ -n "$fm" ]; then
+      p="$WORK/pnr/trad.$name/design.stat"
+      echo "$unit,$name,ice40-pnr,$(count '^SB_LUT4$' "$p"),$(count '^SB_DFF' "$p"),$(count '^SB_CARRY$' "$p"),0,0,$fm,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    fi
+    echo "# end"
+  } > "$tmp"
+  mv "$tmp" "$ONE_OUT"
+  echo "synth.sh: $name: $(sed -n 3p "$ONE_OUT")" >&2
+  exit 0
+fi
 
 if [ "$REPORT_ONLY" = 0 ]; then
 mkdir -p "$WORK/jobs"

@@ -12,20 +12,12 @@ namespace trirast {
 namespace {
 
 using test::CommandResult;
+using test::count_lines;
+using test::kBin;
 using test::run_command;
+using test::slurp;
 using test::TempDir;
 using test::write_file;
-
-const std::string kBin = TRIRAST_BIN;
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 // A bad input: exit status 2, exactly one line on stderr containing `needle`, nothing on disk.
 void expect_one_line_error(const std::string& args, const std::string& needle, TempDir& dir) {
@@ -143,7 +135,7 @@ TEST(Cli, RasterWritesSortedSpansImageAndReport) {
     EXPECT_NE(json.find(key), std::string::npos) << key << "\n" << json;
 }
 
-// Acceptance (issue 2, item 5): a .tri file written by another program, with vertices on the
+// Acceptance: a .tri file written by another program, with vertices on the
 // 1/256 grid inside the viewport, gives exactly the pixels of the D3D11 rule.
 TEST(Cli, IndependentD3D11ProgramAgrees) {
   TempDir dir;
@@ -197,14 +189,18 @@ TEST(Cli, CompareExitStatusBothWays) {
 // holds the engine's own counters, not the per-module ones, which --report keeps.
 TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
   TempDir dir;
-  ASSERT_EQ(run_command(kBin + " raster --scene builtin:fan --engine model --report " +
-                        dir.file("m.json")).status, 0);
+  ASSERT_EQ(run_command(kBin + " raster --scene builtin:fan --engine improved-sc --report " +
+                        dir.file("m.json"))
+                .status,
+            0);
   const std::string report = slurp(dir.file("m.json"));
   const size_t at = report.find("\"total_cycles\":");
   ASSERT_NE(at, std::string::npos) << report;
   const long long cycles = std::stoll(report.substr(at + 15));
   ASSERT_GT(cycles, 0);
-  CommandResult r = run_command(kBin + " compare --scene builtin:fan --engines golden,unit,model,rtl");
+  CommandResult r = run_command(
+      kBin +
+      " compare --scene builtin:fan --engines golden,improved-datapath,improved-sc,improved-rtl");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   auto row = [&](const std::string& engine) {
     const size_t b = r.out.find("\n  " + engine + " ");
@@ -216,12 +212,12 @@ TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
     return cells;
   };
   // engine exact spans pixels missing extra seconds cycles work...
-  for (const std::string engine : {"model", "rtl"}) {
+  for (const std::string engine : {"improved-sc", "improved-rtl"}) {
     const auto cells = row(engine);
     ASSERT_GE(cells.size(), 8u) << engine;
     EXPECT_EQ(cells[7], std::to_string(cycles)) << engine << "\n" << r.out;
   }
-  for (const std::string engine : {"golden", "unit"}) {
+  for (const std::string engine : {"golden", "improved-datapath"}) {
     const auto cells = row(engine);
     ASSERT_GE(cells.size(), 8u) << engine;
     EXPECT_EQ(cells[7], "-") << engine << "\n" << r.out;
@@ -229,6 +225,63 @@ TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
   EXPECT_EQ(r.out.find("busy_cycles."), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("divider_iterations="), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--report FILE.json"), std::string::npos) << r.out;
+}
+
+// Engine names: the list shows the current names; an old name (kept for one release) runs as
+// its new name after one note on stderr, and the output says the new name; an unknown name is a
+// one-line error naming the option.
+TEST(CliEngineNames, NewNamesListedOldNamesNoted) {
+  const CommandResult list = run_command(kBin + " engines");
+  ASSERT_EQ(list.status, 0) << list.err;
+  std::vector<std::string> names;
+  std::istringstream lines(list.out);
+  for (std::string line; std::getline(lines, line);)
+    names.push_back(line.substr(0, line.find(' ')));
+  for (const std::string name :
+       {"golden", "improved-datapath", "improved-sc", "trad-sc", "float-scanline"})
+    EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << "\n" << list.out;
+  for (const std::string old_name : {"unit", "model", "rtl", "trad", "rtl-trad"})
+    EXPECT_EQ(std::find(names.begin(), names.end(), old_name), names.end()) << old_name;
+
+  TempDir dir;
+  const CommandResult r = run_command(kBin + " raster --scene builtin:fan --engine model --spans " +
+                                      dir.file("old.spans") + " --report " + dir.file("old.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err,
+            "trirast: engine 'model' is now 'improved-sc' (the old name works for this "
+            "release)\n");
+  EXPECT_NE(r.out.find("engine improved-sc,"), std::string::npos) << r.out;
+  EXPECT_NE(slurp(dir.file("old.json")).find("\"engine\": \"improved-sc\""), std::string::npos)
+      << slurp(dir.file("old.json"));
+  ASSERT_EQ(run_command(kBin + " raster --scene builtin:fan --engine improved-sc --spans " +
+                        dir.file("new.spans"))
+                .status,
+            0);
+  EXPECT_EQ(slurp(dir.file("old.spans")), slurp(dir.file("new.spans")));
+
+  // --engines of compare and fuzz: each old name noted once, the table in new names.
+  const CommandResult c =
+      run_command(kBin + " compare --scene builtin:fan --engines golden,unit,unit,trad");
+  EXPECT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(
+      c.err,
+      "trirast: engine 'unit' is now 'improved-datapath' (the old name works for this release)\n"
+      "trirast: engine 'trad' is now 'trad-sc' (the old name works for this release)\n");
+  EXPECT_NE(c.out.find("\n  improved-datapath "), std::string::npos) << c.out;
+  EXPECT_NE(c.out.find("\n  trad-sc "), std::string::npos) << c.out;
+  const CommandResult f =
+      run_command(kBin + " fuzz --scenes 1 --seed 1 --engines golden,unit --out " + dir.path());
+  EXPECT_EQ(f.status, 0) << f.err;
+  EXPECT_NE(f.err.find("trirast: engine 'unit' is now 'improved-datapath'"), std::string::npos)
+      << f.err;
+  EXPECT_NE(f.err.find("engines golden,improved-datapath,"), std::string::npos) << f.err;
+
+  expect_one_line_error("raster --scene builtin:fan --engine models", "--engine", dir);
+  expect_one_line_error("raster --scene builtin:fan --engine models", "'models'", dir);
+  const CommandResult u = run_command(kBin + " compare --scene builtin:fan --engines golden,rtl-trads");
+  EXPECT_EQ(u.status, 2) << u.err;
+  EXPECT_EQ(count_lines(u.err), 1) << u.err;
+  EXPECT_NE(u.err.find("--engines: unknown engine 'rtl-trads'"), std::string::npos) << u.err;
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ std::vector<std::string> acceptance_scenes() {
 
 // Engines whose whole-suite runs are long get the same scenes in their own test programs.
 bool runs_here(const EngineInfo& e) {
-  return e.name != "rtl" && e.name != "rtl-trad" && e.name != "halfspace-rtl";
+  return e.name != "improved-rtl" && e.name != "trad-rtl" && e.name != "halfspace-rtl";
 }
 
 TEST(ExactEngines, AgreeWithGoldenOnEveryAcceptanceScene) {

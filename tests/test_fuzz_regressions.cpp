@@ -1,4 +1,4 @@
-// Differential fuzzing (issue 7): the reproducers in tests/fuzz-regressions/ through every exact
+// Differential fuzzing: the reproducers in tests/fuzz-regressions/ through every exact
 // engine, the scene generator's promises (every hard-case class, valid varied configurations,
 // deterministic), an in-process differential run, and `trirast fuzz` as a user meets it.
 #include <gtest/gtest.h>
@@ -18,6 +18,7 @@
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
 #include "fuzz/fuzz_scene.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "scene/scene.hpp"
 #include "reference/reference_raster.hpp"
 #include "support/run_command.hpp"
@@ -26,20 +27,14 @@ namespace trirast {
 namespace {
 
 using test::CommandResult;
+using test::count_lines;
+using test::exact_engines;
+using test::kBin;
 using test::run_command;
+using test::slurp;
 using test::TempDir;
 
-const std::string kBin = TRIRAST_BIN;
 const std::string kRegressions = std::string(TRIRAST_SOURCE_DIR) + "/tests/fuzz-regressions/";
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 std::vector<std::string> files_in(const std::string& dir, const std::string& suffix) {
   std::vector<std::string> out;
@@ -52,15 +47,6 @@ std::vector<std::string> files_in(const std::string& dir, const std::string& suf
     closedir(d);
   }
   std::sort(out.begin(), out.end());
-  return out;
-}
-
-// Every exact engine this build holds (the golden included), each name once.
-std::vector<const EngineInfo*> exact_engines() {
-  std::vector<const EngineInfo*> out;
-  std::set<std::string> seen;
-  for (const EngineInfo& e : engine_registry())
-    if (e.exact && seen.insert(e.name).second) out.push_back(&e);
   return out;
 }
 
@@ -121,7 +107,8 @@ TEST(FuzzRegressions, ReproducerFormatReadsBackBitForBit) {
   for (int i = 0; i < 300; ++i) {
     const RasterConfig cfg = draw_fuzz_config(d);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(d, cfg, 40);
-    const std::string text = format_reproducer(tris, cfg, {"golden", "unit"}, "line one\nline two");
+    const std::string text =
+        format_reproducer(tris, cfg, {"golden", "improved-datapath"}, "line one\nline two");
     const Scene back = parse_tri_text(text, "r.tri");
     ASSERT_EQ(back.tris.size(), tris.size());
     for (size_t t = 0; t < tris.size(); ++t)
@@ -239,18 +226,30 @@ TEST(FuzzGenerator, DeterministicAndByteDecoderIsTotal) {
 // ---- in process: the engines against the golden ------------------------------------------------
 
 TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
-  // A few seconds of what `trirast fuzz` does, in process, on a fixed seed.
+  // A few seconds of what `trirast fuzz` does, in process, on a fixed seed. The half-space
+  // engines walk a box a tile or a stamp per cycle (their time grows with the box area, not its
+  // height): they run the scenes of viewports up to 512 x 512 pixels here (trirast fuzz runs them on
+  // every scene).
   const std::vector<const EngineInfo*> engines = exact_engines();
+  std::vector<const EngineInfo*> without_hs;
+  for (const EngineInfo* e : engines)
+    if (e->name.rfind("halfspace-", 0) != 0) without_hs.push_back(e);
   ASSERT_GE(engines.size(), 2u);
-  uint64_t triangles = 0, pixels = 0;
+  ASSERT_GT(engines.size(), without_hs.size());
+  uint64_t triangles = 0, pixels = 0, hs_scenes = 0;
   std::map<std::string, int> skipped;  // scenes an engine's build does not cover (the rtl's widths)
   for (uint64_t scene = 0; scene < 3000; ++scene) {
     RngDraws d(0xfeed0000 + scene);
-    const RasterConfig cfg = draw_fuzz_config(d);
+    RasterConfig cfg = draw_fuzz_config(d);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(d, cfg, 100);
+    // As trirast fuzz: the half-space unit's parameters among halfspace-rtl's builds.
+    draw_fuzz_hs_config(d, cfg, rtl::halfspace_built_params(cfg));
     uint64_t p = 0;
     std::vector<std::string> skips;
-    const std::vector<FuzzDisagreement> found = check_engines(tris, cfg, engines, &p, &skips);
+    const bool hs = int64_t(cfg.width) * cfg.height <= 512 * 512;
+    hs_scenes += hs;
+    const std::vector<FuzzDisagreement> found =
+        check_engines(tris, cfg, hs ? engines : without_hs, &p, &skips);
     for (const std::string& e : skips) ++skipped[e];
     triangles += tris.size();
     pixels += p;
@@ -261,11 +260,14 @@ TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
   }
   EXPECT_GT(triangles, 60000u);
   EXPECT_GT(pixels, 1000000u);
-  // Only an engine built for fixed widths skips, and it still runs a good share of the scenes.
+  // Only the engines built for fixed widths skip (the half-space one never for its stamp, tile
+  // or walk: they are drawn among its builds), and they still run a good share of the scenes.
   for (const auto& [engine, n] : skipped) {
-    EXPECT_EQ(engine, "rtl");
+    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl") << engine;
     EXPECT_LT(n, 3000 * 7 / 10) << engine;
   }
+  EXPECT_GT(hs_scenes, 600u);
+  EXPECT_LT(skipped["halfspace-rtl"], hs_scenes * 7 / 10);
 }
 
 TEST(FuzzDifferential, CheckerCatchesWrongEnginesAndReducesToTheCulprit) {
@@ -356,8 +358,9 @@ TEST(FuzzCli, ShortRunOverAllEnginesAgreesAndReportsProgress) {
 
 TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
   TempDir dir;
-  const CommandResult r = run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit " +
-                                      "--inject-fault unit --out " + dir.path());
+  const CommandResult r =
+      run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath " +
+                  "--inject-fault improved-datapath --out " + dir.path());
   EXPECT_EQ(r.status, 1) << r.out << r.err;
   EXPECT_NE(r.err.find("DISAGREEMENT in scene "), std::string::npos) << r.err;
   const std::vector<std::string> files = files_in(dir.path(), ".tri");
@@ -366,28 +369,40 @@ TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
     SCOPED_TRACE(f);
     EXPECT_EQ(f.rfind("fuzz-3-", 0), 0u);
     const std::string text = slurp(dir.file(f));
-    EXPECT_NE(text.find("# engines: golden,unit\n"), std::string::npos) << text;
-    EXPECT_NE(text.find("unit disagrees with golden: missing 1, extra 0 pixels"), std::string::npos)
+    EXPECT_NE(text.find("# engines: golden,improved-datapath\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("improved-datapath disagrees with golden: missing 1, extra 0 pixels"),
+              std::string::npos)
         << text;
     // The reproducer is reduced to the triangle that lost its pixel, and its configuration reads
     // back; replayed without the fault, the engines agree.
     const Scene s = parse_tri_text(text, f);
     EXPECT_EQ(s.tris.size(), 1u) << text;
     const RasterConfig cfg = parse_reproducer_config(text);
-    const CommandResult replay = run_command(kBin + " compare --scene " + dir.file(f) +
-                                             " --engines golden,unit " + config_options(cfg));
+    const CommandResult replay =
+        run_command(kBin + " compare --scene " + dir.file(f) +
+                    " --engines golden,improved-datapath " + config_options(cfg));
     EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
   }
   // The same seed finds the same scenes.
   TempDir again;
-  run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit --inject-fault unit --out " +
+  run_command(kBin +
+              " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath --inject-fault "
+              "improved-datapath --out " +
               again.path());
   ASSERT_EQ(files_in(again.path(), ".tri"), files);
-  for (const std::string& f : files) EXPECT_EQ(slurp(again.file(f)), slurp(dir.file(f)));
+  // Equal but for the folder the replay line names the reproducer in.
+  auto in_folder = [](std::string text, const std::string& from, const std::string& to) {
+    for (size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+      text.replace(at, from.size(), to);
+    return text;
+  };
+  for (const std::string& f : files)
+    EXPECT_EQ(slurp(again.file(f)), in_folder(slurp(dir.file(f)), dir.path(), again.path()));
   // --max-reproducers caps the files, not the count.
   TempDir capped;
-  const CommandResult c = run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,unit " +
-                                      "--inject-fault unit --max-reproducers 1 --out " + capped.path());
+  const CommandResult c =
+      run_command(kBin + " fuzz --scenes 6 --seed 3 --engines golden,improved-datapath " +
+                  "--inject-fault improved-datapath --max-reproducers 1 --out " + capped.path());
   EXPECT_EQ(c.status, 1);
   EXPECT_EQ(capped.entry_count(), 1);
   EXPECT_NE(c.out.find(std::to_string(files.size()) + " disagreements"), std::string::npos) << c.out;
@@ -410,7 +425,7 @@ TEST(FuzzCli, BadOptionsOneLineErrorNoFiles) {
       {"--seed 12ab" + out, "--seed"},
       {"--seed 99999999999999999999999" + out, "--seed"},
       {"--engines golden,nosuch" + out, "nosuch"},
-      {"--engines golden,trad" + out, "trad"},
+      {"--engines golden,trad-sc" + out, "trad-sc"},
       {"--engines golden" + out, "--engines"},
       {"--engines ''" + out, "--engines"},
       {"--inject-fault golden" + out, "--inject-fault"},

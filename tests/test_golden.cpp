@@ -1,5 +1,5 @@
-// The golden rasterizer against an independent per-pixel implementation of raster-rules.md, and
-// watertightness on closed configurations.
+// The golden rasterizer against an independent per-pixel implementation of docs/coverage-rule.md,
+// and watertightness on closed configurations.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -138,9 +138,9 @@ void expect_watertight(const std::vector<InputTriangle>& tris, const RasterConfi
                        bool whole_screen) {
   const SetupResult setup = setup_scene(tris, cfg);
   const SpanList spans = golden_spans(setup, cfg);
-  const auto w = test::check_watertight(setup, spans, cfg);
-  EXPECT_EQ(w.doubled, 0) << w.first_problem;
-  EXPECT_EQ(w.holes, 0) << w.first_problem;
+  const auto w = check_watertight(setup, spans, cfg);
+  EXPECT_EQ(w.doubles, 0) << w.first_problem;
+  EXPECT_EQ(w.cracks, 0) << w.first_problem;
   EXPECT_GT(w.covered, 0);
   if (whole_screen) {
     EXPECT_EQ(w.covered, int64_t(cfg.width) * cfg.height);
@@ -368,9 +368,9 @@ TEST(GoldenMeshes, ClosedMeshesAreWatertight) {
     RasterConfig front_only = cfg;
     front_only.cull = CullMode::Back;
     const SetupResult setup = setup_scene(s.tris, front_only);
-    const auto w = test::check_watertight(setup, golden_spans(setup, front_only), front_only);
-    EXPECT_EQ(w.doubled, 0) << w.first_problem;
-    EXPECT_EQ(w.holes, 0) << w.first_problem;
+    const auto w = check_watertight(setup, golden_spans(setup, front_only), front_only);
+    EXPECT_EQ(w.doubles, 0) << w.first_problem;
+    EXPECT_EQ(w.cracks, 0) << w.first_problem;
     EXPECT_GT(w.covered, 1000);
   }
 }
@@ -405,8 +405,8 @@ TEST(GoldenWatertight, BuiltinClosedConfigurations) {
     if (axis_aligned && !covers_screen) {
       ++partial_pairs;
       const SetupResult setup = setup_scene({ws.tris[i], ws.tris[i + 1]}, cfg);
-      const auto w = test::check_watertight(setup, golden_spans(setup, cfg), cfg);
-      EXPECT_EQ(w.doubled, 0) << w.first_problem;
+      const auto w = check_watertight(setup, golden_spans(setup, cfg), cfg);
+      EXPECT_EQ(w.doubles, 0) << w.first_problem;
       EXPECT_EQ(w.covered, int64_t(std::min(x1, double(cfg.width)) - std::max(x0, 0.0)) *
                                int64_t(std::min(y1, double(cfg.height)) - std::max(y0, 0.0)));
     } else {

@@ -1,4 +1,4 @@
-// Limits (issue 7): for each configuration, the coordinate range, the unit's box width and the
+// Limits: for each configuration, the coordinate range, the unit's box width and the
 // divider's slope quotient, each at the limit (every exact engine agrees with the golden and the
 // independent reference) and one past it (a clear error naming the triangle or option; never a
 // wrapped value). Also the configuration options themselves, at and past their bounds.
@@ -23,19 +23,12 @@ namespace trirast {
 namespace {
 
 using test::CommandResult;
+using test::count_lines;
+using test::exact_engines;
+using test::kBin;
 using test::run_command;
 using test::TempDir;
 using test::write_file;
-
-const std::string kBin = TRIRAST_BIN;
-
-std::vector<const EngineInfo*> exact_engines() {
-  std::vector<const EngineInfo*> out;
-  std::set<std::string> seen;
-  for (const EngineInfo& e : engine_registry())
-    if (e.exact && seen.insert(e.name).second) out.push_back(&e);
-  return out;
-}
 
 // Engines that model the unit's datapath and therefore its widths (all exact ones but the golden).
 std::vector<const EngineInfo*> unit_engines() {
@@ -82,8 +75,6 @@ void expect_all_agree(const std::vector<InputTriangle>& tris, const RasterConfig
   sort_spans(golden.spans);
   EXPECT_TRUE(diff_spans(test::reference_raster(tris, cfg), golden.spans).exact());
 }
-
-int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
 
 // The configurations the limits are checked in: (S, coordinate bits, box bits, viewport).
 struct Limits {

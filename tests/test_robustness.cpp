@@ -1,4 +1,4 @@
-// Robustness (issue 7): bad input beyond tests/test_cli.cpp (Assimp's invalid/ models through the
+// Robustness: bad input beyond tests/test_cli.cpp (Assimp's invalid/ models through the
 // CLI, made mesh files of every format, .tri corner cases, bad spans files, bad options of
 // compare and raster), and watertightness of every exact engine of the registry on closed meshes
 // read through Assimp and on fans around a pixel centre.
@@ -25,28 +25,16 @@ namespace trirast {
 namespace {
 
 using test::CommandResult;
+using test::count_lines;
+using test::exact_engines;
+using test::file_exists;
+using test::kBin;
 using test::run_command;
 using test::TempDir;
 using test::write_file;
 
-const std::string kBin = TRIRAST_BIN;
 const std::string kData = std::string(TRIRAST_SOURCE_DIR) + "/tests/data/";
 const std::string kAssimp = "/usr/share/assimp/models/";
-
-int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
-
-bool exists(const std::string& path) {
-  struct stat st;
-  return ::stat(path.c_str(), &st) == 0;
-}
-
-std::vector<const EngineInfo*> exact_engines() {
-  std::vector<const EngineInfo*> out;
-  std::set<std::string> seen;
-  for (const EngineInfo& e : engine_registry())
-    if (e.exact && seen.insert(e.name).second) out.push_back(&e);
-  return out;
-}
 
 std::string exact_engine_list() {
   std::string s;
@@ -72,7 +60,7 @@ void expect_clean_refusal(const std::string& args, const std::string& needle, Te
 
 TEST(BadInput, AssimpInvalidModelsThroughTheCli) {
   const std::string dir = kAssimp + "invalid/";
-  if (!exists(dir)) GTEST_SKIP() << dir << " not installed (Debian package assimp-testmodels)";
+  if (!file_exists(dir)) GTEST_SKIP() << dir << " not installed (Debian package assimp-testmodels)";
   std::vector<std::string> names;
   if (DIR* d = opendir(dir.c_str())) {
     while (dirent* e = readdir(d))
@@ -244,8 +232,8 @@ TEST(BadInput, TruncatedPlyIsRefused) {
 
 // A NaN vertex in a text mesh used to be folded into a finite vertex by Assimp's
 // JoinIdenticalVertices before mesh_loader.cpp checked finiteness, so the file loaded as a
-// degenerate triangle (raster-rules.md: NaN is an error, never a silent number). The loader now
-// checks every vertex as read, before any post-processing.
+// degenerate triangle (docs/coverage-rule.md: NaN is an error, never a silent number). The loader
+// now checks every vertex as read, before any post-processing.
 TEST(BadInput, NanVertexNextToAFiniteOneIsRefused) {
   TempDir dir;
   const std::string ply_head =
@@ -338,8 +326,9 @@ TEST(BadInput, BadSpansFilesForCompare) {
   write_file(dir.file("bad.spans"), "0 10 abc 20\n");
   ASSERT_EQ(run_command(kBin + " raster --scene " + dir.file("t.tri") + " --spans " +
                         dir.file("good.spans")).status, 0);
-  expect_clean_refusal("compare --scene " + dir.file("t.tri") + " --engines golden,unit,file:" +
-                           dir.file("good.spans") + ",file:" + dir.file("bad.spans"),
+  expect_clean_refusal("compare --scene " + dir.file("t.tri") +
+                           " --engines golden,improved-datapath,file:" + dir.file("good.spans") +
+                           ",file:" + dir.file("bad.spans"),
                        "bad.spans", dir);
 }
 
@@ -359,12 +348,14 @@ TEST(BadInput, BadOptionsOfRasterAndCompare) {
       {"raster" + scene + " --width 10 --width 20", "--width"},
       {"raster" + scene + " --boundary sideways", "--boundary"},
       {"raster" + scene + " --sink-stall bogus", "--sink-stall"},
-      {"raster" + scene + " --engine model --sink-stall random:7:0.3",
+      {"raster" + scene + " --engine improved-sc --sink-stall random:7:0.3",
        "--sink-stall: 'random:7:0.3': PERCENT (the stall probability in percent, 0..99) '0.3' is "
        "not a whole number"},
-      {"raster" + scene + " --engine model --sink-stall random:7:100", "stall percent must be 0..99"},
-      {"raster" + scene + " --engine model --sink-stall periodic:0:3", "must be ready sometimes"},
-      {"raster" + scene + " --engine model --sink-stall periodic:2:+1", "STALL '+1'"},
+      {"raster" + scene + " --engine improved-sc --sink-stall random:7:100",
+       "stall percent must be 0..99"},
+      {"raster" + scene + " --engine improved-sc --sink-stall periodic:0:3",
+       "must be ready sometimes"},
+      {"raster" + scene + " --engine improved-sc --sink-stall periodic:2:+1", "STALL '+1'"},
       {"raster" + scene + " --trace-tris 5:2", "--trace-tris"},
       {"raster" + scene + " --distance -1", "--distance"},
       {"raster" + scene + " --fov 180", "--fov"},
@@ -373,11 +364,13 @@ TEST(BadInput, BadOptionsOfRasterAndCompare) {
       {"raster" + scene + " --spans", "--spans"},
       {"raster" + scene + " --cycles " + dir.file("c.csv"), "--cycles"},  // golden is not timed
       {"compare" + scene + " --engines ''", "--engines: empty list"},
-      {"compare" + scene + " --engines golden,,unit", "compare: --engines: empty engine name"},
+      {"compare" + scene + " --engines golden,,improved-datapath",
+       "compare: --engines: empty engine name"},
       {"compare" + scene + " --engines golden,", "compare: --engines: empty engine name"},
-      {"compare" + scene + " --engines golden,nosuch", "compare: --engines: unknown engine 'nosuch'"},
+      {"compare" + scene + " --engines golden,nosuch",
+       "compare: --engines: unknown engine 'nosuch'"},
       {"raster" + scene + " --engine nosuch", "raster: --engine: unknown engine 'nosuch'"},
-      {"fuzz --engines golden,,unit --scenes 1", "fuzz: --engines: empty engine name"},
+      {"fuzz --engines golden,,improved-datapath --scenes 1", "fuzz: --engines: empty engine name"},
       // Numbers with leading blanks or a sign strtol/strtod would skip or take.
       {"raster" + scene + " --width ' 5'", "--width: ' 5' is not an integer"},
       {"raster" + scene + " '--width= 5'", "--width: ' 5' is not an integer"},
@@ -452,14 +445,14 @@ std::vector<MeshCase> closed_mesh_files() {
   for (const char* f : {"cube.obj", "cube.ply", "cube.stl", "cube.off", "cube.gltf"})
     out.push_back({kData + f, true});
   for (const char* f : {"OFF/Cube.off", "PLY/cube.ply", "PLY/cube_binary.ply", "OBJ/box.obj"})
-    if (exists(kAssimp + f)) out.push_back({kAssimp + f, true});
+    if (file_exists(kAssimp + f)) out.push_back({kAssimp + f, true});
   // Generated closed meshes through the same projection: a convex sphere, a torus (its front
   // faces overlap themselves, so only the front == back count holds).
   out.push_back({"builtin:sphere", true});
   out.push_back({"builtin:torus", false});
   for (const char* f : {"OFF/Wuson.off", "PLY/Wuson.ply", "STL/Wuson.stl", "OBJ/WusonOBJ.obj",
                         "OBJ/spider.obj", "STL/Spider_ascii.stl"})
-    if (exists(kAssimp + f)) out.push_back({kAssimp + f, false});
+    if (file_exists(kAssimp + f)) out.push_back({kAssimp + f, false});
   return out;
 }
 
@@ -514,9 +507,9 @@ TEST(Watertight, ClosedMeshesThroughAssimpOnEveryExactEngine) {
         EXPECT_EQ(unbalanced, 0) << "pixels covered by more front than back faces or vice versa";
         EXPECT_GT(silhouette, 1000);
         if (m.convex) {
-          const auto w = test::check_watertight(front, engine_spans(*e, front, front_cfg), front_cfg);
-          EXPECT_EQ(w.doubled, 0) << w.first_problem;
-          EXPECT_EQ(w.holes, 0) << w.first_problem;
+          const auto w = check_watertight(front, engine_spans(*e, front, front_cfg), front_cfg);
+          EXPECT_EQ(w.doubles, 0) << w.first_problem;
+          EXPECT_EQ(w.cracks, 0) << w.first_problem;
           EXPECT_EQ(w.covered, silhouette);  // once, and the whole silhouette
         }
       }
@@ -525,7 +518,7 @@ TEST(Watertight, ClosedMeshesThroughAssimpOnEveryExactEngine) {
   std::printf("closed meshes checked: %d, open (no claim): %d\n", closed, open);
   EXPECT_GE(closed, 22);
   // The closure check itself can say no: a mesh with a hole in it.
-  if (exists(kAssimp + "STL/sphereWithHole.stl")) {
+  if (file_exists(kAssimp + "STL/sphereWithHole.stl")) {
     const Scene holed = load_scene(kAssimp + "STL/sphereWithHole.stl", RasterConfig{}, CameraOptions{});
     EXPECT_FALSE(closed_on_screen(holed.tris, RasterConfig{}));
   }
@@ -584,9 +577,9 @@ TEST(Watertight, FansAroundAPixelCentreOnEveryExactEngine) {
             } catch (const std::invalid_argument&) {
               continue;  // a configuration this engine's build does not cover (rtl: S = 8 only)
             }
-            const auto w = test::check_watertight(setup, spans, cfg);
-            EXPECT_EQ(w.doubled, 0) << w.first_problem;
-            EXPECT_EQ(w.holes, 0) << w.first_problem;
+            const auto w = check_watertight(setup, spans, cfg);
+            EXPECT_EQ(w.doubles, 0) << w.first_problem;
+            EXPECT_EQ(w.cracks, 0) << w.first_problem;
             EXPECT_GT(w.covered, 0);
             if (S != 0) {
               int owners = 0;
@@ -611,9 +604,9 @@ TEST(Watertight, BuiltinClosedConfigurationsOnEveryExactEngine) {
     const SetupResult setup = setup_scene(s.tris, cfg);
     for (const EngineInfo* e : exact_engines()) {
       SCOPED_TRACE(e->name);
-      const auto w = test::check_watertight(setup, engine_spans(*e, setup, cfg), cfg);
-      EXPECT_EQ(w.doubled, 0) << w.first_problem;
-      EXPECT_EQ(w.holes, 0) << w.first_problem;
+      const auto w = check_watertight(setup, engine_spans(*e, setup, cfg), cfg);
+      EXPECT_EQ(w.doubles, 0) << w.first_problem;
+      EXPECT_EQ(w.cracks, 0) << w.first_problem;
       EXPECT_GT(w.covered, 0);
     }
   }

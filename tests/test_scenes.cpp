@@ -505,10 +505,10 @@ TEST(Builtin, ClosedConfigurationsAreWatertight) {
     const Scene s = make_builtin(spec, cfg, CameraOptions{});
     const SetupResult setup = setup_scene(s.tris, cfg);
     const SpanList spans = test::reference_raster(s.tris, cfg);
-    const test::WatertightResult w = test::check_watertight(setup, spans, cfg);
+    const WatertightResult w = check_watertight(setup, spans, cfg);
     EXPECT_GT(w.covered, 1000);
-    EXPECT_EQ(w.doubled, 0) << w.first_problem;
-    EXPECT_EQ(w.holes, 0) << w.first_problem;
+    EXPECT_EQ(w.doubles, 0) << w.first_problem;
+    EXPECT_EQ(w.cracks, 0) << w.first_problem;
   }
 }
 

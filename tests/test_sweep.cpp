@@ -1,4 +1,4 @@
-// Speed against error (issue 6): the sweep's outputs, its determinism, the error measurements,
+// Speed against error: the sweep's outputs, its determinism, the error measurements,
 // the fit, the quotient truncation of the unit, and the area model.
 #include <gtest/gtest.h>
 
@@ -9,31 +9,27 @@
 
 #include "core/engine.hpp"
 #include "engines.hpp"
-#include "sweep/sweep.hpp"
-#include "sweep/sweep_area.hpp"
+#include "reference/watertight.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
+#include "sweep/sweep.hpp"
+#include "sweep/sweep_area.hpp"
 
 namespace trirast {
 namespace {
 
 using test::CommandResult;
 using test::file_exists;
+using test::kBin;
 using test::run_command;
+using test::slurp;
 using test::TempDir;
 using test::write_file;
 
-const std::string kBin = TRIRAST_BIN;
 const std::string kSource = TRIRAST_SOURCE_DIR;
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
+// The fields of one CSV line; a quoted field may hold the separator.
+std::vector<std::string> csv_fields(const std::string& s, char sep) {
   std::vector<std::string> out;
   std::string cur;
   bool quoted = false;
@@ -57,7 +53,7 @@ std::vector<std::map<std::string, std::string>> read_csv(const std::string& path
   std::vector<std::string> header;
   std::vector<std::map<std::string, std::string>> rows;
   while (std::getline(in, line)) {
-    const auto f = split(line, ',');
+    const auto f = csv_fields(line, ',');
     if (header.empty()) {
       header = f;
       continue;
@@ -126,6 +122,7 @@ TEST(SweepScript, QuickModeWritesEveryOutput) {
        {"Pareto", "cycles front", "area front", "Improved vs traditional", "32%", "3,120", "4,653",
         "3,728", "6,936", "float scanline", "Cracks and double hits", "trirast fit",
         "builtin:sphere:tess=12", "builtin:lowpoly-near", "builtin:hard-tiny", "estimate",
+        "Model-only what-ifs", "buildable hardware",
         "quick mode"})
     EXPECT_NE(md.find(needle), std::string::npos) << "report lacks: " << needle;
 }
@@ -161,8 +158,10 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
   const auto cfgs = read_csv(dir_->file("j1/sweep_configs.csv"));
   // The default improved unit and the golden are exact and watertight.
   for (const auto& [engine, config] : std::vector<std::pair<std::string, std::string>>{
-           {"golden", "S8 c16"}, {"model", "S8 c16 b14 K- N1"}, {"model", "S8 c16 b14 K- N4"},
-           {"model", "S8 c16 b14 K- N1 fixed"}}) {
+           {"golden", "S8 c16"},
+           {"improved-sc", "S8 c16 b14 K- N1"},
+           {"improved-sc", "S8 c16 b14 K- N4"},
+           {"improved-sc", "S8 c16 b14 K- N1 fixed"}}) {
     const auto* r = find_row(cfgs, engine, config);
     ASSERT_NE(r, nullptr) << engine << " " << config;
     EXPECT_EQ(r->at("exact"), "1") << config;
@@ -172,31 +171,32 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
   }
   // Fewer subpixel bits, quotient truncation, a narrow box: measurable error, no failure.
   for (const char* config : {"S0 c16 b14 K- N1", "S8 c16 b14 K6 N1", "S8 c16 b8 K- N1"}) {
-    const auto* r = find_row(cfgs, "model", config);
+    const auto* r = find_row(cfgs, "improved-sc", config);
     ASSERT_NE(r, nullptr) << config;
     EXPECT_EQ(r->at("exact"), "0") << config;
     EXPECT_GT(std::stod(r->at("error_ppm")), 0.0) << config;
     EXPECT_EQ(r->at("failures"), "0") << config;
   }
-  EXPECT_GT(std::stoi(find_row(cfgs, "model", "S8 c16 b8 K- N1")->at("rejected")), 0);
+  EXPECT_GT(std::stoi(find_row(cfgs, "improved-sc", "S8 c16 b8 K- N1")->at("rejected")), 0);
   // Truncating the quotient saves divider iterations: fewer cycles than the default.
-  EXPECT_LT(std::stol(find_row(cfgs, "model", "S8 c16 b14 K6 N1")->at("total_cycles")),
-            std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("total_cycles")));
+  EXPECT_LT(std::stol(find_row(cfgs, "improved-sc", "S8 c16 b14 K6 N1")->at("total_cycles")),
+            std::stol(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("total_cycles")));
   // The fixed divider runs Q iterations: more cycles than the adaptive default.
-  EXPECT_GT(std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1 fixed")->at("total_cycles")),
-            std::stol(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("total_cycles")));
+  EXPECT_GT(std::stol(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1 fixed")->at("total_cycles")),
+            std::stol(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("total_cycles")));
   // The traditional unit and the float scanline are not exact; trad has double hits.
-  EXPECT_EQ(find_row(cfgs, "trad", "S8 c16")->at("exact"), "0");
-  EXPECT_GT(std::stol(find_row(cfgs, "trad", "S8 c16")->at("doubles")), 0);
+  EXPECT_EQ(find_row(cfgs, "trad-sc", "S8 c16")->at("exact"), "0");
+  EXPECT_GT(std::stol(find_row(cfgs, "trad-sc", "S8 c16")->at("doubles")), 0);
   EXPECT_NE(find_row(cfgs, "float-scanline", "S8 c16"), nullptr);
   // Per scene: on the near low-poly sphere the improved unit beats the traditional one.
   const auto rows = read_csv(dir_->file("j1/sweep.csv"));
-  const auto* imp = find_row(rows, "model", "S8 c16 b14 K- N1", "builtin:lowpoly-near");
-  const auto* trad = find_row(rows, "trad", "S8 c16", "builtin:lowpoly-near");
+  const auto* imp = find_row(rows, "improved-sc", "S8 c16 b14 K- N1", "builtin:lowpoly-near");
+  const auto* trad = find_row(rows, "trad-sc", "S8 c16", "builtin:lowpoly-near");
   ASSERT_TRUE(imp && trad);
   EXPECT_LT(std::stol(imp->at("total_cycles")), std::stol(trad->at("total_cycles")));
   // The RTL, when it is in the build, has the model's cycles.
-  if (const auto* rtl = find_row(rows, "rtl", "S8 c16 b14 K- N1", "builtin:lowpoly-near")) {
+  if (const auto* rtl =
+          find_row(rows, "improved-rtl", "S8 c16 b14 K- N1", "builtin:lowpoly-near")) {
     EXPECT_EQ(rtl->at("total_cycles"), imp->at("total_cycles"));
   }
   // Some configuration lies on each Pareto front, and the exact default's area is known.
@@ -207,7 +207,26 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
   }
   EXPECT_GT(front_c, 0);
   EXPECT_GT(front_a, 0);
-  EXPECT_FALSE(find_row(cfgs, "model", "S8 c16 b14 K- N1")->at("luts").empty());
+  // The fronts are of buildable hardware: a quotient-truncation (K) configuration has no RTL and
+  // is never on one (at most a model-only what-if); a point on a front is buildable.
+  int k_rows = 0;
+  for (const auto& r : cfgs) {
+    const bool k = !r.at("quotient_bits").empty() && r.at("quotient_bits") != "0";
+    k_rows += k;
+    if (k) {
+      EXPECT_EQ(r.at("rtl"), "0") << r.at("config");
+      EXPECT_EQ(r.at("pareto_cycles"), "0") << r.at("config");
+      EXPECT_EQ(r.at("pareto_area"), "0") << r.at("config");
+    }
+    if (r.at("pareto_cycles") == "1" || r.at("pareto_area") == "1") {
+      EXPECT_EQ(r.at("rtl"), "1") << r.at("config");
+    }
+    if (r.at("whatif_cycles") == "1" || r.at("whatif_area") == "1") {
+      EXPECT_EQ(r.at("rtl"), "0") << r.at("config");
+    }
+  }
+  EXPECT_GT(k_rows, 0);
+  EXPECT_FALSE(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("luts").empty());
 }
 
 TEST(SweepCli, BadUsageIsOneLine) {
@@ -282,6 +301,7 @@ TEST(Fit, ABudgetAllowsFewerBits) {
 
 // ---- the library: closed-mesh counting, truncation, area --------------------------------------
 
+// The sweep counts cracks and double hits with the closed-mesh check of dv/reference.
 TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
   RasterConfig cfg;
   const Scene scene = make_builtin("fan:n=8", cfg, CameraOptions{});
@@ -289,7 +309,7 @@ TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
   EngineResult golden;
   find_engine("golden")->make()->run(setup, cfg, golden);
   sort_spans(golden.spans);
-  ClosedCount c = count_closed(setup, golden.spans, cfg);
+  WatertightResult c = check_watertight(setup, golden.spans, cfg);
   EXPECT_EQ(c.cracks, 0);
   EXPECT_EQ(c.doubles, 0);
   // Drop a span from the middle of the list (an inner row of some triangle): a crack of its size.
@@ -297,13 +317,13 @@ TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
   const size_t mid = cracked.size() / 2;
   const int64_t gap = cracked[mid].pixels();
   cracked.erase(cracked.begin() + long(mid));
-  c = count_closed(setup, cracked, cfg);
+  c = check_watertight(setup, cracked, cfg);
   EXPECT_EQ(c.cracks, gap);
   EXPECT_EQ(c.doubles, 0);
   // Draw a span twice: as many double hits as it has pixels.
   SpanList doubled = golden.spans;
   doubled.push_back(golden.spans[mid]);
-  c = count_closed(setup, doubled, cfg);
+  c = check_watertight(setup, doubled, cfg);
   EXPECT_EQ(c.cracks, 0);
   EXPECT_EQ(c.doubles, gap);
 }
@@ -316,7 +336,7 @@ TEST(QuotientTruncation, DefaultUntouchedSmallKInexactNeverThrows) {
     RasterConfig c = cfg;
     c.divider_quotient_bits = K;
     EngineResult r;
-    find_engine("unit")->make()->run(setup, c, r);
+    find_engine("improved-datapath")->make()->run(setup, c, r);
     sort_spans(r.spans);
     return r;
   };

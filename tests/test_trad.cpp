@@ -78,9 +78,9 @@ TEST(TradBresenham, Figure24OnePixelTriangleIsLost) {
 // ---------------------------------------------------------------------------------------------
 // A right triangle with vertices on pixel corners, (2,2), (8,2), (2,8), derived by hand.
 //
-// Golden (raster-rules.md): centres (px+.5, py+.5). The legs x = 2 and y = 2 pass no centre. The
-// hypotenuse x + y = 10 passes the centres with px + py = 9; it is a right edge (A < 0), so those
-// are out. Covered: px >= 2, py >= 2, px + py <= 8:
+// Golden (docs/coverage-rule.md): centres (px+.5, py+.5). The legs x = 2 and y = 2 pass no centre.
+// The hypotenuse x + y = 10 passes the centres with px + py = 9; it is a right edge (A < 0), so
+// those are out. Covered: px >= 2, py >= 2, px + py <= 8:
 //   row 2: [2,7)  row 3: [2,6)  row 4: [2,5)  row 5: [2,4)  row 6: [2,3)     = 15 pixels.
 // Traditional: integer pixels (2,2), (8,2), (2,8); sorted by (y, x): p0 (2,2), p1 (8,2), p2 (2,8).
 //   p0->p1 is horizontal: row 2, x 2..8.   p0->p2 is vertical: x = 2, rows 2..8.

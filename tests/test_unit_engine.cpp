@@ -1,5 +1,5 @@
 // The improved-Bresenham unit against the golden rasterizer, triangle for triangle: the spans must
-// be identical (docs/unit.md; raster-rules.md). Random triangles come from a fixed-seed
+// be identical (docs/unit.md; docs/coverage-rule.md). Random triangles come from a fixed-seed
 // splitmix64, so every run checks the same ones. TRIRAST_RANDOM_COUNT overrides the size of the
 // RandomViewport family (scripts/unit_million.sh runs a million).
 #include <gtest/gtest.h>
@@ -14,23 +14,14 @@
 #include "core/fixed_point.hpp"
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
+#include "reference/reference_raster.hpp"
 #include "unit/improved_unit.hpp"
 
 namespace trirast {
 namespace {
 
-// splitmix64: a fixed-seed generator, identical on every platform (no std distributions).
-struct SplitMix64 {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [lo, hi] (inclusive).
-  int64_t range(int64_t lo, int64_t hi) { return lo + int64_t(next() % uint64_t(hi - lo + 1)); }
-};
+// The fixed-seed generator of the reference checks (splitmix64, identical on every platform).
+using test::TestRng;
 
 // A vertex coordinate given in 1/2^S units, clamped to the representable range, as a double.
 double coord(int64_t sub, const RasterConfig& cfg) {
@@ -51,7 +42,7 @@ InputTriangle tri_sub(const int64_t x[3], const int64_t y[3], const RasterConfig
 
 // Three vertices within +-ext pixels of a centre inside the viewport (a margin around it), on a
 // grid of `grid` subpixels.
-InputTriangle random_near(SplitMix64& rng, const RasterConfig& cfg, int64_t ext_px, int64_t grid) {
+InputTriangle random_near(TestRng& rng, const RasterConfig& cfg, int64_t ext_px, int64_t grid) {
   const int64_t u = int64_t(1) << cfg.subpixel_bits;
   const int64_t cx = rng.range(-64 * u, (cfg.width + 64) * u);
   const int64_t cy = rng.range(-64 * u, (cfg.height + 64) * u);
@@ -64,7 +55,7 @@ InputTriangle random_near(SplitMix64& rng, const RasterConfig& cfg, int64_t ext_
 }
 
 // The mixed family: mostly small, some medium, a few huge ones reaching the coordinate limit.
-InputTriangle random_mixed(SplitMix64& rng, const RasterConfig& cfg, int64_t grid) {
+InputTriangle random_mixed(TestRng& rng, const RasterConfig& cfg, int64_t grid) {
   const uint64_t r = rng.next() % 1000;
   if (r < 700) return random_near(rng, cfg, 24, grid);
   if (r < 950) return random_near(rng, cfg, 200, grid);
@@ -129,8 +120,8 @@ Compared compare_with_golden(const std::vector<InputTriangle>& tris, RasterConfi
 
 // Generates `count` triangles with `gen` and compares them in batches.
 Compared run_family(uint64_t count, const RasterConfig& cfg,
-                    const std::function<InputTriangle(SplitMix64&)>& gen, uint64_t seed) {
-  SplitMix64 rng{seed};
+                    const std::function<InputTriangle(TestRng&)>& gen, uint64_t seed) {
+  TestRng rng{seed};
   Compared total;
   const uint64_t batch = 20000;
   for (uint64_t done = 0; done < count; done += batch) {
@@ -158,7 +149,7 @@ TEST(UnitEngine, RandomViewport) {
   RasterConfig cfg;
   const uint64_t count = count_from_env(100000);
   const Compared c = run_family(
-      count, cfg, [&](SplitMix64& r) { return random_mixed(r, cfg, 1); }, 1);
+      count, cfg, [&](TestRng& r) { return random_mixed(r, cfg, 1); }, 1);
   EXPECT_GT(c.triangles, count * 9 / 10);  // few degenerate
   EXPECT_GT(c.spans, count);
 }
@@ -168,7 +159,7 @@ TEST(UnitEngine, HalfPixelLattice) {
   RasterConfig cfg;
   const Compared c = run_family(
       100000, cfg,
-      [&](SplitMix64& r) {
+      [&](TestRng& r) {
         return r.next() % 4 ? random_near(r, cfg, 6, 128) : random_mixed(r, cfg, 128);
       },
       2);
@@ -179,7 +170,7 @@ TEST(UnitEngine, LargeViewport) {
   RasterConfig cfg;
   cfg.width = cfg.height = 4096;
   const Compared c = run_family(
-      10000, cfg, [&](SplitMix64& r) { return random_mixed(r, cfg, 1); }, 3);
+      10000, cfg, [&](TestRng& r) { return random_mixed(r, cfg, 1); }, 3);
   EXPECT_GT(c.spans, 10000u);
 }
 
@@ -188,7 +179,7 @@ TEST(UnitEngine, NearHorizontalAndNearVertical) {
   RasterConfig cfg;
   const Compared c = run_family(
       20000, cfg,
-      [&](SplitMix64& r) {
+      [&](TestRng& r) {
         const int64_t u = 256;
         const int64_t x0 = r.range(-500 * u, 1500 * u), y0 = r.range(-10 * u, 780 * u);
         const int64_t dx = r.range(-3000 * u, 3000 * u),
@@ -209,7 +200,7 @@ TEST(UnitEngine, SliversAndTinyTriangles) {
   RasterConfig cfg;
   const Compared c = run_family(
       40000, cfg,
-      [&](SplitMix64& r) {
+      [&](TestRng& r) {
         const int64_t u = 256;
         if (r.next() & 1) return random_near(r, cfg, 2, 1);  // tiny: within a few pixels
         // Sliver: two far-apart vertices and a third a few subpixels off the line between them.
@@ -231,7 +222,7 @@ TEST(UnitEngine, CoordinatesNearTheLimit) {
   const int64_t lim = 32768 * 256;
   const Compared c = run_family(
       400, cfg,
-      [&](SplitMix64& r) {
+      [&](TestRng& r) {
         int64_t x[3], y[3];
         for (int k = 0; k < 3; ++k) {
           x[k] = r.next() & 1 ? r.range(-lim, -lim + 300 * 256) : r.range(lim - 300 * 256, lim - 1);
@@ -253,7 +244,7 @@ TEST(UnitEngine, SubpixelBits) {
     cfg.subpixel_bits = S;
     SCOPED_TRACE("S = " + std::to_string(S));
     const Compared c = run_family(
-        15000, cfg, [&](SplitMix64& r) { return random_mixed(r, cfg, 1); }, 7 + S);
+        15000, cfg, [&](TestRng& r) { return random_mixed(r, cfg, 1); }, 7 + S);
     EXPECT_GT(c.spans, 15000u);
   }
 }
@@ -264,7 +255,7 @@ TEST(UnitEngine, NarrowCoordinateRange) {
   cfg.coord_int_bits = 12;
   cfg.box_bits = 11;
   const Compared c = run_family(
-      20000, cfg, [&](SplitMix64& r) { return random_mixed(r, cfg, 1); }, 20);
+      20000, cfg, [&](TestRng& r) { return random_mixed(r, cfg, 1); }, 20);
   EXPECT_GT(c.spans, 20000u);
 }
 
@@ -273,7 +264,7 @@ TEST(UnitEngine, BoxTooBigForBoxBits) {
   cfg.box_bits = 6;  // boxes up to 64 x 64 pixels
   // Small triangles run.
   const Compared c = run_family(
-      5000, cfg, [&](SplitMix64& r) { return random_near(r, cfg, 20, 1); }, 21);
+      5000, cfg, [&](TestRng& r) { return random_near(r, cfg, 20, 1); }, 21);
   EXPECT_GT(c.spans, 5000u);
   // A 100-pixel-wide one is refused with a message naming the triangle and the value.
   const SetupResult s = setup_scene(

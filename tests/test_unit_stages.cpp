@@ -9,6 +9,7 @@
 #include "core/fixed_point.hpp"
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
+#include "reference/reference_raster.hpp"
 #include "unit/adder_divider.hpp"
 #include "unit/edge_normalizer.hpp"
 #include "unit/edge_walker.hpp"
@@ -19,23 +20,8 @@
 namespace trirast {
 namespace {
 
-// splitmix64: a fixed-seed generator, identical on every platform.
-struct SplitMix64 {
-  uint64_t s;
-  uint64_t next() {
-    uint64_t z = (s += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [lo, hi] (inclusive), hi - lo < 2^63.
-  int64_t range(int64_t lo, int64_t hi) { return lo + int64_t(next() % uint64_t(hi - lo + 1)); }
-  // A value of a random bit length 1..bits, so small and large magnitudes both occur.
-  int64_t bits(int max_bits) {
-    const int b = int(range(1, max_bits));
-    return int64_t(next() & ((uint64_t(1) << b) - 1));
-  }
-};
+// The fixed-seed generator of the reference checks (splitmix64, identical on every platform).
+using test::TestRng;
 
 // floor(n / d), d > 0, in 128-bit arithmetic: the closed form the walker must match.
 int64_t floor_div128(__int128 n, __int128 d) {
@@ -76,7 +62,7 @@ TEST(AdderDivider, RandomFullWidth) {
   ASSERT_EQ(w.numerator, 50);
   AdderDivider div(cfg);
   EXPECT_EQ(div.iterations_per_division(), 15);
-  SplitMix64 rng{12345};
+  TestRng rng{12345};
   int saturated = 0, exact = 0;
   for (int it = 0; it < 200000; ++it) {
     const int64_t d = 1 + rng.bits(w.remainder - 1);
@@ -141,7 +127,7 @@ TEST(AdderDivider, PortWidths) {
 // ---------------------------------------------------------------- edge_normalizer
 
 // A random box-relative edge whose values fit the default widths.
-InterfaceEdge random_edge(SplitMix64& rng, int64_t Xmax, int step_bits) {
+InterfaceEdge random_edge(TestRng& rng, int64_t Xmax, int step_bits) {
   InterfaceEdge e;
   const int64_t u = 256;
   // Steps of random bit length; a quarter of them small, so exact carries are common.
@@ -166,7 +152,7 @@ InterfaceEdge random_edge(SplitMix64& rng, int64_t Xmax, int step_bits) {
 TEST(EdgeNormalizer, MirrorRestoreRoundTrip) {
   RasterConfig cfg;
   EdgeNormalizer norm(cfg);
-  SplitMix64 rng{777};
+  TestRng rng{777};
   int mirrored = 0, plain = 0;
   for (int it = 0; it < 100000; ++it) {
     const int64_t Xmax = rng.range(0, (1 << 14) - 1);
@@ -221,7 +207,7 @@ void walk_random_edges(BoundaryMode mode, DividerMode divider, uint64_t seed) {
   EdgeNormalizer norm(cfg);
   AdderDivider div(cfg);
   EdgeWalker walker(cfg, div);
-  SplitMix64 rng{seed};
+  TestRng rng{seed};
   uint64_t rows = 0, bound_rows = 0, steps_total = 0, dir_up = 0;
   for (int it = 0; it < 6000; ++it) {
     // Mostly small boxes, some at the full 2^box_bits.
@@ -304,7 +290,7 @@ TEST(EdgeWalker, BothModesFindTheSameEntry) {
   EdgeNormalizer norm(step_cfg);
   AdderDivider div(step_cfg);
   EdgeWalker ws(step_cfg, div), wd(div_cfg, div);
-  SplitMix64 rng{4242};
+  TestRng rng{4242};
   int entered = 0;
   for (int it = 0; it < 20000; ++it) {
     const int64_t Xmax = rng.range(0, 500), Ymax = rng.range(0, 2000);

@@ -60,7 +60,7 @@ std::vector<InputTriangle> sized_triangles(int n, double area, int width, int he
 }
 
 RasterConfig bench_config() {
-  RasterConfig cfg;  // 1024x768 as in seed 000's tests, S = 8
+  RasterConfig cfg;  // 1024x768 as in the tests of Mileff, Nehéz & Dudra, S = 8
   return cfg;
 }
 

@@ -2,36 +2,38 @@
 
 #include <algorithm>
 #include <chrono>
-#include <fstream>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
+#include "cli/scene_options.hpp"
 #include "core/engine.hpp"
-#include "engines.hpp"
 #include "core/fixed_point.hpp"
+#include "core/temporary_files.hpp"
 #include "core/span_diff.hpp"
+#include "engines.hpp"
 #include "golden/golden.hpp"
+#include "io/cycles_file.hpp"
 #include "io/image.hpp"
 #include "io/json.hpp"
+#include "io/report_descriptions.hpp"
+#include "io/diff_report.hpp"
 #include "io/output_file.hpp"
 #include "io/cycles_file.hpp"
+#include "io/heatmap.hpp"
+#include "cli/slowest.hpp"
 #include "io/spans_file.hpp"
 #include "scene/scene.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-bool file_exists(const std::string& path) { return std::ifstream(path).good(); }
 
 // The GTKWave save file a trace writer leaves beside FILE.vcd / FILE.fst.
 std::string gtkw_path(const std::string& trace) {
@@ -41,19 +43,12 @@ std::string gtkw_path(const std::string& trace) {
   return (has_ext ? trace.substr(0, dot) : trace) + ".gtkw";
 }
 
-// Options every scene-consuming subcommand shares.
+// Options every scene-consuming subcommand shares: the scene's (cli/scene_options.hpp, which
+// fit shares too) and the engines' configuration.
 std::vector<OptionSpec> scene_options() {
-  return {
-      {"--scene", "SCENE", "builtin:NAME[:k=v,...], a .tri file, or a mesh file (OBJ, PLY, STL, OFF, glTF, ...)", ""},
-      {"--width", "W", "viewport width in pixels, 1..16384", "1024"},
-      {"--height", "H", "viewport height in pixels, 1..16384", "768"},
-      {"--subpixel-bits", "S", "vertex snapping: 1/2^S pixel, 0..8", "8"},
+  std::vector<OptionSpec> specs = scene_input_options();
+  const std::vector<OptionSpec> engine_specs = {
       {"--coord-bits", "N", "signed integer bits of a coordinate: range [-2^(N-1), 2^(N-1)) px", "16"},
-      {"--cull", "MODE", "none | back | front (front faces run counter-clockwise as seen on screen)", "none"},
-      {"--yaw", "DEG", "mesh camera: rotation about the up axis", "30"},
-      {"--pitch", "DEG", "mesh camera: elevation", "20"},
-      {"--distance", "R", "mesh camera: eye distance in bounding radii; 0 fits the viewport", "0"},
-      {"--fov", "DEG", "mesh camera: vertical field of view", "45"},
       {"--traversal", "NAME", "golden traversal: simple | incremental | block | adaptive | bisector | sat-block | window | scanline | auto", "auto"},
       {"--threads", "N", "golden threads (0 = all cores)", "1"},
       {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
@@ -66,6 +61,8 @@ std::vector<OptionSpec> scene_options() {
       {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
   };
+  specs.insert(specs.end(), engine_specs.begin(), engine_specs.end());
+  return specs;
 }
 
 RasterConfig config_from(const Args& a) {
@@ -97,19 +94,6 @@ RasterConfig config_from(const Args& a) {
   return cfg;
 }
 
-CameraOptions camera_from(const Args& a) {
-  CameraOptions cam;
-  cam.yaw_deg = a.get_double("--yaw");
-  cam.pitch_deg = a.get_double("--pitch");
-  cam.distance = a.get_double("--distance");
-  cam.fov_deg = a.get_double("--fov");
-  if (cam.fov_deg <= 0 || cam.fov_deg >= 180)
-    throw UsageError("trirast " + a.command() + ": --fov: must be between 0 and 180 degrees");
-  if (cam.distance < 0)
-    throw UsageError("trirast " + a.command() + ": --distance: must not be negative");
-  return cam;
-}
-
 struct LoadedScene {
   Scene scene;
   SetupResult setup;
@@ -138,11 +122,13 @@ LoadedScene load_and_setup(const Args& a, const RasterConfig& cfg) {
 Json triangle_counts(const LoadedScene& ls) {
   const SetupCounts& c = ls.setup.counts;
   return Json::object()
-      .set("read", c.read)
+      .set("read", ls.scene.source_triangles())
+      .set("set_up", c.read)
       .set("accepted", c.accepted)
       .set("culled", c.culled)
       .set("degenerate", c.degenerate)
       .set("offscreen", c.offscreen)
+      .set("no_pixel_centre", c.no_pixel_centre)
       .set("near_clipped", ls.scene.near_clipped)
       .set("near_dropped", ls.scene.near_dropped)
       .set("range_dropped", ls.scene.range_dropped);
@@ -166,7 +152,7 @@ Json config_json(const RasterConfig& cfg) {
 // `option` is the option the name came from ("--engine", "--engines"), for the message.
 const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd,
                                   const std::string& option) {
-  const EngineInfo* info = find_engine(name);
+  const EngineInfo* info = find_engine(current_engine_name(name));
   if (!info) {
     std::string known;
     for (const EngineInfo& e : engine_registry()) known += (known.empty() ? "" : ", ") + e.name;
@@ -252,6 +238,8 @@ Json timing_json(const EngineResult& r, uint64_t triangles, uint64_t spans, int6
       .set("pixels_per_cycle", cycles > 0 ? pixels / cycles : 0.0);
   auto it = r.work.find("sim_cycles_per_second");
   if (it != r.work.end()) t.set("sim_cycles_per_second", it->second);
+  it = r.work.find("sim_cycles_per_cpu_second");
+  if (it != r.work.end()) t.set("sim_cycles_per_cpu_second", it->second);
   Json modules = Json::object();
   for (const auto& [name, bs] : module_cycles(r))
     modules.set(name, Json::object().set("busy", bs.first).set("stall", bs.second));
@@ -273,8 +261,11 @@ int cmd_raster(int argc, char** argv) {
   specs.push_back({"--image", "FILE.png", "write the viewport as PNG, a colour per triangle", ""});
   specs.push_back({"--report", "FILE.json", "write the JSON report", ""});
   specs.push_back({"--cycles", "FILE.csv", "timed engines: per-triangle cycles (docs/timing.md)", ""});
-  specs.push_back({"--trace", "FILE", "timed engines: waveform trace (.vcd; the rtl engine also .fst)", ""});
+  specs.push_back({"--trace", "FILE",
+                   "timed engines: waveform trace (.vcd; improved-rtl and trad-rtl also .fst)",
+                   ""});
   specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
+  add_diag_options(specs, false);
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -285,9 +276,12 @@ int cmd_raster(int argc, char** argv) {
   RasterConfig cfg = config_from(a);
   const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster", "--engine");
   if (a.has("--trace")) {
+    check_trace_engine(info, "raster");
     check_output_path(a.get("--trace"), "--trace");
     cfg.trace_path = a.get("--trace");
   }
+  if (a.has("--trace-tris") && !a.has("--trace"))
+    throw UsageError("trirast raster: --trace-tris: needs --trace FILE (it selects what the trace records)");
   if (a.has("--trace-tris")) {
     const std::string w = a.get("--trace-tris");
     long long first = -1, last = -1;
@@ -298,14 +292,25 @@ int cmd_raster(int argc, char** argv) {
     cfg.trace_first = first;
     cfg.trace_last = last;
   }
-  if (a.has("--cycles")) check_output_path(a.get("--cycles"), "--cycles");
+  if (a.has("--cycles")) {
+    if (!info.timed)
+      throw UsageError("trirast raster: --cycles: engine '" + info.name + "' is not timed");
+    check_output_path(a.get("--cycles"), "--cycles");
+  }
   // Refuse unwritable outputs before the run, so a long run cannot fail at the end.
   if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
-  if (a.has("--image")) check_output_path(a.get("--image"), "--image");
+  if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+  const DiagOptions diag = diag_options_from(a, false);
 
   auto t0 = Clock::now();
   LoadedScene ls = load_and_setup(a, cfg);
+  if (a.has("--trace-tris"))
+    check_trace_window(cfg.trace_first, cfg.trace_last, ls.scene.tris.size(), "raster");
+  OutputStamps stamps;  // what was at the output paths before this run
+  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
+    if (a.has(opt)) stamps.note(a.get(opt));
+  if (a.has("--trace")) stamps.note(gtkw_path(a.get("--trace")));
   EngineRun run = run_engine(info, ls, cfg, golden_options_from(a));
   const int64_t pixels = count_pixels(run.result.spans);
 
@@ -322,19 +327,29 @@ int cmd_raster(int argc, char** argv) {
                                      run.result.spans.size(), pixels));
 
   if (a.has("--cycles")) {
-    if (run.result.cycles.empty() && !ls.setup.tris.empty())
-      throw UsageError("trirast raster: --cycles: engine '" + info.name + "' is not timed");
     write_cycles_file(run.result.cycles, a.get("--cycles"), "--cycles");
   }
   if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");
   if (a.has("--image"))
     write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
+  if (!diag.heatmap_path.empty()) {
+    if (run.result.cycles.empty() && !ls.setup.tris.empty())
+      throw UsageError("trirast raster: --heatmap: engine '" + info.name + "' is not timed");
+    write_png(heatmap_image(run.result.spans, run.result.cycles, diag.heatmap_metric, info.name,
+                            cfg.width, cfg.height),
+              diag.heatmap_path, "--heatmap");
+  }
+  size_t exported = 0;
+  if (diag.export_tris)
+    exported = export_tri_window(ls.setup, cfg, diag.export_first, diag.export_last,
+                                 diag.export_path, "--export-tris", a.get("--scene"));
   report.set("wall_seconds", Json::object()
                                  .set("load", ls.load_seconds)
                                  .set("setup", ls.setup_seconds)
                                  .set("engine", run.seconds)
                                  .set("total", seconds_since(t0)));
   if (a.has("--report")) {
+    add_descriptions(report);
     OutputFile out(a.get("--report"), "--report");
     out.write(report.dump());
     out.commit();
@@ -343,10 +358,11 @@ int cmd_raster(int argc, char** argv) {
   const SetupCounts& c = ls.setup.counts;
   std::printf("trirast raster: engine %s, scene %s, viewport %dx%d, S=%d\n", info.name.c_str(),
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits);
-  std::printf("  triangles  %llu read, %llu accepted, %llu degenerate, %llu culled, %llu offscreen",
-              (unsigned long long)c.read, (unsigned long long)c.accepted,
+  std::printf("  triangles  %llu read, %llu accepted, %llu degenerate, %llu culled, %llu offscreen, "
+              "%llu without a pixel centre",
+              (unsigned long long)ls.scene.source_triangles(), (unsigned long long)c.accepted,
               (unsigned long long)c.degenerate, (unsigned long long)c.culled,
-              (unsigned long long)c.offscreen);
+              (unsigned long long)c.offscreen, (unsigned long long)c.no_pixel_centre);
   if (ls.scene.near_clipped || ls.scene.near_dropped || ls.scene.range_dropped)
     std::printf(", %llu near-clipped, %llu near-dropped, %llu out of range",
                 (unsigned long long)ls.scene.near_clipped, (unsigned long long)ls.scene.near_dropped,
@@ -361,7 +377,11 @@ int cmd_raster(int argc, char** argv) {
                 (unsigned long long)run.result.total_cycles, ls.setup.counts.accepted / c,
                 run.result.spans.size() / c, pixels / c);
     auto sim = run.result.work.find("sim_cycles_per_second");
-    if (sim != run.result.work.end())
+    auto sim_cpu = run.result.work.find("sim_cycles_per_cpu_second");
+    if (sim != run.result.work.end() && sim_cpu != run.result.work.end())
+      std::printf("  simulated  %.1f M cycles per wall-clock second, %.1f M per CPU second\n",
+                  sim->second / 1e6, sim_cpu->second / 1e6);
+    else if (sim != run.result.work.end())
       std::printf("  simulated  %.1f M cycles per wall-clock second\n", sim->second / 1e6);
     std::printf("  %-26s %12s %12s\n", "module", "busy", "stall");
     for (const auto& [name, bs] : module_cycles(run.result))
@@ -370,27 +390,21 @@ int cmd_raster(int argc, char** argv) {
   }
   std::printf("  time       %.3f s (load %.3f, setup %.3f, engine %.3f)\n", seconds_since(t0),
               ls.load_seconds, ls.setup_seconds, run.seconds);
+  // Only files this run wrote: a stale save file from an earlier run is not reported.
   for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
-    if (a.has(opt)) std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
-  if (a.has("--trace") && file_exists(gtkw_path(a.get("--trace"))))
+    if (a.has(opt) && stamps.written(a.get(opt)))
+      std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
+  if (!diag.heatmap_path.empty())
+    std::printf("  wrote      %s (heatmap of %s)\n", diag.heatmap_path.c_str(), diag.heatmap_metric.c_str());
+  if (diag.export_tris)
+    std::printf("  wrote      %s (%zu set-up triangles of %lld..%lld)\n", diag.export_path.c_str(),
+                exported, (long long)diag.export_first, (long long)diag.export_last);
+  if (a.has("--trace") && stamps.written(gtkw_path(a.get("--trace"))))
     std::printf("  wrote      %s (GTKWave save file)\n", gtkw_path(a.get("--trace")).c_str());
   return 0;
 }
 
 // ---------------------------------------------------------------------------------------------
-// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
-std::vector<std::string> split_list(const std::string& s) {
-  std::vector<std::string> out;
-  if (s.empty()) return out;
-  size_t start = 0;
-  for (;;) {
-    const size_t comma = s.find(',', start);
-    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
-
 int cmd_compare(int argc, char** argv) {
   auto specs = scene_options();
   specs.insert(specs.begin(), {"--engines", "A,B,...", "engines to run against the golden: " +
@@ -399,11 +413,13 @@ int cmd_compare(int argc, char** argv) {
   specs.push_back({"--diff-image", "FILE.png",
                    "PNG of the first engine that differs from golden (else the first non-golden one): grey agreed, red missing, blue extra", ""});
   specs.push_back({"--report", "FILE.json", "write the comparison as JSON", ""});
+  add_diag_options(specs, true);
   Args a("compare", "--scene SCENE --engines A,B,... [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
     std::cout << "Run engines on one scene and compare each with the golden pixel for pixel.\n"
-                 "Exit status 0 only if every exact engine (all but trad) agrees with the golden.\n\n"
+                 "Exit status 0 only if every exact engine (all but trad-sc, trad-rtl,\n"
+                 "float-scanline) agrees with the golden.\n\n"
               << a.help_text();
     return 0;
   }
@@ -411,7 +427,7 @@ int cmd_compare(int argc, char** argv) {
   // "file:PATH" stands for spans recorded by another implementation (interchange format); it
   // claims exactness, so any difference from the golden fails the comparison.
   std::vector<EngineInfo> file_engines;
-  std::vector<std::string> names = split_list(a.get("--engines"));
+  std::vector<std::string> names = split(a.get("--engines"), ',');
   for (const std::string& name : names) {
     if (name.empty())
       throw UsageError("trirast compare: --engines: empty engine name in '" + a.get("--engines") +
@@ -424,8 +440,9 @@ int cmd_compare(int argc, char** argv) {
     engines.push_back(name.rfind("file:", 0) == 0 ? &file_engines[next_file++]
                                                    : &engine_or_throw(name, "compare", "--engines"));
   if (engines.empty()) throw UsageError("trirast compare: --engines: empty list");
-  if (a.has("--diff-image")) check_output_path(a.get("--diff-image"), "--diff-image");
+  if (a.has("--diff-image")) check_png_path(a.get("--diff-image"), "compare", "--diff-image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+  const DiagOptions diag = diag_options_from(a, true);
 
   // Every input is read and checked before anything is printed: the scene, then the recorded
   // spans files, so a bad one is a one-line error with nothing on stdout.
@@ -441,15 +458,21 @@ int cmd_compare(int argc, char** argv) {
 
   std::printf("trirast compare: scene %s, viewport %dx%d, S=%d, %llu triangles (%llu accepted)\n",
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
-              (unsigned long long)ls.setup.counts.read, (unsigned long long)ls.setup.counts.accepted);
-  std::printf("  %-14s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
+              (unsigned long long)ls.scene.source_triangles(),
+              (unsigned long long)ls.setup.counts.accepted);
+  std::printf("  %-17s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
               "pixels", "missing", "extra", "seconds", "cycles", "work");
   bool any_module_counters = false;
   bool all_exact_agree = true;
   std::string diff_engine;  // the engine shown in --diff-image
   bool diff_agrees = true;
   SpanDiff diff_for_image;
-  Json rows = Json::array();
+  std::vector<std::pair<std::string, SpanDiff>> diffs;  // every engine but the golden
+  std::vector<Json> rows;  // one per engine, in --engines order
+  std::vector<std::string> row_engines;
+  // The timed engines' per-triangle cycles (and the first one's spans, for --heatmap).
+  std::vector<std::pair<std::string, std::vector<TriangleCycles>>> timed_cycles;
+  SpanList heatmap_spans;
   for (const EngineInfo* info : engines) {
     EngineRun run{info, {}, 0};
     if (info->name == "golden") {
@@ -475,13 +498,17 @@ int cmd_compare(int argc, char** argv) {
     }
     const bool timed = run.result.total_cycles > 0 || run.result.work.count("total_cycles") > 0;
     const std::string cycles = timed ? std::to_string(run.result.total_cycles) : "-";
-    std::printf("  %-14s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
+    if (timed) {
+      if (timed_cycles.empty() && !diag.heatmap_path.empty()) heatmap_spans = run.result.spans;
+      timed_cycles.emplace_back(info->name, run.result.cycles);
+    }
+    std::printf("  %-17s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
                 (long long)diff.extra_pixels, run.seconds, cycles.c_str(), work.c_str(),
                 info->exact && !agrees ? "  <-- DISAGREES WITH GOLDEN" : "");
-    rows.push(Json::object()
-                  .set("engine", info->name)
+    Json row = Json::object();
+    row.set("engine", info->name)
                   .set("claims_exact", info->exact)
                   .set("spans", uint64_t(run.result.spans.size()))
                   .set("pixels", count_pixels(run.result.spans))
@@ -489,7 +516,13 @@ int cmd_compare(int argc, char** argv) {
                   .set("extra_pixels", diff.extra_pixels)
                   .set("agrees", agrees)
                   .set("seconds", run.seconds)
-                  .set("work", work_json(run.result)));
+                  .set("work", work_json(run.result));
+    if (info->name != "golden") {
+      add_diff_listing(row, diff);
+      diffs.push_back({info->name, diff});
+    }
+    rows.push_back(row);
+    row_engines.push_back(info->name);
     // The diff image shows the first engine that differs from the golden, or else the first
     // engine other than the golden.
     if (info->name != "golden" && (diff_engine.empty() || (!agrees && diff_agrees))) {
@@ -502,22 +535,60 @@ int cmd_compare(int argc, char** argv) {
     std::printf("  (cycles: total of the timed engines; per-module busy and stall cycles and the "
                 "simulation speed: %s)\n",
                 a.has("--report") ? ("in " + a.get("--report")).c_str() : "--report FILE.json");
+  print_timed_cycles(timed_cycles, diag, a.has("--cycles") ? a.get("--cycles") : std::string(),
+                     cfg.sink_stall);
+  if (!diag.heatmap_path.empty()) {
+    if (timed_cycles.empty())
+      throw UsageError("trirast compare: --heatmap: none of --engines is timed");
+    write_png(heatmap_image(heatmap_spans, timed_cycles[0].second, diag.heatmap_metric,
+                            timed_cycles[0].first, cfg.width, cfg.height),
+              diag.heatmap_path, "--heatmap");
+    std::printf("  wrote %s (heatmap of %s, %s)\n", diag.heatmap_path.c_str(),
+                diag.heatmap_metric.c_str(), timed_cycles[0].first.c_str());
+  }
+  if (diag.export_tris) {
+    const size_t n = export_tri_window(ls.setup, cfg, diag.export_first, diag.export_last,
+                                       diag.export_path, "--export-tris", a.get("--scene"));
+    std::printf("  wrote %s (%zu set-up triangles of %lld..%lld)\n", diag.export_path.c_str(), n,
+                (long long)diag.export_first, (long long)diag.export_last);
+  }
   if (a.has("--diff-image")) {
-    write_png(diff_image(golden.result.spans, diff_for_image, cfg.width, cfg.height),
-              a.get("--diff-image"), "--diff-image");
-    std::printf("  wrote %s (%s against golden: grey agreed, red missing, blue extra)\n",
-                a.get("--diff-image").c_str(), diff_engine.empty() ? "golden" : diff_engine.c_str());
+    // FILE.png: the first engine that differs (else the first non-golden one); every other
+    // engine that differs beside it as FILE.ENGINE.png. Differing pixels are ringed to be seen
+    // at any size.
+    const std::string path = a.get("--diff-image");
+    write_png(diff_image(golden.result.spans, diff_for_image, cfg.width, cfg.height), path,
+              "--diff-image");
+    std::printf("  wrote %s (%s against golden: grey agreed, red missing, blue extra, ringed)\n",
+                path.c_str(), diff_engine.empty() ? "golden" : diff_engine.c_str());
+    for (size_t i = 0; i < diffs.size(); ++i) {
+      const std::string& name = diffs[i].first;
+      if (name != diff_engine && diffs[i].second.exact()) continue;  // nothing to show
+      const std::string engine_path = name == diff_engine ? path : diff_image_path(path, name);
+      if (name != diff_engine) {
+        write_png(diff_image(golden.result.spans, diffs[i].second, cfg.width, cfg.height),
+                  engine_path, "--diff-image");
+        std::printf("  wrote %s (%s against golden)\n", engine_path.c_str(), name.c_str());
+      }
+      for (size_t r = 0; r < rows.size(); ++r)
+        if (row_engines[r] == name) rows[r].set("diff_image", engine_path);
+    }
   }
   if (a.has("--report")) {
     OutputFile out(a.get("--report"), "--report");
-    out.write(Json::object()
-                  .set("scene", a.get("--scene"))
-                  .set("config", config_json(cfg))
-                  .set("triangles", triangle_counts(ls))
-                  .set("golden_pixels", golden_pixels)
-                  .set("engines", rows)
-                  .set("all_exact_agree", all_exact_agree)
-                  .dump());
+    Json report = Json::object();
+    report.set("scene", a.get("--scene"))
+        .set("config", config_json(cfg))
+        .set("triangles", triangle_counts(ls))
+        .set("golden_pixels", golden_pixels)
+        .set("engines", [&] {
+          Json list = Json::array();
+          for (const Json& row : rows) list.push(row);
+          return list;
+        }())
+        .set("all_exact_agree", all_exact_agree);
+    add_descriptions(report);
+    out.write(report.dump());
     out.commit();
     std::printf("  wrote %s (report)\n", a.get("--report").c_str());
   }
@@ -548,7 +619,7 @@ int cmd_engines(int argc, char** argv) {
     return 0;
   }
   for (const EngineInfo& e : engine_registry())
-    std::printf("%-15s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
+    std::printf("%-18s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
                 e.description.c_str());
   return 0;
 }
@@ -574,6 +645,7 @@ void print_usage() {
 }  // namespace
 
 int run_cli(int argc, char** argv) {
+  install_interrupt_cleanup();
   try {
     if (argc < 2) {
       print_usage();

@@ -1,10 +1,11 @@
-// trirast fuzz (issue 7): random scenes biased toward hard-cases.md, run through several engines
+// trirast fuzz: random scenes biased toward docs/hard-cases.md, run through several engines
 // and held against the golden; every disagreement is written to a .tri reproducer.
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -17,6 +18,8 @@
 #include "engines.hpp"
 #include "fuzz/fuzz_scene.hpp"
 #include "io/output_file.hpp"
+#include "util.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 
 namespace trirast {
 
@@ -42,19 +45,6 @@ class FaultyEngine : public Engine {
  private:
   std::unique_ptr<Engine> inner_;
 };
-
-// "a,,b" and "a," hold an empty item: kept, so the caller can refuse it.
-std::vector<std::string> split_commas(const std::string& s) {
-  std::vector<std::string> out;
-  if (s.empty()) return out;
-  size_t start = 0;
-  for (;;) {
-    const size_t comma = s.find(',', start);
-    out.push_back(s.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-    if (comma == std::string::npos) return out;
-    start = comma + 1;
-  }
-}
 
 std::string exact_engine_names() {
   std::string s;
@@ -103,7 +93,10 @@ int cmd_fuzz(int argc, char** argv) {
                  "cases (lattice vertices, subpixel offsets from centres, extreme coordinates,\n"
                  "slivers, ...) through every engine, each held against the golden. A disagreement\n"
                  "is written as a .tri reproducer whose header names the engines and the\n"
-                 "configuration. Progress on stderr once a second.\n"
+                 "configuration, with a \"# replay:\" line (also printed) that runs as written\n"
+                 "from this folder: trirast compare on the reproducer, exit status 1 while the\n"
+                 "disagreement holds, 0 once fixed (and for an --inject-fault run, whose fault the\n"
+                 "replay does not have). Progress on stderr once a second.\n"
                  "Exit status: 0 no disagreement, 1 a disagreement, 2 bad usage.\n\n"
               << a.help_text();
     return 0;
@@ -123,9 +116,10 @@ int cmd_fuzz(int argc, char** argv) {
   // The engines: known, exact, each once. Unknown ones name the known ones.
   std::vector<std::string> names;
   std::vector<const EngineInfo*> engines;
-  for (const std::string& name : split_commas(a.get("--engines"))) {
-    if (name.empty())
+  for (const std::string& given : split(a.get("--engines"), ',')) {
+    if (given.empty())
       throw UsageError("trirast fuzz: --engines: empty engine name in '" + a.get("--engines") + "'");
+    const std::string name = current_engine_name(given);
     const EngineInfo* info = find_engine(name);
     if (!info) {
       std::string known;
@@ -149,7 +143,7 @@ int cmd_fuzz(int argc, char** argv) {
 
   EngineInfo faulty;
   if (a.has("--inject-fault")) {
-    const std::string victim = a.get("--inject-fault");
+    const std::string victim = current_engine_name(a.get("--inject-fault"));
     for (const EngineInfo*& info : engines)
       if (info->name == victim && victim != "golden") {
         const auto make = info->make;
@@ -175,6 +169,7 @@ int cmd_fuzz(int argc, char** argv) {
                time_limited ? (std::to_string(seconds) + " s").c_str()
                             : (std::to_string(max_scenes) + " scenes").c_str());
 
+  const bool hs_rtl = std::find(names.begin(), names.end(), "halfspace-rtl") != names.end();
   const auto t0 = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   double next_report = 1.0;
@@ -188,8 +183,12 @@ int cmd_fuzz(int argc, char** argv) {
          (!time_limited || elapsed() < double(seconds))) {
     const uint64_t n = scenes++;
     RngDraws draws(scene_seed(seed, n));
-    const RasterConfig cfg = draw_fuzz_config(draws);
+    RasterConfig cfg = draw_fuzz_config(draws);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris));
+    // The half-space unit's stamp, tile and walk: among halfspace-rtl's builds of these widths
+    // when it runs (it then never skips a scene for them), else among all.
+    draw_fuzz_hs_config(draws, cfg,
+                        hs_rtl ? rtl::halfspace_built_params(cfg) : std::vector<HsParams>{});
     triangles += tris.size();
     uint64_t golden_pixels = 0;
     std::vector<std::string> skipped;
@@ -215,12 +214,20 @@ int cmd_fuzz(int argc, char** argv) {
         if (small.size() < tris.size())
           note += "\nreduced to " + std::to_string(small.size()) + " of " +
                   std::to_string(tris.size()) + " triangles";
+        if (!faulty.name.empty())
+          note += "\n" + faulty.name + " ran with --inject-fault: the replay, without the fault, agrees";
+        // The replay names the engines that ran on this scene (not those whose build does not
+        // cover its configuration), so it runs as written.
+        std::vector<std::string> ran;
+        for (const std::string& name : names)
+          if (std::find(skipped.begin(), skipped.end(), name) == skipped.end()) ran.push_back(name);
         OutputFile out(repro_path(n), "--out");
-        out.write(format_reproducer(small, cfg, names, note));
+        out.write(format_reproducer(small, cfg, ran, note, repro_path(n)));
         out.commit();
         ++written;
-        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\n",
-                     (unsigned long long)n, summary.c_str(), repro_path(n).c_str());
+        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\nfuzz: replay: %s\n",
+                     (unsigned long long)n, summary.c_str(), repro_path(n).c_str(),
+                     replay_command(cfg, ran, repro_path(n)).c_str());
       } else {
         std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s)\n", (unsigned long long)n,
                      summary.c_str());

@@ -1,4 +1,4 @@
-// trirast sweep / fit (issue 6, docs/speed-vs-error.md).
+// trirast sweep / fit (docs/speed-vs-error.md).
 // sweep: engines x configurations x scenes, each point against the golden at S = 8 on the same
 //        float input; writes sweep.csv (per scene), sweep_configs.csv (per configuration) and
 //        sweep.json. --jobs N runs points in N worker processes (the SystemC kernel is one per
@@ -6,6 +6,7 @@
 // fit:   the smallest configuration that is exact on a scene, or within an error budget.
 #include <poll.h>
 #include <signal.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,33 +18,29 @@
 #include <cstring>
 #include <iostream>
 #include <sstream>
-#include <sys/stat.h>
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/scene_options.hpp"
+#include "cli/source_files.hpp"
+#include "core/temporary_files.hpp"
 #include "core/engine.hpp"
 #include "engines.hpp"
 #include "io/json.hpp"
 #include "io/output_file.hpp"
 #include "sweep/sweep.hpp"
 #include "sweep/sweep_area.hpp"
+#include "sweep/sweep_shard.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-
-std::vector<std::string> split_on(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep))
-    if (!item.empty()) out.push_back(item);
+// The items of an option's list, empty ones skipped ("a,,b" is a, b).
+std::vector<std::string> nonempty_items(const std::string& s, char sep) {
+  std::vector<std::string> out = split(s, sep);
+  out.erase(std::remove(out.begin(), out.end(), std::string()), out.end());
   return out;
 }
 
@@ -284,7 +281,20 @@ Json area_model_json(const AreaModel& area, const std::string& csv) {
                   .set("coord_bits", r.coord_bits)
                   .set("box_bits", r.box_bits)
                   .set("luts", r.luts)
-                  .set("ffs", r.ffs));
+                  .set("ffs", r.ffs)
+                  .set("endpoints", r.endpoints)
+                  .set("file", r.origin.empty() ? csv : r.origin)
+                  .set("from_run", r.from_run)
+                  .set("estimate", [&] {  // the width formula's figures for the same widths
+                    RasterConfig c;
+                    c.subpixel_bits = r.subpixel_bits;
+                    c.coord_int_bits = r.coord_bits;
+                    c.box_bits = r.box_bits;
+                    c.endpoints = r.endpoints;
+                    const Area e = area.estimate(
+                        r.unit == "trad" ? UnitKind::Trad : UnitKind::Improved, c);
+                    return Json::object().set("luts", e.luts).set("ffs", e.ffs);
+                  }()));
   const RasterConfig def;
   const Area imp = area.area(UnitKind::Improved, def), trad = area.area(UnitKind::Trad, def);
   const AreaTerms ti = improved_area_terms(def), tt = trad_area_terms(def);
@@ -334,20 +344,31 @@ bool engine_runs(const std::string& name) {
 
 }  // namespace
 
+// --synth-csv / --synth-script as given, else the file in the source tree (any working folder).
+std::string synth_file(const Args& a, const std::string& option, const std::string& relative) {
+  return a.has(option) ? a.get(option) : source_file(relative);
+}
+
 // ---------------------------------------------------------------------------------------------
 int cmd_sweep(int argc, char** argv) {
   Args a("sweep", "[--quick] [--jobs N] [--out DIR] [options]",
          {
              {"--quick", "", "a small sweep (3 small scenes, ~20 configurations) for the test suite", ""},
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
-             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json", "sweep-out"},
+             {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
-             {"--engines", "LIST", "comma-separated engines to sweep: golden,model,trad,float-scanline (default) and rtl, unit", ""},
+             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline (default) and improved-rtl, improved-datapath", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
-             {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv"},
-             {"--synth-script", "FILE", "scripts/synth.sh, whose CONFIGS line names the synthesized widths", "scripts/synth.sh"},
+             {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
+             {"--synth-script", "FILE", "scripts/synth.sh, whose CONFIGS line names the synthesized widths", "scripts/synth.sh of the source tree"},
              {"--no-progress", "", "no progress bar on stderr", ""},
+             {"--list-tasks", "", "print the task list (index, configuration, scene) and exit", ""},
+             {"--shard", "K/N", "run tasks [K*T/N, (K+1)*T/N) of the T tasks, one result file each in --out DIR/tasks (complete ones are skipped)", ""},
+             {"--task", "I", "run task I only (as --shard)", ""},
+             {"--merge", "DIR", "build the outputs from DIR/tasks (and DIR/synth) instead of running the points", ""},
+             {"--allow-partial", "", "--merge: merge even when tasks have no result file (the output says partial)", ""},
+             {"--synth-todo", "FILE", "--merge: write the buildable front configurations (and both default units) whose area is not from DIR/synth (UNIT:S:COORD:BOX:N lines)", ""},
          });
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -365,14 +386,15 @@ int cmd_sweep(int argc, char** argv) {
   base.width = int(a.get_int("--width", 1, kMaxViewport));
   base.height = int(a.get_int("--height", 1, kMaxViewport));
   const std::string out_dir = a.get("--out");
-  std::vector<std::string> engines = split_on(a.get("--engines"), ',');
+  std::vector<std::string> engines = nonempty_items(a.get("--engines"), ',');
+  for (std::string& e : engines) e = current_engine_name(e);
   for (const std::string& e : engines)
     if (!find_engine(e))
       throw UsageError("trirast sweep: --engines: unknown engine '" + e + "'");
   std::vector<SweepScene> scene_specs;
   try {
     if (a.has("--scenes"))
-      for (const std::string& s : split_on(a.get("--scenes"), ';'))
+      for (const std::string& s : nonempty_items(a.get("--scenes"), ';'))
         scene_specs.push_back(parse_sweep_scene(s));
     else
       scene_specs = sweep_scenes(quick);
@@ -407,17 +429,68 @@ int cmd_sweep(int argc, char** argv) {
     p.cfg.height = base.height;
   }
   if (points.empty()) throw UsageError("trirast sweep: --engines: no configuration to sweep");
-  if (mkdir(out_dir.c_str(), 0777) != 0 && errno != EEXIST)
+  // The distributed sweep (sweep_shard.hpp): task list, shards, merge.
+  const std::vector<SweepTask> all_tasks = sweep_tasks(points.size(), scene_specs.size());
+  const bool merging = a.has("--merge"), sharded = a.has("--shard") || a.has("--task");
+  if (int(merging) + int(sharded) + int(a.has("--list-tasks")) > 1 || (a.has("--shard") && a.has("--task")))
+    throw UsageError("trirast sweep: --shard, --task, --merge and --list-tasks exclude each other");
+  if ((a.has("--allow-partial") || a.has("--synth-todo")) && !merging)
+    throw UsageError(std::string("trirast sweep: ") +
+                     (a.has("--allow-partial") ? "--allow-partial" : "--synth-todo") +
+                     " needs --merge DIR");
+  if (a.has("--list-tasks")) {
+    for (const SweepTask& t : all_tasks)
+      std::printf("%zu\t%s\t%s\n", t.index, points[t.point].label().c_str(),
+                  scene_specs[t.scene].spec.c_str());
+    return 0;
+  }
+  if (sharded) {
+    std::vector<SweepTask> mine;
+    if (a.has("--shard")) {
+      try {
+        mine = shard_tasks(all_tasks, parse_shard(a.get("--shard")));
+      } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("trirast sweep: --shard: ") + e.what());
+      }
+    } else {
+      const std::string i = a.get("--task");
+      if (i.empty() || i.size() > 9 || i.find_first_not_of("0123456789") != std::string::npos ||
+          std::stoul(i) >= all_tasks.size())
+        throw UsageError("trirast sweep: --task: '" + i + "' is not a task (0.." +
+                         std::to_string(all_tasks.size() - 1) + ")");
+      mine.push_back(all_tasks[std::stoul(i)]);
+    }
+    const auto t0 = Clock::now();
+    const ShardOutcome o = run_shard(out_dir, sweep_fingerprint(points, scene_specs, base), mine,
+                                     points, scene_specs, base);
+    std::printf("trirast sweep: %zu of %zu tasks in %s: %zu ran, %zu complete already, %zu "
+                "failed, %.1f s\n",
+                mine.size(), all_tasks.size(), out_dir.c_str(), o.ran, o.skipped, o.failed,
+                seconds_since(t0));
+    return 0;
+  }
+  // A folder this run creates is removed (when still empty) if the run fails or is interrupted.
+  TemporaryPath new_out_dir;
+  if (mkdir(out_dir.c_str(), 0777) == 0) new_out_dir.reset(out_dir, true);
+  else if (errno != EEXIST)
     throw UsageError("trirast sweep: --out: cannot create directory '" + out_dir + "': " +
                      std::strerror(errno));
   const std::string csv_path = out_dir + "/sweep.csv", cfg_path = out_dir + "/sweep_configs.csv",
                     json_path = out_dir + "/sweep.json";
   for (const std::string& p : {csv_path, cfg_path, json_path}) check_output_path(p, "--out");
-  AreaModel area(a.get("--synth-csv"), a.get("--synth-script"));
+  const std::string synth_csv = synth_file(a, "--synth-csv", "docs/synth.csv");
+  AreaModel area(synth_csv, synth_file(a, "--synth-script", "scripts/synth.sh"));
+  if (merging) area.add_rows(read_synth_results(a.get("--merge")));
 
   const auto t0 = Clock::now();
   std::vector<SweepSceneData> scenes;
-  for (const SweepScene& s : scene_specs) scenes.push_back(load_sweep_scene(s, base));
+  std::vector<std::string> missing;  // --merge --allow-partial: tasks without a result file
+  std::vector<std::vector<PointResult>> merged;
+  if (merging)
+    merge_task_results(a.get("--merge"), sweep_fingerprint(points, scene_specs, base), points,
+                       scene_specs, a.has("--allow-partial"), scenes, merged, missing);
+  else
+    for (const SweepScene& s : scene_specs) scenes.push_back(load_sweep_scene(s, base));
   const double reference_seconds = seconds_since(t0);
 
   std::vector<Task> tasks;
@@ -425,11 +498,13 @@ int cmd_sweep(int argc, char** argv) {
     for (size_t p = 0; p < points.size(); ++p) tasks.push_back({p, s});
   std::vector<std::vector<PointResult>> results(points.size(),
                                                 std::vector<PointResult>(scenes.size()));
-  Progress progress(tasks.size(), !a.has("--no-progress"));
-  std::fprintf(stderr, "trirast sweep: %zu configurations x %zu scenes = %zu points, %d job%s\n",
+  Progress progress(tasks.size(), !a.has("--no-progress") && !merging);
+  if (!merging) std::fprintf(stderr, "trirast sweep: %zu configurations x %zu scenes = %zu points, %d job%s\n",
                points.size(), scenes.size(), tasks.size(), jobs, jobs == 1 ? "" : "s");
   const auto t1 = Clock::now();
-  if (jobs == 1) {
+  if (merging) {
+    results = merged;
+  } else if (jobs == 1) {
     size_t done = 0;
     for (const Task& t : tasks) {
       results[t.point][t.scene] = run_sweep_point(points[t.point], scenes[t.scene]);
@@ -444,6 +519,9 @@ int cmd_sweep(int argc, char** argv) {
   for (size_t p = 0; p < points.size(); ++p)
     summaries.push_back(summarize(points[p], scenes, results[p], area));
   mark_pareto(summaries);
+  std::vector<std::string> no_rtl;  // front configurations the RTL does not realize
+  const std::string todo = synth_todo(points, summaries, no_rtl);
+  if (a.has("--synth-todo")) write_text(a.get("--synth-todo"), todo, "--synth-todo");
 
   Json jscenes = Json::array();
   for (const SweepSceneData& s : scenes) {
@@ -486,7 +564,7 @@ int cmd_sweep(int argc, char** argv) {
         for (const std::string& n : skipped) e.push(Json::string(n));
         return e;
       }())
-      .set("area_model", area_model_json(area, a.get("--synth-csv")))
+      .set("area_model", area_model_json(area, synth_csv))
       .set("scenes", jscenes)
       .set("points", jpoints)
       .set("failed_points", failures)
@@ -494,9 +572,24 @@ int cmd_sweep(int argc, char** argv) {
                                .set("references", reference_seconds)
                                .set("sweep", sweep_seconds)
                                .set("total", seconds_since(t0)));
+  {
+    Json m = Json::array(), nr = Json::array(), fm = Json::array();
+    for (const std::string& n : missing) m.push(Json::string(n));
+    for (const std::string& n : no_rtl) nr.push(Json::string(n));
+    for (size_t p = 0; p < points.size(); ++p)
+      if (const double f = area.fmax_mhz(points[p].kind(), points[p].cfg))
+        fm.push(Json::object().set("engine", points[p].engine).set("config", points[p].config_name()).set("fmax_mhz", f));
+    doc.set("merged_from", merging ? a.get("--merge") : "")
+        .set("partial", !missing.empty())
+        .set("missing_tasks", m)
+        .set("front_synth_todo", todo)
+        .set("front_without_rtl", nr)
+        .set("ice40_fmax", fm);
+  }
   write_text(csv_path, sweep_csv(points, scenes, results, summaries), "--out");
   write_text(cfg_path, sweep_configs_csv(points, summaries), "--out");
   write_text(json_path, doc.dump(), "--out");
+  new_out_dir.release();
 
   std::printf("trirast sweep: %zu configurations x %zu scenes in %.1f s (%d job%s)%s\n",
               points.size(), scenes.size(), seconds_since(t0), jobs, jobs == 1 ? "" : "s",
@@ -505,7 +598,7 @@ int cmd_sweep(int argc, char** argv) {
                                                    ") where it covers a configuration, else estimate")
                                                       .c_str()
                                                 : "estimates only (no synthesis CSV)");
-  std::printf("  %-40s %12s %10s %10s %8s  %s\n", "Pareto (error, cycles)", "error ppm",
+  std::printf("  %-40s %12s %10s %10s %8s  %s\n", "Pareto, hardware (error, cycles)", "error ppm",
               "cyc/tri", "LUTs", "cracks", "");
   for (size_t p = 0; p < points.size(); ++p)
     if (summaries[p].pareto_cycles)
@@ -515,6 +608,9 @@ int cmd_sweep(int argc, char** argv) {
                   summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
                   summaries[p].area.estimate() ? "(area estimate)" : "");
   if (failures) std::printf("  %d point(s) failed: see the error column of sweep.csv\n", failures);
+  if (!missing.empty())
+    std::printf("  PARTIAL: %zu task(s) had no result file (first: %s); their points are left "
+                "off the fronts\n", missing.size(), missing.front().c_str());
   for (const std::string& p : {csv_path, cfg_path, json_path})
     std::printf("  wrote      %s\n", p.c_str());
   return 0;
@@ -532,18 +628,18 @@ struct FitEval {
 }  // namespace
 
 int cmd_fit(int argc, char** argv) {
-  Args a("fit", "--scene SCENE [--error-budget PPM] [options]",
-         {
-             {"--scene", "SCENE", "builtin:NAME[:k=v,...], a .tri file, or a mesh file", ""},
-             {"--cull", "MODE", "none | back | front", "none"},
-             {"--error-budget", "PPM", "allowed missing + extra pixels, parts per million of the reference's", "0"},
-             {"--endpoints", "N", "N of the fitted configuration (does not change the output; 1 is the smallest)", "1"},
-             {"--width", "W", "viewport width in pixels", "1024"},
-             {"--height", "H", "viewport height in pixels", "768"},
-             {"--report", "FILE.json", "write the search and the result as JSON", ""},
-             {"--synth-csv", "FILE", "synthesis results; missing file = estimates only", "docs/synth.csv"},
-             {"--synth-script", "FILE", "scripts/synth.sh (names the synthesized widths)", "scripts/synth.sh"},
-         });
+  // The scene options are raster's own table (cli/scene_options.hpp): the same scene, camera and
+  // viewport; --subpixel-bits fixes S instead of searching it.
+  std::vector<OptionSpec> specs = scene_input_options();
+  const std::vector<OptionSpec> fit_specs = {
+      {"--error-budget", "PPM", "allowed missing + extra pixels, parts per million of the reference's", "0"},
+      {"--endpoints", "N", "N of the fitted configuration (does not change the output; 1 is the smallest)", "1"},
+      {"--report", "FILE.json", "write the search and the result as JSON", ""},
+      {"--synth-csv", "FILE", "synthesis results; missing file = estimates only (with a warning)", "docs/synth.csv of the source tree"},
+      {"--synth-script", "FILE", "scripts/synth.sh (names the synthesized widths)", "scripts/synth.sh of the source tree"},
+  };
+  specs.insert(specs.end(), fit_specs.begin(), fit_specs.end());
+  Args a("fit", "--scene SCENE [--error-budget PPM] [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
     std::cout << "Find the smallest configuration of the improved unit (subpixel bits, coordinate\n"
@@ -570,8 +666,15 @@ int cmd_fit(int argc, char** argv) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("trirast fit: ") + e.what());
   }
+  spec.camera = camera_from(a);
+  const int s_first = a.has("--subpixel-bits") ? int(a.get_int("--subpixel-bits", 0, 8)) : 0;
+  const int s_last = a.has("--subpixel-bits") ? s_first : 8;
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
-  AreaModel area(a.get("--synth-csv"), a.get("--synth-script"));
+  const std::string synth_csv = synth_file(a, "--synth-csv", "docs/synth.csv");
+  AreaModel area(synth_csv, synth_file(a, "--synth-script", "scripts/synth.sh"));
+  if (!area.have_synth())
+    std::fprintf(stderr, "trirast fit: --synth-csv %s: no synthesis results; areas are the estimate\n",
+                 synth_csv.c_str());
 
   const auto t0 = Clock::now();
   const SweepSceneData scene = load_sweep_scene(spec, base);
@@ -579,7 +682,7 @@ int cmd_fit(int argc, char** argv) {
   Json search = Json::array();
   auto make_point = [&](int S, int coord, int box, int K) {
     SweepPoint p;
-    p.engine = "unit";
+    p.engine = "improved-datapath";
     p.group = "fit";
     p.cfg.width = base.width;
     p.cfg.height = base.height;
@@ -620,7 +723,7 @@ int cmd_fit(int argc, char** argv) {
     Area area;
   };
   std::vector<Candidate> candidates;
-  for (int S = 0; S <= 8; ++S) {
+  for (int S = s_first; S <= s_last; ++S) {
     const int coord_max = std::min(def.coord_int_bits, 30 - (S > 0 ? S : 1));
     SweepPoint p = make_point(S, coord_max, def.box_bits, 0);
     FitEval e = eval(p);
@@ -663,7 +766,7 @@ int cmd_fit(int argc, char** argv) {
   // Cycles of the default and of the fit on the timed SystemC model.
   auto timed = [&](RasterConfig cfg) {
     SweepPoint p;
-    p.engine = "model";
+    p.engine = "improved-sc";
     p.cfg = cfg;
     return run_sweep_point(p, scene);
   };

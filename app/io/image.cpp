@@ -11,6 +11,7 @@ namespace trirast {
 void RgbImage::fill_span(const Span& s, uint8_t r, uint8_t g, uint8_t b) {
   if (s.y < 0 || s.y >= height) return;
   const int x0 = std::max(0, s.x_begin), x1 = std::min(width, s.x_end);
+  if (x0 >= x1) return;
   uint8_t* p = &rgb[(size_t(s.y) * width + x0) * 3];
   for (int x = x0; x < x1; ++x, p += 3) {
     p[0] = r;
@@ -39,6 +40,24 @@ RgbImage diff_image(const SpanList& golden, const SpanDiff& diff, int width, int
   RgbImage img(width, height);
   for (const Span& s : golden) img.fill_span(s, 128, 128, 128);
   // Extra first, missing last: a baseline's extra pixels are common and must not hide a miss.
+  // Each differing pixel is ringed (a square outline, radius ~1% of the image, at least 3 px)
+  // in its colour, so a handful of them show at any size; the pixels themselves are drawn last.
+  const int radius = std::max(3, std::max(width, height) / 100);
+  auto ring = [&](const Span& s, uint8_t r, uint8_t g, uint8_t b) {
+    for (int x = s.x_begin; x < s.x_end; ++x) {
+      img.fill_span(Span{s.tri, s.y - radius, x - radius, x + radius + 1}, r, g, b);
+      img.fill_span(Span{s.tri, s.y + radius, x - radius, x + radius + 1}, r, g, b);
+      for (int y = s.y - radius + 1; y < s.y + radius; ++y) {
+        img.fill_span(Span{s.tri, y, x - radius, x - radius + 1}, r, g, b);
+        img.fill_span(Span{s.tri, y, x + radius, x + radius + 1}, r, g, b);
+      }
+    }
+  };
+  // (Many differing pixels show by themselves: rings only up to 20,000 of them.)
+  if (diff.missing_pixels + diff.extra_pixels <= 20000) {
+    for (const Span& s : diff.extra) ring(s, 40, 90, 255);
+    for (const Span& s : diff.missing) ring(s, 230, 30, 30);
+  }
   for (const Span& s : diff.extra) img.fill_span(s, 40, 90, 255);
   for (const Span& s : diff.missing) img.fill_span(s, 230, 30, 30);
   return img;

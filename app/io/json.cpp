@@ -93,6 +93,23 @@ void Json::dump_to(std::string& out, int indent, int depth) const {
   }
 }
 
+void Json::leaf_names(std::vector<std::string>& out, const std::string& prefix) const {
+  if (kind_ == Kind::Object) {
+    for (const auto& m : members_)
+      m.second.leaf_names(out, prefix.empty() ? m.first : prefix + "." + m.first);
+    return;
+  }
+  bool nested = kind_ == Kind::Array && !items_.empty();
+  for (const Json& item : items_) nested = nested && item.kind_ != Kind::Scalar;
+  if (nested) {
+    for (const Json& item : items_) item.leaf_names(out, prefix + "[]");
+    return;
+  }
+  for (const std::string& name : out)
+    if (name == prefix) return;
+  out.push_back(prefix);
+}
+
 std::string Json::dump(int indent) const {
   std::string out;
   dump_to(out, indent, 0);

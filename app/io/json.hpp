@@ -29,6 +29,10 @@ class Json {
 
   std::string dump(int indent = 2) const;
 
+  // The statistics of a report: the dotted names of its leaves ("triangles.read"); an array of
+  // objects names its elements "[]" ("engines[].pixels"), an array of plain values is one leaf.
+  void leaf_names(std::vector<std::string>& out, const std::string& prefix = "") const;
+
  private:
   enum class Kind { Object, Array, Scalar };
   explicit Json(Kind k) : kind_(k) {}

@@ -33,13 +33,13 @@ OutputFile::OutputFile(const std::string& path, const std::string& option)
     : path_(path), option_(option) {
   check_output_path(path, option);
   temp_path_ = path + ".tmp" + std::to_string(getpid());
+  temp_.reset(temp_path_);
   file_ = std::fopen(temp_path_.c_str(), "wb");
   if (!file_) throw OutputError(option + " " + path + ": cannot create: " + std::strerror(errno));
 }
 
 OutputFile::~OutputFile() {
-  if (file_) std::fclose(file_);
-  if (!committed_) std::remove(temp_path_.c_str());
+  if (file_) std::fclose(file_);  // temp_ removes the file unless commit() released it
 }
 
 void OutputFile::write(const std::string& text) {
@@ -53,7 +53,7 @@ void OutputFile::commit() {
   if (!ok) throw OutputError(option_ + " " + path_ + ": write failed: " + std::strerror(errno));
   if (std::rename(temp_path_.c_str(), path_.c_str()) != 0)
     throw OutputError(option_ + " " + path_ + ": cannot rename: " + std::strerror(errno));
-  committed_ = true;
+  temp_.release();
 }
 
 }  // namespace trirast

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/temporary_files.hpp"
+
 namespace trirast {
 
 class OutputError : public std::runtime_error {
@@ -28,7 +30,7 @@ class OutputFile {
  private:
   std::string path_, option_, temp_path_;
   FILE* file_ = nullptr;
-  bool committed_ = false;
+  TemporaryPath temp_;  // removed on failure and on SIGINT / SIGTERM
 };
 
 // Checks that `path` can be created (its directory exists and is writable) before a long run.

@@ -8,19 +8,15 @@
 #include <stdexcept>
 
 #include "core/engine.hpp"
-#include "engines.hpp"
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
+#include "engines.hpp"
+#include "reference/watertight.hpp"
+#include "util.hpp"
 
 namespace trirast {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 std::string fmt(const char* f, double v) {
   char buf[64];
@@ -73,10 +69,18 @@ std::vector<SweepScene> sweep_scenes(bool quick) {
 }
 
 UnitKind SweepPoint::kind() const {
-  if (engine == "model" || engine == "unit" || engine == "rtl") return UnitKind::Improved;
-  if (engine == "trad") return UnitKind::Trad;
+  if (engine == "improved-sc" || engine == "improved-datapath" || engine == "improved-rtl")
+    return UnitKind::Improved;
+  if (engine == "trad-sc") return UnitKind::Trad;
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
+}
+
+bool SweepPoint::rtl() const {
+  const UnitKind k = kind();
+  if (k == UnitKind::Trad) return cfg.fifo_depth == RasterConfig{}.fifo_depth;
+  return k == UnitKind::Improved && cfg.divider_quotient_bits == 0 &&
+         cfg.fifo_depth == RasterConfig{}.fifo_depth;
 }
 
 std::string SweepPoint::config_name() const {
@@ -93,7 +97,7 @@ std::string SweepPoint::config_name() const {
 
 std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>& engines) {
   std::vector<std::string> want = engines;
-  if (want.empty()) want = {"golden", "model", "trad", "float-scanline", "rtl"};
+  if (want.empty()) want = {"golden", "improved-sc", "trad-sc", "float-scanline", "improved-rtl"};
   auto wanted = [&](const std::string& e) {
     return std::find(want.begin(), want.end(), e) != want.end();
   };
@@ -121,34 +125,35 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   if (quick) {
     for (int S : {8, 4, 0})
       for (int N : {1, 4})
-        for (int K : {0, 6}) add("model", "S x N x K", S, 16, 14, K, N);
-    add("model", "box bits", 8, 16, 8, 0, 1);
-    add("model", "coord bits", 8, 12, 14, 0, 1);
-    add("model", "fixed divider", 8, 16, 14, 0, 1, Fx);
-    for (int S : {8, 4}) add("trad", "traditional", S, 16, 14, 0, 1);
+        for (int K : {0, 6}) add("improved-sc", "S x N x K", S, 16, 14, K, N);
+    add("improved-sc", "box bits", 8, 16, 8, 0, 1);
+    add("improved-sc", "coord bits", 8, 12, 14, 0, 1);
+    add("improved-sc", "fixed divider", 8, 16, 14, 0, 1, Fx);
+    for (int S : {8, 4}) add("trad-sc", "traditional", S, 16, 14, 0, 1);
     add("float-scanline", "CPU baseline", 8, 16, 14, 0, 1);
-    for (int N : {1, 4}) add("rtl", "RTL", 8, 16, 14, 0, N);
+    for (int N : {1, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
     return pts;
   }
   for (int S : {8, 6, 4, 2, 0})
     for (int N : {1, 2, 4})
-      for (int K : {0, 10, 8, 6, 5, 4}) add("model", "S x N x K", S, 16, 14, K, N);
+      for (int K : {0, 10, 8, 6, 5, 4}) add("improved-sc", "S x N x K", S, 16, 14, K, N);
   for (int S : {8, 4})
-    for (int box : {12, 10, 9, 8, 7, 6}) add("model", "box bits", S, 16, box, 0, 1);
+    for (int box : {12, 10, 9, 8, 7, 6}) add("improved-sc", "box bits", S, 16, box, 0, 1);
   for (int S : {8, 4})
-    for (int coord : {14, 13, 12, 11}) add("model", "coord bits", S, coord, 14, 0, 1);
+    for (int coord : {14, 13, 12, 11}) add("improved-sc", "coord bits", S, coord, 14, 0, 1);
   for (int S : {8, 4, 0})
-    for (int K : {0, 8}) add("model", "fixed divider", S, 16, 14, K, 1, Fx);
-  add("model", "fixed divider", 8, 16, 10, 0, 1, Fx);
-  for (int N : {1, 4}) add("model", "boundary divide", 8, 16, 14, 0, N, A, BoundaryMode::Divide);
-  add("model", "synthesized", 4, 12, 10, 0, 1);  // scripts/synth.sh "small"
-  add("model", "synthesized", 8, 20, 14, 0, 1);  // scripts/synth.sh "wide"
+    for (int K : {0, 8}) add("improved-sc", "fixed divider", S, 16, 14, K, 1, Fx);
+  add("improved-sc", "fixed divider", 8, 16, 10, 0, 1, Fx);
+  for (int N : {1, 4})
+    add("improved-sc", "boundary divide", 8, 16, 14, 0, N, A, BoundaryMode::Divide);
+  add("improved-sc", "synthesized", 4, 12, 10, 0, 1);  // scripts/synth.sh "small"
+  add("improved-sc", "synthesized", 8, 20, 14, 0, 1);  // scripts/synth.sh "wide"
   for (int S : {6, 4, 2})
-    for (int K : {0, 8, 6}) add("model", "narrow", S, 12, 10, K, 1);
+    for (int K : {0, 8, 6}) add("improved-sc", "narrow", S, 12, 10, K, 1);
   for (int S : {8, 6, 4, 2, 0})
-    for (int coord : {16, 12}) add("trad", "traditional", S, coord, 14, 0, 1);
+    for (int coord : {16, 12}) add("trad-sc", "traditional", S, coord, 14, 0, 1);
   for (int S : {8, 6, 4, 2, 0}) add("float-scanline", "CPU baseline", S, 16, 14, 0, 1);
-  for (int N : {1, 2, 4}) add("rtl", "RTL", 8, 16, 14, 0, N);
+  for (int N : {1, 2, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
   return pts;
 }
 
@@ -159,7 +164,7 @@ SweepSceneData load_sweep_scene(const SweepScene& s, const RasterConfig& base) {
   d.spec = s;
   RasterConfig cfg = base;
   cfg.cull = s.cull;
-  d.scene = load_scene(s.spec, cfg, CameraOptions{});
+  d.scene = load_scene(s.spec, cfg, s.camera);
   SetupResult setup;
   try {
     setup = setup_scene(d.scene.tris, cfg);
@@ -176,7 +181,7 @@ SweepSceneData load_sweep_scene(const SweepScene& s, const RasterConfig& base) {
   d.reference = std::move(r.spans);
   d.reference_pixels = count_pixels(d.reference);
   if (s.closed) {
-    const ClosedCount c = count_closed(setup, d.reference, cfg);
+    const WatertightResult c = check_watertight(setup, d.reference, cfg);
     d.reference_cracks = c.cracks;
     d.reference_doubles = c.doubles;
   }
@@ -272,72 +277,12 @@ PointResult run_sweep_point(const SweepPoint& p, const SweepSceneData& scene) {
     r.missing = diff.missing_pixels;
     r.extra = diff.extra_pixels;
     if (scene.spec.closed) {
-      const ClosedCount c = count_closed(setup, out.spans, cfg);
+      const WatertightResult c = check_watertight(setup, out.spans, cfg);
       r.cracks = c.cracks;
       r.doubles = c.doubles;
     }
   } catch (const std::exception& e) {
     r.error = e.what();
-  }
-  return r;
-}
-
-// ---- cracks and double hits ----------------------------------------------------------------------
-
-ClosedCount count_closed(const SetupResult& setup, const SpanList& spans, const RasterConfig& cfg) {
-  ClosedCount r;
-  const size_t W = size_t(cfg.width), H = size_t(cfg.height);
-  std::vector<uint8_t> count(W * H, 0);
-  for (const Span& s : spans) {
-    if (s.y < 0 || size_t(s.y) >= H) continue;
-    for (int32_t x = std::max(s.x_begin, 0); x < s.x_end && size_t(x) < W; ++x) {
-      uint8_t& c = count[size_t(s.y) * W + size_t(x)];
-      if (c < 255) ++c;
-    }
-  }
-  for (uint8_t c : count)
-    if (c > 1) ++r.doubles;
-  // The outline: edges used by exactly one triangle (by their snapped end points).
-  using Point = std::pair<int64_t, int64_t>;
-  auto key = [](const Vec2i& a, const Vec2i& b) {
-    Point pa{a.x, a.y}, pb{b.x, b.y};
-    return pa < pb ? std::make_pair(pa, pb) : std::make_pair(pb, pa);
-  };
-  std::map<std::pair<Point, Point>, int> uses;
-  for (const TriangleSetup& t : setup.tris)
-    for (int i = 0; i < 3; ++i) ++uses[key(t.v[i], t.v[(i + 1) % 3])];
-  // Pixels whose centre lies on an outline edge may stay uncovered (the rule leaves one side).
-  std::vector<uint8_t> outline(W * H, 0);
-  for (const TriangleSetup& t : setup.tris) {
-    if (t.box.empty()) continue;
-    for (int i = 0; i < 3; ++i) {
-      const Vec2i a = t.v[i], b = t.v[(i + 1) % 3];
-      if (uses[key(a, b)] != 1) continue;
-      const EdgeSetup& e = t.edge[i];
-      for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
-        for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
-          const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
-          if (e.eval(cx, cy) != 0) continue;
-          if (cx < std::min(a.x, b.x) || cx > std::max(a.x, b.x) || cy < std::min(a.y, b.y) ||
-              cy > std::max(a.y, b.y))
-            continue;
-          outline[size_t(py) * W + size_t(px)] = 1;
-        }
-    }
-  }
-  // Cracks: uncovered centres inside or on a triangle, off the outline; each counted once.
-  for (const TriangleSetup& t : setup.tris) {
-    if (t.box.empty()) continue;
-    for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
-      for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
-        const size_t at = size_t(py) * W + size_t(px);
-        if (count[at] != 0 || outline[at]) continue;
-        const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
-        if (t.edge[0].eval(cx, cy) < 0 || t.edge[1].eval(cx, cy) < 0 || t.edge[2].eval(cx, cy) < 0)
-          continue;
-        ++r.cracks;
-        count[at] = 255;
-      }
   }
   return r;
 }
@@ -348,6 +293,7 @@ PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& s
                        const std::vector<PointResult>& results, const AreaModel& area) {
   PointSummary s;
   s.area = area.area(p.kind(), p.cfg);
+  s.rtl = p.rtl();
   double golden_seconds = 0;
   int n = 0;
   for (size_t i = 0; i < scenes.size(); ++i) {
@@ -391,28 +337,29 @@ PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& s
 }
 
 void mark_pareto(std::vector<PointSummary>& all) {
-  auto front = [&](auto y_of, auto eligible, bool PointSummary::*flag) {
+  // Whether `a` is undominated among the points `competes` admits.
+  auto undominated = [&](const PointSummary& a, auto y_of, auto competes) {
+    for (const PointSummary& b : all) {
+      if (&a == &b || !competes(b)) continue;
+      const bool le = b.error_ppm <= a.error_ppm && y_of(b) <= y_of(a);
+      const bool lt = b.error_ppm < a.error_ppm || y_of(b) < y_of(a);
+      if (le && lt) return false;
+    }
+    return true;
+  };
+  auto fronts = [&](auto y_of, auto eligible, bool PointSummary::*hw, bool PointSummary::*whatif) {
+    auto hardware = [&](const PointSummary& s) { return eligible(s) && s.rtl; };
     for (PointSummary& a : all) {
-      if (!eligible(a)) continue;
-      bool dominated = false;
-      for (const PointSummary& b : all) {
-        if (&a == &b || !eligible(b)) continue;
-        const bool le = b.error_ppm <= a.error_ppm && y_of(b) <= y_of(a);
-        const bool lt = b.error_ppm < a.error_ppm || y_of(b) < y_of(a);
-        if (le && lt) {
-          dominated = true;
-          break;
-        }
-      }
-      a.*flag = !dominated;
+      a.*hw = hardware(a) && undominated(a, y_of, hardware);
+      a.*whatif = eligible(a) && !a.rtl && undominated(a, y_of, eligible);
     }
   };
-  front([](const PointSummary& s) { return s.cycles_per_triangle; },
-        [](const PointSummary& s) { return s.timed && s.failures == 0; },
-        &PointSummary::pareto_cycles);
-  front([](const PointSummary& s) { return s.area.luts; },
-        [](const PointSummary& s) { return s.area.known() && s.failures == 0; },
-        &PointSummary::pareto_area);
+  fronts([](const PointSummary& s) { return s.cycles_per_triangle; },
+         [](const PointSummary& s) { return s.timed && s.failures == 0; },
+         &PointSummary::pareto_cycles, &PointSummary::whatif_cycles);
+  fronts([](const PointSummary& s) { return s.area.luts; },
+         [](const PointSummary& s) { return s.area.known() && s.failures == 0; },
+         &PointSummary::pareto_area, &PointSummary::whatif_area);
 }
 
 // ---- outputs ---------------------------------------------------------------------------------------
@@ -495,7 +442,8 @@ std::string sweep_configs_csv(const std::vector<SweepPoint>& points,
   std::string out = std::string(kConfigHeader) +
                     ",error_ppm,missing_ppm,extra_ppm,max_error_ppm,exact,cracks,doubles,offered,"
                     "rejected,total_cycles,cycles_per_triangle,cycles_per_pixel,luts,ffs,"
-                    "area_source,wall_seconds,wall_ratio,pareto_cycles,pareto_area,failures\n";
+                    "area_source,wall_seconds,wall_ratio,pareto_cycles,pareto_area,failures,rtl,"
+                    "whatif_cycles,whatif_area\n";
   for (size_t p = 0; p < points.size(); ++p) {
     const PointSummary& s = summaries[p];
     out += config_columns(points[p]) + "," + fmt("%.3f", s.error_ppm) + "," +
@@ -507,7 +455,8 @@ std::string sweep_configs_csv(const std::vector<SweepPoint>& points,
            (s.timed ? fmt("%.5f", s.cycles_per_pixel) : "") + "," + area_columns(s.area) + "," +
            fmt("%.6f", s.wall_seconds) + "," + fmt("%.4f", s.wall_ratio) + "," +
            (s.pareto_cycles ? "1" : "0") + "," + (s.pareto_area ? "1" : "0") + "," +
-           std::to_string(s.failures) + "\n";
+           std::to_string(s.failures) + "," + (s.rtl ? "1" : "0") + "," +
+           (s.whatif_cycles ? "1" : "0") + "," + (s.whatif_area ? "1" : "0") + "\n";
   }
   return out;
 }
@@ -566,12 +515,17 @@ Json point_summary_json(const PointSummary& s) {
     j.set("total_cycles", s.total_cycles)
         .set("cycles_per_triangle", s.cycles_per_triangle)
         .set("cycles_per_pixel", s.cycles_per_pixel);
-  if (s.area.known())
+  if (s.area.known()) {
     j.set("luts", s.area.luts).set("ffs", s.area.ffs).set("area_source", s.area.source);
+    if (!s.area.origin.empty()) j.set("area_origin", s.area.origin);
+  }
   j.set("wall_seconds", s.wall_seconds)
       .set("wall_ratio", s.wall_ratio)
       .set("pareto_cycles", s.pareto_cycles)
       .set("pareto_area", s.pareto_area)
+      .set("rtl", s.rtl)
+      .set("whatif_cycles", s.whatif_cycles)
+      .set("whatif_area", s.whatif_area)
       .set("failures", s.failures);
   return j;
 }

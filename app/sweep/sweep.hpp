@@ -1,4 +1,4 @@
-// Speed against error (issue 6, docs/speed-vs-error.md): engines x configurations x scenes.
+// Speed against error (docs/speed-vs-error.md): engines x configurations x scenes.
 // Every point is measured against one reference per scene: the golden at S = 8 with the default
 // coordinate width, on the same float input. This file holds the measurement of one point on
 // one scene and the aggregation over scenes; app/cli/cmd_sweep.cpp runs them (in parallel) and
@@ -24,6 +24,7 @@ struct SweepScene {
   std::string label;  // short name for tables and plots
   CullMode cull = CullMode::None;
   bool closed = false;
+  CameraOptions camera;  // mesh scenes: the camera (trirast fit --yaw, ...; sweeps use the default)
 };
 
 // Parses "SPEC[@back|@front|@none][@closed]" (the --scenes items).
@@ -35,6 +36,11 @@ struct SweepPoint {
   std::string group;    // the sweep axis the point belongs to ("S x N x K", "box bits", ...)
   RasterConfig cfg;     // cull is taken from the scene
   UnitKind kind() const;
+  // Whether the RTL implements the configuration (buildable hardware, so synthesizable): the
+  // traditional unit, and the improved unit without quotient truncation (K) and with the default
+  // FIFO depth. An improved configuration with K is a C++-model-only what-if: no RTL, its area
+  // stays an estimate, and it is never on a hardware front.
+  bool rtl() const;
   // "S8 c16 b14 K- N1" plus "fixed" / "divide" when not the default.
   std::string config_name() const;
   std::string label() const { return engine + " " + config_name(); }
@@ -86,14 +92,6 @@ struct PointResult {
 // engine's widths cannot hold is rejected, not fatal) and measures it against the reference.
 PointResult run_sweep_point(const SweepPoint& p, const SweepSceneData& scene);
 
-// Cracks and double hits of a closed mesh (watertight-style): a crack is an uncovered pixel whose
-// centre lies inside or on a set-up triangle and not on the mesh's outline (edges used by one
-// triangle); a double hit is a pixel covered more than once.
-struct ClosedCount {
-  int64_t cracks = 0, doubles = 0;
-};
-ClosedCount count_closed(const SetupResult& setup, const SpanList& spans, const RasterConfig& cfg);
-
 // A point aggregated over the scenes.
 struct PointSummary {
   double error_ppm = 0;        // mean over scenes of (missing + extra) / reference pixels
@@ -112,13 +110,21 @@ struct PointSummary {
   bool timed = false;
   int failures = 0;                // scenes where the point failed
   Area area;
+  bool rtl = false;                // SweepPoint::rtl(): buildable hardware
+  // The hardware fronts: among the buildable (rtl) timed points without failures.
   bool pareto_cycles = false;      // on the front of (error, cycles per triangle)
   bool pareto_area = false;        // on the front of (error, LUTs)
+  // Model-only what-ifs (not rtl): the point would be on the front of (error, cycles) / (error,
+  // LUTs) taken over every point, buildable or not. Never set for a buildable point.
+  bool whatif_cycles = false;
+  bool whatif_area = false;
 };
 
 PointSummary summarize(const SweepPoint& p, const std::vector<SweepSceneData>& scenes,
                        const std::vector<PointResult>& results, const AreaModel& area);
-// Marks the Pareto fronts (minimize both coordinates) among timed points without failures.
+// Marks the Pareto fronts (minimize both coordinates) of buildable hardware (rtl) among the points
+// without failures (cycles: timed points; area: points with an area), and the model-only
+// what-if points (whatif_*: not rtl, undominated when every point competes).
 void mark_pareto(std::vector<PointSummary>& summaries);
 
 // Rows of the per-scene CSV / the per-configuration CSV, header first.

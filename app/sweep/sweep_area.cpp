@@ -7,6 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "util.hpp"
+
 namespace trirast {
 
 const char* unit_kind_name(UnitKind k) {
@@ -40,11 +42,10 @@ std::string trim(const std::string& s) {
   return s.substr(a, b - a + 1);
 }
 
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep)) out.push_back(trim(item));
+// The trimmed items of a CSV line or a CONFIGS list.
+std::vector<std::string> trimmed_items(const std::string& s, char sep) {
+  std::vector<std::string> out = split(s, sep);
+  for (std::string& item : out) item = trim(item);
   return out;
 }
 
@@ -114,8 +115,8 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
       const size_t at = line.find("CONFIGS=\"");
       if (at != 0) continue;
       const std::string list = line.substr(9, line.find('"', 9) - 9);
-      for (const std::string& item : split(list, ' ')) {
-        const auto f = split(item, ':');
+      for (const std::string& item : trimmed_items(list, ' ')) {
+        const auto f = trimmed_items(item, ':');
         if (f.size() != 4) continue;
         try {
           widths[f[0]] = {std::stoi(f[1]), std::stoi(f[2]), std::stoi(f[3])};
@@ -132,7 +133,7 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
   while (std::getline(in, line)) {
     ++lineno;
     if (trim(line).empty()) continue;
-    const auto f = split(line, ',');
+    const auto f = trimmed_items(line, ',');
     if (col.empty()) {
       for (size_t i = 0; i < f.size(); ++i) col[lower(f[i])] = int(i);
       for (const char* need : {"unit", "config", "target", "luts", "ffs"})
@@ -159,6 +160,7 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
     r.subpixel_bits = w->second[0];
     r.coord_bits = w->second[1];
     r.box_bits = w->second[2];
+    r.origin = synth_csv;
     rows_.push_back(r);
   }
   // One target for every number: Xilinx 7 when present (the paper's FPGA LUTs), else the first.
@@ -171,7 +173,11 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
   rows_.erase(std::remove_if(rows_.begin(), rows_.end(),
                              [&](const SynthRow& r) { return r.target != target_; }),
               rows_.end());
-  // Calibrate the estimate to the synthesized default improved unit.
+  calibrate();
+}
+
+// Scales the estimate to the synthesized default improved unit, when synthesis has it.
+void AreaModel::calibrate() {
   const RasterConfig def;
   if (const SynthRow* d = find("improved", def)) {
     const AreaTerms t = improved_area_terms(def);
@@ -183,30 +189,64 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
 const SynthRow* AreaModel::find(const std::string& unit, const RasterConfig& cfg) const {
   for (const SynthRow& r : rows_)
     if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
-        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits)
+        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
+        r.endpoints == cfg.endpoints)
       return &r;
   return nullptr;
+}
+
+void AreaModel::add_rows(const std::vector<SynthRow>& rows) {
+  for (const SynthRow& r : rows) {
+    if (r.fmax_mhz > 0) fmax_rows_.push_back(r);
+    if (r.target != target_ && !(target_.empty() && r.target == "xilinx7")) continue;
+    if (target_.empty()) target_ = r.target;
+    auto same = [&](const SynthRow& o) {
+      return o.unit == r.unit && o.subpixel_bits == r.subpixel_bits &&
+             o.coord_bits == r.coord_bits && o.box_bits == r.box_bits &&
+             o.endpoints == r.endpoints;
+    };
+    rows_.erase(std::remove_if(rows_.begin(), rows_.end(), same), rows_.end());
+    rows_.push_back(r);
+    rows_.back().from_run = true;
+  }
+  calibrate();
+}
+
+Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
+  Area a;
+  if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;
+  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
+  a.luts = std::round(t.luts * lut_scale_);
+  a.ffs = std::round(t.ffs * ff_scale_);
+  a.source = "estimate";
+  return a;
+}
+
+double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
+  for (const SynthRow& r : fmax_rows_)
+    if (r.unit == unit_kind_name(kind) && r.subpixel_bits == cfg.subpixel_bits &&
+        r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
+        r.endpoints == cfg.endpoints)
+      return r.fmax_mhz;
+  return 0;
 }
 
 Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
   if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;  // no hardware
-  const RasterConfig synth_like;  // what synthesis fixes: N = 1, FIFO 8, no truncation
-  const bool fixed_match = cfg.endpoints == synth_like.endpoints &&
-                           cfg.fifo_depth == synth_like.fifo_depth &&
+  const RasterConfig synth_like;  // what synthesis fixes: FIFO 8, no truncation (N: the row's)
+  const bool fixed_match = cfg.fifo_depth == synth_like.fifo_depth &&
                            (kind == UnitKind::Trad || cfg.divider_quotient_bits == 0);
   if (fixed_match)
     if (const SynthRow* r = find(unit_kind_name(kind), cfg)) {
       a.luts = r->luts;
       a.ffs = r->ffs;
       a.source = "synth:" + r->target;
+      a.origin = r->origin;
+      a.from_run = r->from_run;
       return a;
     }
-  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
-  a.luts = std::round(t.luts * lut_scale_);
-  a.ffs = std::round(t.ffs * ff_scale_);
-  a.source = "estimate";
-  return a;
+  return estimate(kind, cfg);
 }
 
 std::string AreaModel::formula_text() const {

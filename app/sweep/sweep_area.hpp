@@ -16,6 +16,8 @@ struct Area {
   double luts = 0;
   double ffs = 0;
   std::string source;  // "synth:TARGET" | "estimate" | "" (no hardware: CPU baselines)
+  std::string origin;  // synthesized: the file it was read from (docs/synth.csv or a run's .synth)
+  bool from_run = false;  // synthesized by the distributed run's own synthesis jobs (add_rows)
   bool estimate() const { return source == "estimate"; }
   bool known() const { return !source.empty(); }
 };
@@ -26,6 +28,10 @@ struct SynthRow {
   double luts = 0, ffs = 0;
   // The configuration's widths, from the config name (see AreaModel::config_widths).
   int subpixel_bits = -1, coord_bits = -1, box_bits = -1;
+  int endpoints = 1;     // NumEndpoints of the synthesized unit (docs/synth.csv: 1)
+  double fmax_mhz = 0;   // iCE40 place and route of the same configuration, 0 when none
+  std::string origin;    // the file it was read from
+  bool from_run = false;  // added by AreaModel::add_rows (a distributed run's synthesis job)
 };
 
 // The raw width formula (before calibration), for the report.
@@ -46,6 +52,16 @@ class AreaModel {
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL).
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
+  // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a
+  // row replaces one of docs/synth.csv for the same unit, widths and endpoints (and, for the
+  // default improved unit, recalibrates the estimate to it: the RTL of this run). Rows of another
+  // target than target() (or of "ice40-pnr", which carries Fmax only) give only their Fmax.
+  void add_rows(const std::vector<SynthRow>& rows);
+  // The width formula, scaled, whatever synthesis covers (to report its error against synthesis).
+  Area estimate(UnitKind kind, const RasterConfig& cfg) const;
+  // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
+  double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
+
   bool have_synth() const { return !rows_.empty(); }
   const std::vector<SynthRow>& rows() const { return rows_; }
   const std::string& target() const { return target_; }  // the target used ("" when none)
@@ -57,7 +73,8 @@ class AreaModel {
 
  private:
   const SynthRow* find(const std::string& unit, const RasterConfig& cfg) const;
-  std::vector<SynthRow> rows_;
+  void calibrate();
+  std::vector<SynthRow> rows_, fmax_rows_;
   std::string target_;
   double lut_scale_ = 1, ff_scale_ = 1;
 };

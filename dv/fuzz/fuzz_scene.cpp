@@ -398,7 +398,31 @@ std::string config_options(const RasterConfig& cfg) {
          std::to_string(cfg.coord_int_bits) + " --box-bits " + std::to_string(cfg.box_bits) +
          " --boundary " + boundary_mode_name(cfg.boundary) + " --cull " + cull_mode_name(cfg.cull) +
          " --endpoints " + std::to_string(cfg.endpoints) + " --fifo-depth " +
-         std::to_string(cfg.fifo_depth) + " --sink-stall " + cfg.sink_stall;
+         std::to_string(cfg.fifo_depth) + " --sink-stall " + cfg.sink_stall + hs_options(cfg);
+}
+
+std::string hs_options(const RasterConfig& cfg) {
+  const RasterConfig d;
+  if (cfg.hs_stamp == d.hs_stamp && cfg.hs_tile == d.hs_tile && cfg.hs_walk == d.hs_walk)
+    return "";
+  return " --stamp " + std::to_string(cfg.hs_stamp) + " --tile " +
+         (cfg.hs_tile ? std::to_string(cfg.hs_tile) : std::string("none")) + " --hs-walk " +
+         hs_walk_name(cfg.hs_walk);
+}
+
+void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<HsParams>& among) {
+  if (!among.empty()) {
+    const HsParams& c = among[d.below(among.size())];
+    cfg.hs_stamp = c.stamp;
+    cfg.hs_tile = c.tile;
+    cfg.hs_walk = c.walk;
+  } else {
+    static const int stamps[] = {1, 2, 4}, tiles[] = {0, 8, 16};
+    cfg.hs_stamp = stamps[d.below(3)];
+    cfg.hs_tile = tiles[d.below(3)];
+    cfg.hs_walk = d.chance(50) ? HsWalk::Zigzag : HsWalk::Row;
+  }
+  cfg.validate();
 }
 
 RasterConfig parse_config_options(const std::string& options) {
@@ -429,6 +453,9 @@ RasterConfig parse_config_options(const std::string& options) {
     else if (key == "--endpoints") cfg.endpoints = to_int(key, value);
     else if (key == "--fifo-depth") cfg.fifo_depth = to_int(key, value);
     else if (key == "--sink-stall") cfg.sink_stall = value;
+    else if (key == "--stamp") cfg.hs_stamp = to_int(key, value);
+    else if (key == "--tile") cfg.hs_tile = value == "none" ? 0 : to_int(key, value);
+    else if (key == "--hs-walk") cfg.hs_walk = parse_hs_walk(value);
     else throw std::invalid_argument("unknown option '" + key + "'");
   }
   cfg.validate();
@@ -517,8 +544,16 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 
 // ---- reproducers --------------------------------------------------------------------------------
 
+std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
+                           const std::string& scene_path) {
+  std::string list;
+  for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
+  return "trirast compare --scene " + scene_path + " --engines " + list + " " + config_options(cfg);
+}
+
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
-                              const std::vector<std::string>& engines, const std::string& note) {
+                              const std::vector<std::string>& engines, const std::string& note,
+                              const std::string& scene_path) {
   std::string list;
   for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
   std::string text = "# trirast fuzz reproducer\n# engines: " + list + "\n";
@@ -526,8 +561,7 @@ std::string format_reproducer(const std::vector<InputTriangle>& tris, const Rast
   std::string line;
   while (std::getline(notes, line)) text += "# " + line + "\n";
   text += "# config: " + config_options(cfg) + "\n";
-  text += "# replay: trirast compare --scene THIS_FILE --engines " + list + " " +
-          config_options(cfg) + "\n";
+  text += "# replay: " + replay_command(cfg, engines, scene_path) + "\n";
   char buf[256];
   for (const InputTriangle& t : tris) {
     // %.17g reads back bit for bit; grid values print short and exact (k / 2^(S+1)).

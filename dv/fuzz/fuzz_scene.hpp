@@ -1,9 +1,10 @@
-// Differential fuzzing (issue 7): random configurations and triangles biased toward the classes of
-// hard-cases.md, a checker that runs engines against the golden, and the .tri reproducer format.
+// Differential fuzzing: random configurations and triangles biased toward the classes of
+// docs/hard-cases.md, a checker that runs engines against the golden, and the .tri reproducer
+// format.
 //
 // One generator serves two masters through FuzzDraws: `trirast fuzz` draws from a seeded PRNG,
-// the libFuzzer target (dv/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same classes
-// and a byte string the fuzzer mutates maps to a small, local change of the scene.
+// the libFuzzer target (dv/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same
+// classes and a byte string the fuzzer mutates maps to a small, local change of the scene.
 //
 // Depends only on model/core and model/golden, so the libFuzzer build (clang, separate build
 // directory) can compile it without the rest of dv/ and app/.
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "core/config.hpp"
+#include "unit/halfspace_setup.hpp"
 #include "core/engine.hpp"
 #include "core/setup.hpp"
 #include "scene/rng.hpp"
@@ -58,7 +60,7 @@ class ByteDraws : public FuzzDraws {
   size_t pos_ = 0;
 };
 
-// The triangle classes of hard-cases.md the generator draws from.
+// The triangle classes of docs/hard-cases.md the generator draws from.
 enum class FuzzClass {
   Lattice,         // vertices on pixel centres and pixel corners (cases 2, 3, 4, 5)
   NearCentre,      // pixel centres offset by 0..2 subpixels (cases 2, 3, 10)
@@ -93,8 +95,16 @@ InputTriangle draw_fuzz_triangle(FuzzDraws& d, const RasterConfig& cfg);
 // class, tiny after huge, so pipelined engines see every kind of neighbour.
 std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris);
 
-// The command-line options that reproduce `cfg` with `trirast compare` / `raster`.
+// The half-space unit's build parameters (--stamp, --tile, --hs-walk), drawn after the scene (so
+// a seed's scenes stay those it drew before these existed): uniformly among `among` (e.g. the
+// Verilated builds of halfspace-rtl at cfg's widths, so that engine runs every scene it can), or
+// among all 18 when it is empty.
+void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<HsParams>& among);
+
+// The command-line options that reproduce `cfg` with `trirast compare` / `raster` (the half-space
+// options only when they are not the defaults: hs_options()).
 std::string config_options(const RasterConfig& cfg);
+std::string hs_options(const RasterConfig& cfg);
 // Parses what config_options() writes (and any subset of it); throws std::invalid_argument.
 RasterConfig parse_config_options(const std::string& options);
 
@@ -125,9 +135,15 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 
 // The reproducer file: a '#' header naming the engines, the configuration (a "# config:" line
 // that parse_reproducer_config reads back), the command that replays it and `note`, then one
-// triangle per line with coordinates printed so that they read back bit for bit.
+// triangle per line with coordinates printed so that they read back bit for bit. The replay
+// command names the file `scene_path` (trirast fuzz: the path it writes, so the line runs as
+// written from the fuzz run's folder; the libFuzzer target: THIS_FILE, its crash file's name).
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
-                              const std::vector<std::string>& engines, const std::string& note);
+                              const std::vector<std::string>& engines, const std::string& note,
+                              const std::string& scene_path = "THIS_FILE");
+// The replay command of a reproducer: trirast compare on scene_path with its engines and options.
+std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
+                           const std::string& scene_path);
 // The configuration of a reproducer's "# config:" line (defaults when there is none).
 RasterConfig parse_reproducer_config(const std::string& text);
 

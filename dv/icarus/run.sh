@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs the Icarus testbench dv/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
-#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace]
-# (halfspace: the half-space unit, rtl/trirast_halfspace.f at trirast_hs_top's defaults, against
-# the halfspace-rtl engine's vectors)
+#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK]]
+# (halfspace: the half-space unit, rtl/trirast_halfspace.f, at StampSize STAMP, TileSize TILE
+# (0: none), walk row | zigzag (default 2:8:zigzag, trirast_hs_top's defaults), against the
+# halfspace-rtl engine's vectors of the same build parameters)
 # For each scene, trirast_rtl_vectors writes the set-up triangles and the Verilated model's spans
 # and cycles; Icarus runs the RTL at its default parameters (NumEndpoints = 1, FifoDepth = 8)
 # and must agree span for span and cycle for cycle. Exit status 0 only if every scene passes.
@@ -14,10 +15,18 @@ UNIT="${3:-}"
 mkdir -p "$WORK"
 LIST=trirast_improved.f
 DEFINES=""
-if [ "$UNIT" = halfspace ]; then
-  LIST=trirast_halfspace.f
-  DEFINES="-DTRIRAST_TB_HALFSPACE"
-fi
+case "$UNIT" in
+  "") ;;
+  halfspace|halfspace:*)
+    IFS=: read -r _ stamp tile walk _rest <<< "$UNIT:::"
+    stamp=${stamp:-2}; tile=${tile:-8}; walk=${walk:-zigzag}
+    case "$walk" in zigzag) zig=1 ;; row) zig=0 ;; *) echo "run.sh: walk '$walk' is not row or zigzag" >&2; exit 2 ;; esac
+    UNIT="halfspace:$stamp:$tile:$walk"
+    LIST=trirast_halfspace.f
+    DEFINES="-DTRIRAST_TB_HALFSPACE -Ptb_trirast.HsStamp=$stamp -Ptb_trirast.HsTile=$tile -Ptb_trirast.HsZigzag=$zig"
+    ;;
+  *) echo "run.sh: unit '$UNIT' is not halfspace[:STAMP:TILE:WALK]" >&2; exit 2 ;;
+esac
 # The unit's file list (rtl/*.f: one path a line, relative to rtl/).
 SOURCES="$(sed 's#//.*##' "$ROOT/rtl/$LIST" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}')
   $ROOT/dv/icarus/tb_trirast.sv"

@@ -20,6 +20,8 @@ struct RefTriangle {
   uint64_t setup_cycles = 0;         // cycles from accept to the first StHold cycle (3 + L, trad 3)
   std::vector<uint64_t> row_cost;    // cycles of each row (improved: 1)
   std::vector<uint64_t> row_pixels;  // pixels of each row's span, 0 = no span
+  // Passed through to the stage breakdown (the unit model's counts, not timing).
+  uint64_t divider_iterations = 0, boundary_steps = 0, box_width = 0, box_height = 0;
 };
 
 // rows_per_group: N for the improved unit (each group costs one cycle, row_cost all 1); 1 for the
@@ -30,7 +32,13 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
                                                     uint64_t rows_per_group, uint64_t depth,
                                                     const SinkPattern& sink) {
   std::vector<TriangleCycles> out(tris.size());
-  for (size_t i = 0; i < tris.size(); ++i) out[i] = TriangleCycles{tris[i].tri, 0, 0, 0, 0, 0, 0};
+  for (size_t i = 0; i < tris.size(); ++i) {
+    out[i] = TriangleCycles{tris[i].tri, 0, 0, 0, 0, 0, 0};
+    out[i].divider_iterations = tris[i].divider_iterations;
+    out[i].boundary_steps = tris[i].boundary_steps;
+    out[i].box_width = tris[i].box_width;
+    out[i].box_height = tris[i].box_height;
+  }
   struct Entry {
     size_t tri;
   };
@@ -76,6 +84,7 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
         }
         if (w_left == 0 && w_row == t.row_cost.size()) {
           walking = false;  // idle from c + 1
+          out[w_tri].walk_end_cycle = c;
           if (!w_spans && pushes.empty()) {
             out[w_tri].first_span_cycle = out[w_tri].done_cycle = c;
             ++done_count;
@@ -91,10 +100,14 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
       if (next < tris.size()) {
         st_tri = next++;
         out[st_tri].accept_cycle = c;
+        out[st_tri].setup_start_cycle = c + 1;
         st_empty = tris[st_tri].retire_in_setup;
         st = Busy;
         st_until = st_empty ? c + 2 : c + tris[st_tri].setup_cycles;
+        out[st_tri].setup_done_cycle = st_empty ? c + 1 : st_until;
         if (st_empty) {
+          TriangleCycles& o = out[st_tri];
+          o.handoff_cycle = o.walk_start_cycle = o.walk_end_cycle = c + 1;
           out[st_tri].first_span_cycle = out[st_tri].done_cycle = c + 1;
           ++done_count;
         }
@@ -125,6 +138,8 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
     }
     for (size_t t : pushes) fifo.push_back(Entry{t});
     if (load) {
+      out[load_tri].handoff_cycle = c;
+      out[load_tri].walk_start_cycle = c + 1;
       walking = true;
       w_tri = load_tri;
       w_row = 0;

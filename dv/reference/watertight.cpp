@@ -3,88 +3,79 @@
 #include <algorithm>
 #include <map>
 #include <utility>
+#include <vector>
 
-namespace trirast::test {
-
-namespace {
-
-using Key = std::pair<std::pair<int64_t, int64_t>, std::pair<int64_t, int64_t>>;
-
-Key edge_key(const Vec2i& a, const Vec2i& b) {
-  auto pa = std::make_pair(a.x, a.y), pb = std::make_pair(b.x, b.y);
-  return pa < pb ? Key{pa, pb} : Key{pb, pa};
-}
-
-// Closed-segment test for a point known to be on the line through a and b.
-bool within_segment(const Vec2i& a, const Vec2i& b, int64_t x, int64_t y) {
-  return x >= std::min(a.x, b.x) && x <= std::max(a.x, b.x) && y >= std::min(a.y, b.y) &&
-         y <= std::max(a.y, b.y);
-}
-
-}  // namespace
+namespace trirast {
 
 WatertightResult check_watertight(const SetupResult& setup, const SpanList& spans,
                                   const RasterConfig& cfg) {
   WatertightResult r;
-  std::vector<uint8_t> count(size_t(cfg.width) * cfg.height, 0);
-  for (const Span& s : spans)
-    for (int32_t x = s.x_begin; x < s.x_end; ++x) {
-      uint8_t& c = count[size_t(s.y) * cfg.width + x];
+  const size_t W = size_t(cfg.width), H = size_t(cfg.height);
+  std::vector<uint8_t> count(W * H, 0);
+  for (const Span& s : spans) {
+    if (s.y < 0 || size_t(s.y) >= H) continue;
+    for (int32_t x = std::max(s.x_begin, 0); x < s.x_end && size_t(x) < W; ++x) {
+      uint8_t& c = count[size_t(s.y) * W + size_t(x)];
       if (c < 255) ++c;
     }
-  // Outer boundary: edges used by exactly one triangle.
-  std::map<Key, int> uses;
-  for (const TriangleSetup& t : setup.tris)
-    for (int i = 0; i < 3; ++i) ++uses[edge_key(t.v[i], t.v[(i + 1) % 3])];
-  std::vector<std::pair<Vec2i, Vec2i>> boundary;
-  for (const auto& kv : uses)
-    if (kv.second == 1)
-      boundary.push_back({Vec2i{kv.first.first.first, kv.first.first.second},
-                          Vec2i{kv.first.second.first, kv.first.second.second}});
-  // A centre on any outer boundary edge (not only the edges of the triangle being scanned: a
-  // vertex of an interior triangle can sit on the outline) may stay uncovered.
-  auto on_outline = [&](int64_t x, int64_t y) {
-    for (const auto& [a, b] : boundary) {
-      const int64_t cross = (b.x - a.x) * (y - a.y) - (b.y - a.y) * (x - a.x);
-      if (cross == 0 && within_segment(a, b, x, y)) return true;
+  }
+  for (size_t at = 0; at < count.size(); ++at) {
+    if (count[at] >= 1) ++r.covered;
+    if (count[at] > 1) {
+      ++r.doubles;
+      if (r.first_problem.empty())
+        r.first_problem = "pixel (" + std::to_string(at % W) + "," + std::to_string(at / W) +
+                          ") covered " + std::to_string(count[at]) + " times";
     }
-    return false;
+  }
+  // The outline: edges used by exactly one triangle (by their snapped end points).
+  using Point = std::pair<int64_t, int64_t>;
+  auto key = [](const Vec2i& a, const Vec2i& b) {
+    Point pa{a.x, a.y}, pb{b.x, b.y};
+    return pa < pb ? std::make_pair(pa, pb) : std::make_pair(pb, pa);
   };
-
-  for (int32_t py = 0; py < cfg.height; ++py)
-    for (int32_t px = 0; px < cfg.width; ++px) {
-      const uint8_t c = count[size_t(py) * cfg.width + px];
-      if (c >= 1) ++r.covered;
-      if (c > 1) {
-        ++r.doubled;
-        if (r.first_problem.empty())
-          r.first_problem = "pixel (" + std::to_string(px) + "," + std::to_string(py) +
-                            ") covered " + std::to_string(c) + " times";
-      }
+  std::map<std::pair<Point, Point>, int> uses;
+  for (const TriangleSetup& t : setup.tris)
+    for (int i = 0; i < 3; ++i) ++uses[key(t.v[i], t.v[(i + 1) % 3])];
+  // Pixels whose centre lies on an outline edge may stay uncovered (the rule leaves one side).
+  // Such a centre is in the box of the edge's triangle, so scanning that box finds every one,
+  // including a vertex of an inner triangle that sits on the outline.
+  std::vector<uint8_t> outline(W * H, 0);
+  for (const TriangleSetup& t : setup.tris) {
+    if (t.box.empty()) continue;
+    for (int i = 0; i < 3; ++i) {
+      const Vec2i a = t.v[i], b = t.v[(i + 1) % 3];
+      if (uses[key(a, b)] != 1) continue;
+      const EdgeSetup& e = t.edge[i];
+      for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
+        for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
+          const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
+          if (e.eval(cx, cy) != 0) continue;
+          if (cx < std::min(a.x, b.x) || cx > std::max(a.x, b.x) || cy < std::min(a.y, b.y) ||
+              cy > std::max(a.y, b.y))
+            continue;
+          outline[size_t(py) * W + size_t(px)] = 1;
+        }
     }
-  // Holes: scan each triangle's box for uncovered centres that are inside or on it.
+  }
+  // Cracks: uncovered centres inside or on a triangle, off the outline; each counted once.
   for (const TriangleSetup& t : setup.tris) {
     if (t.box.empty()) continue;
     for (int32_t py = t.box.y0; py <= t.box.y1; ++py)
       for (int32_t px = t.box.x0; px <= t.box.x1; ++px) {
-        if (count[size_t(py) * cfg.width + px] != 0) continue;
+        const size_t at = size_t(py) * W + size_t(px);
+        if (count[at] != 0 || outline[at]) continue;
         const int64_t cx = pixel_centre(px, cfg), cy = pixel_centre(py, cfg);
-        int64_t e[3];
-        bool closed_inside = true;
-        for (int i = 0; i < 3; ++i) {
-          e[i] = t.edge[i].eval(cx, cy);
-          closed_inside = closed_inside && e[i] >= 0;
-        }
-        if (!closed_inside) continue;
-        if (on_outline(cx, cy)) continue;
-        ++r.holes;
-        count[size_t(py) * cfg.width + px] = 255;  // count each hole once
+        if (t.edge[0].eval(cx, cy) < 0 || t.edge[1].eval(cx, cy) < 0 || t.edge[2].eval(cx, cy) < 0)
+          continue;
+        ++r.cracks;
+        count[at] = 255;
         if (r.first_problem.empty())
-          r.first_problem = "hole at pixel (" + std::to_string(px) + "," + std::to_string(py) +
+          r.first_problem = "crack at pixel (" + std::to_string(px) + "," + std::to_string(py) +
                             ") inside triangle " + std::to_string(t.index);
       }
   }
   return r;
 }
 
-}  // namespace trirast::test
+}  // namespace trirast

@@ -9,6 +9,16 @@
 //   bool early_retire(const Top&, size_t& tag)    a triangle leaving before the walk stage in this
 //                                                 cycle (no spans: a box outside the viewport,
 //                                                 a collinear triangle), and its tag
+//   void count(const Top&, ModuleCycles&)         its modules' busy and stall cycles of this cycle
+//                                                 (the model's names, docs/sc-model.md)
+//   void add_counters(const ModuleCycles&, work)  them as busy_cycles.* / stall_cycles.*
+//   void observe_setup(const Top&, TriangleCycles&)   every cycle a triangle is in the setup
+//                                                 stage: its lanes' divider and boundary work
+//   void observe_handoff(const Top&, TriangleCycles&) in its hand-off cycle: its box size
+//
+// The stage breakdown (docs/timing.md, "Outputs") comes from the observation outputs both tops
+// have: setup_state_o (its first non-idle cycle, its first StHold cycle), handoff_o, and the walk
+// stage's walk_busy_o / walk_last_o with walk_tag_o.
 //
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
 // applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
@@ -21,17 +31,28 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/engine.hpp"
 #include "core/sink_pattern.hpp"
 #include "harness_util.hpp"
+#include "rtl_gtkw.hpp"
 
 namespace trirast {
 namespace rtl {
+
+// Busy and stall cycles of the RTL's modules, counted from the observation signals every cycle
+// (the unit's count()); the span FIFO's and the sink's are the loop's own.
+struct ModuleCycles {
+  uint64_t busy[16] = {}, stall[16] = {};
+};
+// Slots of ModuleCycles the loop fills itself.
+enum : int { kModSpanFifo = 14, kModSpanSink = 15 };
 
 struct CycleCounts {
   uint64_t walk_stalls = 0;        // cycles the walk stage waited for FIFO room
@@ -41,6 +62,11 @@ struct CycleCounts {
 // Runs every set-up triangle through a fresh instance of Top (named top_name in the trace) and
 // fills out.spans, out.cycles, out.total_cycles and the work counters triangles, spans, pixels,
 // walk_stall_cycles, total_cycles and rtl_x_seed. `engine` names the engine in errors.
+template <class Unit, class = void>
+struct has_watchdog : std::false_type {};
+template <class Unit>
+struct has_watchdog<Unit, std::void_t<decltype(Unit::kWatchdogCycles)>> : std::true_type {};
+
 template <class Top, class Unit>
 CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        const char* engine, const char* top_name, Unit& unit, EngineResult& out) {
@@ -57,17 +83,29 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
 
   // ---- the model ----
   auto ctx = std::make_unique<VerilatedContext>();
-  ctx->randReset(2);  // --x-initial unique: random initial values from the seed below
-  ctx->randSeed(int(x_seed));
   const bool tracing = !cfg.trace_path.empty();
+  // --x-initial unique: random initial values from the seed below. A traced run without
+  // TRIRAST_RTL_SEED fills them with zeros instead (Verilator is two-state: an X cannot be
+  // shown, and zeros read as "not loaded yet" where random numbers look like data); it reports
+  // work rtl_x_zero_fill = 1. The results do not depend on the fill (tests/rtl: seeds agree).
+  const bool zero_fill = tracing && !std::getenv("TRIRAST_RTL_SEED");
+  ctx->randReset(zero_fill ? 0 : 2);
+  ctx->randSeed(int(x_seed));
   if (tracing) ctx->traceEverOn(true);
   auto top = std::make_unique<Top>(ctx.get(), top_name);
   std::unique_ptr<VerilatedFstC> fst;
   std::string fst_path;
+  RecordingTemporaries recording;  // removed unless finish_trace() moved them to the trace
   if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
+    // The model's time base: cycle c from c ns (the rising edge that starts it) to c + 1 ns. The
+    // recording counts in 100 ps: registers change at 10c (clock high), the harness drives the
+    // inputs at 10c + 5 (clock low), where every signal has its cycle-c value.
+    fst->set_time_unit("1ns");
+    fst->set_time_resolution("100ps");
     top->trace(fst.get(), 99);
     fst_path = fst_recording_path(cfg.trace_path);
+    recording.track(fst_path);
   }
   // The trace window: setup positions of triangles trace_first..trace_last (scene indices).
   size_t win_a = n, win_b = 0;
@@ -79,6 +117,12 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
   }
   bool trace_open = false, trace_over = false;
+  uint64_t trace_start = 0, trace_end = 0;  // the recording's first and last dump time
+  auto dump = [&](uint64_t t) {
+    if (!trace_open) return;
+    trace_end = t;
+    fst->dump(t);
+  };
 
   // ---- configuration and reset ----
   top->cfg_vp_xmax_i = uint32_t(cfg.width - 1);
@@ -118,14 +162,24 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   };
 
   CycleCounts counts;
+  ModuleCycles mods;
   size_t next = 0;  // the triangle on the port
+  // The triangle in the setup stage (from its accept to its hand-off or early retirement; n:
+  // none), whether its first non-idle and first StHold cycles were seen, and the triangle whose
+  // walk the walk stage reported last.
+  size_t in_setup = n, walk_seen = n;
+  bool setup_started = false, setup_held = false;
+  constexpr unsigned kStHold = 4;  // setup_state_o of StHold in both tops
   offer(next);
   uint64_t last_progress = 0;
   // Cycles without a handshake, a retirement or a triangle's last group or row. A triangle walks
   // at most 2^c rows (c = CoordIntBits), each in a bounded number of cycles, well under 2^22;
   // its stalls wait for pops, which are handshakes. A walk stage that never ends its triangle, or
-  // a sink pattern that never lets spans out, trips this.
-  const uint64_t watchdog = uint64_t(1) << 22;
+  // a sink pattern that never lets spans out, trips this. A unit whose walk may go longer
+  // without a span (the half-space unit tests every unit of a box, up to 2^(2 box_bits)) says so
+  // with `static constexpr uint64_t kWatchdogCycles`.
+  uint64_t watchdog = uint64_t(1) << 22;
+  if constexpr (has_watchdog<Unit>::value) watchdog = std::max(watchdog, Unit::kWatchdogCycles);
   uint64_t c = 0;
   for (;; ++c) {
     top->span_ready_i = sink.ready(c);
@@ -138,9 +192,29 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     if (tracing && !trace_open && !trace_over && next >= win_a && win_a < n) {
       fst->open(fst_path.c_str());
       trace_open = true;
+      trace_start = 10 * c + 5;
     }
 
     bool progress = false;
+    // The setup stage's triangle (accepted in an earlier cycle).
+    if (in_setup < n) {
+      TriangleCycles& tc = out.cycles[in_setup];
+      const unsigned state = unsigned(top->setup_state_o);
+      if (state != 0 && !setup_started) {
+        tc.setup_start_cycle = c;
+        setup_started = true;
+      }
+      if (state == kStHold && !setup_held) {
+        tc.setup_done_cycle = c;
+        setup_held = true;
+      }
+      unit.observe_setup(*top, tc);
+      if (top->handoff_o) {
+        tc.handoff_cycle = c;
+        unit.observe_handoff(*top, tc);
+        in_setup = n;
+      }
+    }
     const bool accept = top->tri_valid_i && top->tri_ready_o;
     if (accept) {
       out.cycles[next].accept_cycle = c;
@@ -149,17 +223,34 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     size_t retired = 0;
     if (unit.early_retire(*top, retired)) {
       const size_t p = known(retired, "early retirement");
-      out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;
+      TriangleCycles& tc = out.cycles[p];
+      tc.first_span_cycle = tc.done_cycle = c;
+      tc.setup_done_cycle = tc.handoff_cycle = tc.walk_start_cycle = tc.walk_end_cycle = c;
+      if (p == in_setup) in_setup = n;
       walked[p] = done[p] = 1;
       ++counts.early_retirements;
       progress = true;
+    }
+    if (accept) {
+      in_setup = next;
+      setup_started = setup_held = false;
+    }
+    if (top->walk_busy_o && top->walk_tag_o != walk_seen) {
+      walk_seen = known(top->walk_tag_o, "walk");
+      out.cycles[walk_seen].walk_start_cycle = c;
     }
     if (top->walk_stall_o) {
       ++out.cycles[known(top->walk_tag_o, "walk stall")].stall_cycles;
       ++counts.walk_stalls;
     }
+    unit.count(*top, mods);
+    if (top->span_valid_o) {
+      ++mods.busy[kModSpanFifo];
+      ++(top->span_ready_i ? mods.busy : mods.stall)[kModSpanSink];
+    }
     if (top->walk_last_o) {
       const size_t p = known(top->walk_tag_o, "last walk step");
+      out.cycles[p].walk_end_cycle = c;
       walked[p] = 1;
       if (top->walk_retire_o) {
         out.cycles[p].first_span_cycle = out.cycles[p].done_cycle = c;
@@ -185,11 +276,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
                                " cycles at cycle " + std::to_string(c) +
                                " (does --sink-stall ever let spans out?)");
 
-    // Rising edge c.
-    if (trace_open) fst->dump(2 * c);
+    // Rising edge c (at (c + 1) ns in the trace).
+    dump(10 * c + 5);
     top->clk_i = 1;
     top->eval();
-    if (trace_open) fst->dump(2 * c + 1);
+    dump(10 * (c + 1));
     top->clk_i = 0;
     if (accept) offer(++next);
 
@@ -199,7 +290,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
       top->eval();
       const bool drained = !top->span_valid_o || top->span_tag_o > win_b;
       if (done[win_b] || drained) {
-        fst->dump(2 * c + 2);
+        dump(10 * (c + 1) + 5);
         fst->close();
         trace_open = false;
         trace_over = true;
@@ -207,7 +298,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     }
   }
   if (trace_open) {
-    fst->dump(2 * c);
+    dump(10 * c + 5);
     fst->close();
   }
   if (tracing && !trace_over && !trace_open && win_a >= n) {
@@ -215,7 +306,16 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     fst->close();
   }
   top->final();
-  if (tracing) finish_trace(fst_path, cfg.trace_path, engine);
+  if (tracing) {
+    const bool trad = std::string(top_name) == "trirast_trad_top";
+    const StateNames setup_states =
+        trad ? StateNames{{0, "StIdle"}, {1, "StSort"}, {2, "StLine"}, {4, "StHold"}}
+             : StateNames{{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {3, "StLanes"}, {4, "StHold"}};
+    write_rtl_gtkw(fst_path, cfg.trace_path, trace_start, std::max(trace_end, trace_start + 10),
+                   setup_states);
+    finish_trace(fst_path, cfg.trace_path, engine);
+    if (zero_fill) out.work["rtl_x_zero_fill"] = 1;
+  }
 
   uint64_t total = 0, spans = 0, pixels = 0;
   for (const TriangleCycles& tc : out.cycles) {
@@ -230,6 +330,10 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   out.work["walk_stall_cycles"] += counts.walk_stalls;
   out.work["total_cycles"] = out.total_cycles;
   out.work["rtl_x_seed"] = x_seed;
+  unit.add_counters(mods, out.work);
+  out.work["busy_cycles.span_fifo"] += mods.busy[kModSpanFifo];
+  out.work["busy_cycles.span_sink"] += mods.busy[kModSpanSink];
+  out.work["stall_cycles.span_sink"] += mods.stall[kModSpanSink];
   return counts;
 }
 

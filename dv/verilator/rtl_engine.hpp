@@ -10,7 +10,7 @@
 
 namespace trirast {
 
-// The engine registered as "rtl".
+// The engine registered as "improved-rtl".
 std::unique_ptr<Engine> make_rtl_engine();
 
 namespace rtl {

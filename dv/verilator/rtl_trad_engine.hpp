@@ -11,7 +11,7 @@
 
 namespace trirast {
 
-// The engine registered as "rtl-trad".
+// The engine registered as "trad-rtl".
 std::unique_ptr<Engine> make_rtl_trad_engine();
 
 namespace rtl {

@@ -63,8 +63,8 @@ void RasterConfig::validate() const {
   if (coord_int_bits < 2 || coord_int_bits > 24)
     throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) +
                                 " is outside 2..24");
-  // Edge values need 2p + 2 bits with p = coord_int_bits + frac_bits (raster-rules.md); they are
-  // computed in int64, so p may not exceed 30.
+  // Edge values need 2p + 2 bits with p = coord_int_bits + frac_bits (docs/coverage-rule.md); they
+  // are computed in int64, so p may not exceed 30.
   if (coord_int_bits + frac_bits() > 30)
     throw std::invalid_argument("--coord-bits: " + std::to_string(coord_int_bits) + " with " +
                                 std::to_string(subpixel_bits) +

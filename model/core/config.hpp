@@ -67,7 +67,7 @@ struct RasterConfig {
   int64_t trace_last = -1;          // indices); trace_last < 0: to the end
 
   // Fractional bits used for the arithmetic: S, or 1 when S == 0 so that pixel centres
-  // (px + 0.5) stay integers (raster-rules.md, "S = 0").
+  // (px + 0.5) stay integers (docs/coverage-rule.md, "S = 0").
   int frac_bits() const { return subpixel_bits > 0 ? subpixel_bits : 1; }
   // Multiplier from snapped S-bit vertex values to frac_bits() values (1, or 2 when S == 0).
   int64_t snap_scale() const { return subpixel_bits > 0 ? 1 : 2; }
@@ -77,7 +77,7 @@ struct RasterConfig {
   int64_t half() const { return int64_t(1) << (frac_bits() - 1); }
   // Exclusive bound of |coordinate| in pixels: coordinates lie in [-limit, limit).
   int64_t coord_limit_px() const { return int64_t(1) << (coord_int_bits - 1); }
-  // Signed bits of a vertex coordinate in frac_bits() units (p in raster-rules.md).
+  // Signed bits of a vertex coordinate in frac_bits() units (p in docs/coverage-rule.md).
   int vertex_bits() const { return coord_int_bits + frac_bits(); }
 
   // Throws std::invalid_argument with a message naming the option when out of range.

@@ -23,6 +23,16 @@ struct TriangleCycles {
   uint64_t spans;
   uint64_t pixels;
   uint64_t stall_cycles;
+  // The stage breakdown (docs/timing.md, "Outputs": the columns after stall_cycles).
+  uint64_t setup_start_cycle = 0;   // first cycle the setup stage works on it (accept + 1)
+  uint64_t setup_done_cycle = 0;    // first StHold cycle (retired in setup: its retire cycle)
+  uint64_t handoff_cycle = 0;       // the walk stage loads it (retired in setup: retire cycle)
+  uint64_t walk_start_cycle = 0;    // first StWalk cycle (handoff + 1; retired: retire cycle)
+  uint64_t walk_end_cycle = 0;      // the cycle of its last group or row (retired: retire cycle)
+  uint64_t divider_iterations = 0;  // the three lanes' divider cycles in set-up (trad: 0)
+  uint64_t boundary_steps = 0;      // the three lanes' column steps in set-up (trad: 0)
+  uint64_t box_width = 0;           // the box the unit walks, in pixels (0 when retired in setup)
+  uint64_t box_height = 0;
 };
 
 struct EngineResult {
@@ -45,6 +55,7 @@ struct EngineInfo {
   std::string description;  // one line for --help
   bool exact;               // claims pixel-exact agreement with the golden rule
   std::function<std::unique_ptr<Engine>()> make;
+  bool timed = false;       // reports per-triangle cycles (and can write a trace)
 };
 
 }  // namespace trirast

@@ -1,5 +1,5 @@
 // Fixed-point helpers shared by every engine: mathematical floor/ceil division and width checks.
-// C++ '/' truncates toward zero; the raster rule needs floor and ceil (raster-rules.md).
+// C++ '/' truncates toward zero; the raster rule needs floor and ceil (docs/coverage-rule.md).
 #pragma once
 #include <cstdint>
 #include <stdexcept>

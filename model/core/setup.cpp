@@ -69,6 +69,25 @@ int64_t snap_coordinate(double value, const RasterConfig& cfg, uint32_t tri, int
   return int64_t(scaled) * cfg.snap_scale();
 }
 
+namespace {
+
+// The snapped vertices' extent in subpixel units (the box and the off-screen test start from it).
+struct VertexExtent {
+  int64_t xmin, xmax, ymin, ymax;
+};
+VertexExtent vertex_extent(const TriangleSetup& t) {
+  VertexExtent e{t.v[0].x, t.v[0].x, t.v[0].y, t.v[0].y};
+  for (int k = 1; k < 3; ++k) {
+    e.xmin = std::min(e.xmin, t.v[k].x);
+    e.xmax = std::max(e.xmax, t.v[k].x);
+    e.ymin = std::min(e.ymin, t.v[k].y);
+    e.ymax = std::max(e.ymax, t.v[k].y);
+  }
+  return e;
+}
+
+}  // namespace
+
 bool setup_triangle(const InputTriangle& in, uint32_t index, const RasterConfig& cfg,
                     TriangleSetup& out, const char** why) {
   out.index = index;
@@ -98,15 +117,9 @@ bool setup_triangle(const InputTriangle& in, uint32_t index, const RasterConfig&
   out.area2 = area2;
   for (int i = 0; i < 3; ++i) out.edge[i] = make_edge(out.v[i], out.v[(i + 1) % 3]);
 
-  int64_t xmin = out.v[0].x, xmax = xmin, ymin = out.v[0].y, ymax = ymin;
-  for (int i = 1; i < 3; ++i) {
-    xmin = std::min(xmin, out.v[i].x);
-    xmax = std::max(xmax, out.v[i].x);
-    ymin = std::min(ymin, out.v[i].y);
-    ymax = std::max(ymax, out.v[i].y);
-  }
-  centre_range(xmin, xmax, cfg, cfg.width, out.box.x0, out.box.x1);
-  centre_range(ymin, ymax, cfg, cfg.height, out.box.y0, out.box.y1);
+  const VertexExtent e = vertex_extent(out);
+  centre_range(e.xmin, e.xmax, cfg, cfg.width, out.box.x0, out.box.x1);
+  centre_range(e.ymin, e.ymax, cfg, cfg.height, out.box.y0, out.box.y1);
   if (out.box.x0 > out.box.x1 || out.box.y0 > out.box.y1) out.box = PixelBox{0, 0, -1, -1};
   *why = nullptr;
   return true;
@@ -124,7 +137,12 @@ SetupResult setup_scene(const std::vector<InputTriangle>& tris, const RasterConf
       else ++result.counts.culled;
       continue;
     }
-    if (t.box.empty()) ++result.counts.offscreen;
+    if (t.box.empty()) ++result.counts.no_pixel_centre;
+    // Off screen: the snapped vertex extent does not overlap the viewport [0, W) x [0, H).
+    const auto [xmin, xmax, ymin, ymax] = vertex_extent(t);
+    if (xmax <= 0 || ymax <= 0 || xmin >= int64_t(cfg.width) * cfg.unit() ||
+        ymin >= int64_t(cfg.height) * cfg.unit())
+      ++result.counts.offscreen;
     result.tris.push_back(t);
   }
   result.counts.accepted = result.tris.size();

@@ -53,11 +53,13 @@ struct TriangleSetup {
 };
 
 struct SetupCounts {
-  uint64_t read = 0;        // triangles in the scene
-  uint64_t degenerate = 0;  // area2 == 0 after snapping
-  uint64_t culled = 0;      // removed by --cull
-  uint64_t offscreen = 0;   // no pixel centre inside the clipped bounding box
-  uint64_t accepted = 0;    // handed to the engines (offscreen ones included)
+  uint64_t read = 0;             // triangles handed to setup (a mesh's after near-plane clipping)
+  uint64_t degenerate = 0;       // area2 == 0 after snapping
+  uint64_t culled = 0;           // removed by --cull
+  uint64_t offscreen = 0;        // accepted, and the snapped vertex extent misses the viewport
+  uint64_t no_pixel_centre = 0;  // accepted, and no pixel centre inside the clipped bounding box
+                                 // (tiny triangles on screen and every off-screen one)
+  uint64_t accepted = 0;         // handed to the engines (offscreen ones included)
 };
 
 struct SetupResult {

@@ -1,6 +1,6 @@
 // The golden half-space rasterizer: the truth for coverage. Every other engine is compared with
-// it pixel for pixel. It applies raster-rules.md directly: integer edge functions evaluated at pixel
-// centres, the top-left bias, the clipped bounding box.
+// it pixel for pixel. It applies docs/coverage-rule.md directly: integer edge functions evaluated
+// at pixel centres, the top-left bias, the clipped bounding box.
 //
 // The golden comes in several traversals (docs/golden-performance.md). They differ only in which
 // pixels they look at and how fast; every one decides coverage with the same exact integer test and

@@ -1,6 +1,6 @@
-// The scanline golden traversal: the exact per-row span bounds of raster-rules.md ("The same rule
-// as per-row span bounds"), stepped from row to row by quotient and remainder like the improved
-// Bresenham unit's edge walkers. It never looks at a pixel: O(rows) per triangle.
+// The scanline golden traversal: the exact per-row span bounds of docs/coverage-rule.md ("The same
+// rule as per-row span bounds"), stepped from row to row by quotient and remainder like the
+// improved Bresenham unit's edge walkers. It never looks at a pixel: O(rows) per triangle.
 //
 // For row y with centre cy and K = B*cy + C + bias (u = one pixel, h = half a pixel):
 //   A > 0 (left edge):   x_begin >= ceil((-K - h*A) / (u*A))

@@ -12,6 +12,9 @@ uint64_t HsSetupStageSc::set_up(const TriangleSetup& t, uint64_t a, HsSetupTxn& 
   trace_state(a + 1, StHsBox);
   x.setup = unit_->set_up(t);
   if (x.setup.empty) return kRetired;
+  TriangleCycles& rec = run_->tri(x.pos);
+  rec.box_width = uint64_t(x.setup.Xmax) + 1;
+  rec.box_height = uint64_t(x.setup.Ymax) + 1;
   trace_state(a + 2, StHsEdge);
   return a + 3;
 }

@@ -9,6 +9,8 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 #include <systemc>
 
 #include "sc/stage_skeleton.hpp"
@@ -32,6 +34,9 @@ class HsSetupStageSc : public SetupStageBase<HsSetupTxn> {
 
  private:
   void configure(const RasterConfig& cfg) override;
+  std::vector<std::pair<uint64_t, std::string>> unit_state_names() const override {
+    return {{StHsBox, "StBox"}, {StHsEdge, "StEdge"}};
+  }
   uint64_t set_up(const TriangleSetup& t, uint64_t a, HsSetupTxn& x) override;
   std::unique_ptr<HalfspaceUnit> unit_;
 };

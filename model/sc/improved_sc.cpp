@@ -30,6 +30,13 @@ void SetupStage::configure(const RasterConfig& cfg) {
 void SetupStage::add_unit_trace(VcdRecorder& tr) {
   for (int k = 0; k < 3; ++k)
     sig_lane_busy_[k] = tr.add("setup", "lane" + std::to_string(k) + "_busy", 1, 0);
+  sig_iface_busy_ = tr.add("interface", "busy", 1, 0);
+  for (int k = 0; k < 3; ++k)
+    sig_edge_lane_busy_[k] = tr.add("edge_lane" + std::to_string(k), "busy", 1, 0);
+  // The divider's iterations of the lane's triangle, shown while the lane works: the model knows
+  // their number, not their cycles (they interleave with the boundary steps inside L_k).
+  for (int k = 0; k < 3; ++k)
+    sig_div_iter_[k] = tr.add("adder_divider" + std::to_string(k), "iterations", 16, VcdRecorder::kX);
 }
 
 uint64_t SetupStage::set_up(const TriangleSetup& t, uint64_t a, EdgeSetupTxn& x) {
@@ -39,23 +46,39 @@ uint64_t SetupStage::set_up(const TriangleSetup& t, uint64_t a, EdgeSetupTxn& x)
   x.iface = interface.run(t);
   if (x.iface.empty) {
     ++interface.counters.busy;
+    if (tr) {
+      tr->value(sig_iface_busy_, a + 1, 1);
+      tr->value(sig_iface_busy_, a + 2, 0);
+    }
     return kRetired;
   }
   // a + 2, StEdge: corner values and normalizers; a + 3 on, StLanes: L_k cycles per lane.
   uint64_t L = 0, Lk[3];
+  TriangleCycles& rec = run_->tri(x.pos);
   for (int k = 0; k < 3; ++k) {
     Lk[k] = lane[k]->run(x.iface, k, t.index, x.norm[k], x.walker[k]);
     L = std::max(L, Lk[k]);
+    rec.divider_iterations += x.walker[k].work().divider_iterations;
+    rec.boundary_steps += x.walker[k].work().boundary_steps;
   }
+  rec.box_width = uint64_t(x.iface.Xmax) + 1;
+  rec.box_height = uint64_t(x.iface.Ymax) + 1;
   interface.counters.busy += 2;
   trace_state(a + 2, StEdge);
   trace_state(a + 3, StLanes);
-  if (tr)
+  if (tr) {
+    tr->value(sig_iface_busy_, a + 1, 1);
+    tr->value(sig_iface_busy_, a + 3, 0);
     for (int k = 0; k < 3; ++k)
       if (Lk[k] > 0) {
         tr->value(sig_lane_busy_[k], a + 3, 1);
         tr->value(sig_lane_busy_[k], a + 3 + Lk[k], 0);
+        tr->value(sig_edge_lane_busy_[k], a + 3, 1);
+        tr->value(sig_edge_lane_busy_[k], a + 3 + Lk[k], 0);
+        tr->value(sig_div_iter_[k], a + 3, x.walker[k].work().divider_iterations);
+        tr->value(sig_div_iter_[k], a + 3 + Lk[k], VcdRecorder::kX);
       }
+  }
   // The slowest lane's last cycle ends the set-up: StHold from a + 3 + L.
   return a + 3 + L;
 }
@@ -81,6 +104,12 @@ void WalkStage::configure(const RasterConfig&) {
   any_work_ = false;
 }
 
+void WalkStage::add_unit_trace(VcdRecorder& tr) {
+  for (int k = 0; k < 3; ++k)
+    sig_walker_busy_[k] = tr.add("edge_walker" + std::to_string(k), "busy", 1, 0);
+  sig_gen_busy_ = tr.add("span_generator", "busy", 1, 0);
+}
+
 void WalkStage::end_run() {
   if (any_work_) add_work(work_sum_, run_->out->work);
 }
@@ -95,12 +124,16 @@ void WalkStage::add_counters(std::map<std::string, uint64_t>& work) const {
 uint64_t WalkStage::walk(EdgeSetupTxn& x, uint64_t h) {
   const uint64_t N = uint64_t(run_->cfg.endpoints);
   const InterfaceOut& in_ = x.iface;
+  VcdRecorder* tr = run_->trace;
   TriangleWork work;
   uint64_t t = h + 1, t_last = h;
   int64_t j = 0;
   while (j <= in_.Ymax) {
     // A group of N rows goes when the FIFO held at most DEPTH - N spans at the start of the cycle.
     t = start_row(t, N, uint64_t(j));
+    uint64_t stepped[3] = {0, 0, 0};  // the walkers' rows stepped before this group (trace)
+    if (tr)
+      for (int k = 0; k < 3; ++k) stepped[k] = x.walker[k].work().rows_stepped;
     // The walkers present up to N rows; the span generator makes their spans, pushed in row order.
     for (uint64_t n = 0; n < N && j <= in_.Ymax; ++n, ++j) {
       const WalkerRow bound[3] = {x.walker[0].row(), x.walker[1].row(), x.walker[2].row()};
@@ -116,6 +149,16 @@ uint64_t WalkStage::walk(EdgeSetupTxn& x, uint64_t h) {
     }
     ++counters.busy;
     ++span_generator.counters.busy;
+    if (tr) {
+      // Busy in cycle t; the next group's cycle overrides the 0 in t + 1.
+      tr->value(sig_gen_busy_, t, 1);
+      tr->value(sig_gen_busy_, t + 1, 0);
+      for (int k = 0; k < 3; ++k)
+        if (x.walker[k].work().rows_stepped != stepped[k]) {
+          tr->value(sig_walker_busy_[k], t, 1);
+          tr->value(sig_walker_busy_[k], t + 1, 0);
+        }
+    }
     t_last = t++;
   }
   for (int k = 0; k < 3; ++k) {

@@ -93,8 +93,13 @@ class SetupStage : public SetupStageBase<EdgeSetupTxn> {
  private:
   void configure(const RasterConfig& cfg) override;
   void add_unit_trace(VcdRecorder& tr) override;
+  std::vector<std::pair<uint64_t, std::string>> unit_state_names() const override {
+    return {{StBox, "StBox"}, {StEdge, "StEdge"}, {StLanes, "StLanes"}};
+  }
   uint64_t set_up(const TriangleSetup& t, uint64_t a, EdgeSetupTxn& x) override;
   int sig_lane_busy_[3] = {-1, -1, -1};
+  // Scopes interface, edge_lane0..2, adder_divider0..2 (the statistics table's modules).
+  int sig_iface_busy_ = -1, sig_edge_lane_busy_[3] = {-1, -1, -1}, sig_div_iter_[3] = {-1, -1, -1};
 };
 
 // The span_generator: counts the rows it combined.
@@ -117,7 +122,10 @@ class WalkStage : public WalkStageBase<EdgeSetupTxn> {
 
  private:
   void configure(const RasterConfig& cfg) override;
+  void add_unit_trace(VcdRecorder& tr) override;
   uint64_t walk(EdgeSetupTxn& x, uint64_t h) override;
+  // Scopes edge_walker0..2 and span_generator.
+  int sig_walker_busy_[3] = {-1, -1, -1}, sig_gen_busy_ = -1;
 
   TriangleWork work_sum_;  // the walked triangles' work, summed field by field
   bool any_work_ = false;  // a triangle was walked (add_work was due at least once)

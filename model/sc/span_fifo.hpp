@@ -25,9 +25,11 @@
 
 namespace trirast::sc {
 
-// The trace handles of the span output (scope "span") and the FIFO (scope "span_fifo").
+// The trace handles of the span output (scope "span"), the FIFO (scope "span_fifo") and the
+// sink (scope "span_sink").
 struct SpanTraceSignals {
   int valid = -1, ready = -1, tri = -1, y = -1, x_begin = -1, x_end = -1, count = -1;
+  int take = -1;  // scope "span_sink": the sink takes a span in this cycle
 };
 
 // What one run shares between the modules: configuration, results, trace, first error.
@@ -137,6 +139,8 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
       tr->value(sig_.x_end, avail, uint64_t(uint32_t(s.x_end)));
       tr->value(sig_.valid, pop + 1, 0);  // overridden when the next span is there in pop + 1
       tr->value(sig_.tri, pop + 1, VcdRecorder::kX);
+      tr->value(sig_.take, pop, 1);
+      tr->value(sig_.take, pop + 1, 0);  // overridden by the next span's pop in pop + 1
     }
     sink_.take(s, pos, pop, pop - avail);
   }

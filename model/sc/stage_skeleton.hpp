@@ -64,6 +64,11 @@ class SetupStageBase : public sc_core::sc_module {
   void add_trace(VcdRecorder& tr) {
     sig_tri_ = tr.add("setup", "tri", 32, VcdRecorder::kX);
     sig_state_ = tr.add("setup", "state", 3, StIdle);
+    // The state by name in GTKWave: the RTL's enum names (StIdle, the unit's, StHold).
+    std::vector<std::pair<uint64_t, std::string>> names = {{StIdle, "StIdle"}};
+    for (const auto& n : unit_state_names()) names.push_back(n);
+    names.emplace_back(StHold, "StHold");
+    tr.name_values(sig_state_, "setup_state", names);
     sig_accept_ = tr.add("setup", "tri_accept", 1, 0);
     add_unit_trace(tr);
   }
@@ -91,6 +96,8 @@ class SetupStageBase : public sc_core::sc_module {
   virtual void configure(const RasterConfig& cfg) = 0;
   // Declares the unit's own setup signals (after tri_accept).
   virtual void add_unit_trace(VcdRecorder&) {}
+  // The unit's own setup states (between StIdle and StHold) by value and name, for the trace.
+  virtual std::vector<std::pair<uint64_t, std::string>> unit_state_names() const = 0;
   // The unit's datapath on triangle t, accepted in cycle a, into the hand-off registers x.
   // Reports the unit's states from a + 1 on. Returns the first StHold cycle, or kRetired.
   virtual uint64_t set_up(const TriangleSetup& t, uint64_t a, Txn& x) = 0;
@@ -128,6 +135,7 @@ class SetupStageBase : public sc_core::sc_module {
       const TriangleSetup& t = tris[pos];
       TriangleCycles& rec = r.tri(pos);
       rec = TriangleCycles{t.index, a, 0, 0, 0, 0, 0};
+      rec.setup_start_cycle = a + 1;
       if (tr) {
         tr->value(sig_accept_, a, 1);
         tr->value(sig_accept_, a + 1, 0);
@@ -141,12 +149,15 @@ class SetupStageBase : public sc_core::sc_module {
         // The triangle retires in a + 1 (no spans, no hand-off).
         ++counters.busy;
         rec.first_span_cycle = rec.done_cycle = a + 1;
+        rec.setup_done_cycle = rec.handoff_cycle = a + 1;
+        rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
         idle = a + 2;
       } else {
         // Busy from a + 1 until StHold; hand the triangle over in the first cycle the walk stage
         // is idle (the walk stage runs it inside this call).
         counters.busy += hold - (a + 1);
         if (tr) tr->value(sig_state_, hold, StHold);
+        rec.setup_done_cycle = hold;
         const uint64_t h = out->put(&x, hold);
         counters.stall += h - hold;
         cur_ ^= 1;
@@ -190,8 +201,10 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
   void add_trace(VcdRecorder& tr) {
     sig_tri_ = tr.add("walk", "tri", 32, VcdRecorder::kX);
     sig_state_ = tr.add("walk", "state", 1, StWalkIdle);
+    tr.name_values(sig_state_, "walk_state", {{StWalkIdle, "StWalkIdle"}, {StWalk, "StWalk"}});
     sig_stall_ = tr.add("walk", "stall", 1, 0);
     sig_row_ = tr.add("walk", "row", row_bits_, VcdRecorder::kX);
+    add_unit_trace(tr);
   }
   void begin_run(RunState* run) {
     run_ = run;
@@ -219,6 +232,9 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
     const uint64_t t_last = walk(*x, h);
     counters.stall += stalls_;
     rec.stall_cycles = stalls_;
+    rec.handoff_cycle = h;
+    rec.walk_start_cycle = h + 1;
+    rec.walk_end_cycle = t_last;
     // A triangle without spans (the sink took none) retires in its last walk cycle.
     if (rec.spans == 0) rec.first_span_cycle = rec.done_cycle = t_last;
     if (tr) {
@@ -232,6 +248,8 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
  protected:
   // The unit's datapath objects for a run's configuration; clears the unit's counters.
   virtual void configure(const RasterConfig& cfg) = 0;
+  // Declares the unit's own walk-side modules' signals (after the stage's).
+  virtual void add_unit_trace(VcdRecorder&) {}
   // Walks triangle x, loaded in cycle h, from cycle h + 1 (each row through start_row); pushes
   // its spans into `spans` and returns the cycle of its last row.
   virtual uint64_t walk(Txn& x, uint64_t h) = 0;
@@ -294,7 +312,8 @@ class UnitSc : public sc_core::sc_module, public UnitScIf {
   void run(RunState& r) override {
     SpanTraceSignals span;
     if (VcdRecorder* tr = r.trace) {
-      // Declaration order is the VCD's order: setup, walk, span, span_fifo.
+      // Declaration order is the VCD's order: setup (and the unit's setup-side modules), walk (and
+      // the unit's walk-side modules), span, span_fifo, span_sink: every module of the statistics.
       setup.add_trace(*tr);
       walk.add_trace(*tr);
       span.valid = tr->add("span", "valid", 1, 0);
@@ -304,6 +323,7 @@ class UnitSc : public sc_core::sc_module, public UnitScIf {
       span.x_begin = tr->add("span", "x_begin", 16, VcdRecorder::kX);
       span.x_end = tr->add("span", "x_end", 16, VcdRecorder::kX);
       span.count = tr->add("span_fifo", "count", 11, 0, true);
+      span.take = tr->add("span_sink", "take", 1, 0);
     }
     sink.begin_run(&r);
     fifo.begin_run(&r, span);

@@ -20,6 +20,11 @@ uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn
     ++run_->out->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
     return kRetired;
   }
+  // The box the walk stage covers: the integer vertices' bounding box (rows p0.y .. p2.y).
+  TriangleCycles& rec = run_->tri(x.pos);
+  const Vec2i* p = x.verts.p;
+  rec.box_width = uint64_t(std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x})) + 1;
+  rec.box_height = uint64_t(p[2].y - p[0].y) + 1;
   // a + 2, StLine: the three lines' set-up; StHold from a + 3.
   trace_state(a + 2, StLine);
   return a + 3;

@@ -34,6 +34,9 @@ class TradSetupStage : public SetupStageBase<TradSetupTxn> {
 
  private:
   void configure(const RasterConfig& cfg) override;
+  std::vector<std::pair<uint64_t, std::string>> unit_state_names() const override {
+    return {{StSort, "StSort"}, {StLine, "StLine"}};
+  }
   uint64_t set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) override;
   std::unique_ptr<TradVertexQuantizer> quantizer_;
 };

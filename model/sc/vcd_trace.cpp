@@ -4,13 +4,25 @@
 #include <cstdio>
 #include <map>
 #include <stdexcept>
+#include <cstdlib>
+
+#include "core/gtkw_save.hpp"
+#include "core/temporary_files.hpp"
 
 namespace trirast::sc {
 
 int VcdRecorder::add(const std::string& scope, const std::string& name, int width, uint64_t initial,
                      bool counter) {
-  signals_.push_back(Signal{scope, name, width, counter, initial, 0});
+  signals_.push_back(Signal{scope, name, width, counter, initial, 0, {}});
   return int(signals_.size()) - 1;
+}
+
+void VcdRecorder::name_values(int sig, const std::string& filter,
+                              const std::vector<std::pair<uint64_t, std::string>>& labels) {
+  signals_[size_t(sig)].filter = filter;
+  for (const auto& f : filters_)
+    if (f.first == filter) return;
+  filters_.emplace_back(filter, labels);
 }
 
 void VcdRecorder::set_window(uint64_t first, uint64_t last) {
@@ -18,13 +30,7 @@ void VcdRecorder::set_window(uint64_t first, uint64_t last) {
   last_ = last;
 }
 
-std::string VcdRecorder::gtkw_path(const std::string& vcd_path) {
-  const std::string ext = ".vcd";
-  if (vcd_path.size() > ext.size() &&
-      vcd_path.compare(vcd_path.size() - ext.size(), ext.size(), ext) == 0)
-    return vcd_path.substr(0, vcd_path.size() - ext.size()) + ".gtkw";
-  return vcd_path + ".gtkw";
-}
+std::string VcdRecorder::gtkw_path(const std::string& vcd_path) { return gtkw_path_of(vcd_path); }
 
 namespace {
 
@@ -57,16 +63,36 @@ void put_value(std::string& buf, int width, uint64_t v, const std::string& id) {
   buf += '\n';
 }
 
-// Writes text to path through a temporary name.
+bool is_fst(const std::string& path) {
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".fst") == 0;
+}
+
+// Writes text to path through a temporary name (removed on failure and on SIGINT / SIGTERM).
+// A .fst path gets the VCD text converted by gtkwave's vcd2fst.
 void write_file(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
+  const std::string tmp = path + (is_fst(path) ? ".tmp.vcd" : ".tmp");
+  TemporaryPath guard(tmp);
   FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw std::runtime_error("--trace: cannot write '" + path + "'");
   const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !ok || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (std::fclose(f) != 0 || !ok ||
+      (!is_fst(path) && std::rename(tmp.c_str(), path.c_str()) != 0)) {
     std::remove(tmp.c_str());
     throw std::runtime_error("--trace: cannot write '" + path + "'");
   }
+  if (!is_fst(path)) {
+    guard.release();
+    return;
+  }
+  const std::string fst_tmp = path + ".tmp.fst";
+  TemporaryPath fst_guard(fst_tmp);
+  const std::string cmd = "vcd2fst '" + tmp + "' '" + fst_tmp + "' >/dev/null 2>&1";
+  const int rc = std::system(cmd.c_str());
+  if (rc != 0 || std::rename(fst_tmp.c_str(), path.c_str()) != 0)
+    throw std::runtime_error("--trace " + path + ": vcd2fst (gtkwave) failed" +
+                             std::string(rc == 127 * 256 ? " (not installed)" : "") +
+                             ": the SystemC engines write VCD; name the trace .vcd");
+  fst_guard.release();
 }
 
 }  // namespace
@@ -141,24 +167,24 @@ void VcdRecorder::write(const std::string& vcd_path, const std::string& top) con
   out += "#" + std::to_string(end) + "\n";
   write_file(vcd_path, out);
 
-  // GTKWave save file: one group per module, buses in decimal, bits as bits.
-  std::string g;
-  g += "[dumpfile] \"" + vcd_path + "\"\n";
-  g += "[timestart] " + std::to_string(t0) + "\n";
-  g += "[sst_expanded] 1\n";
-  g += "[treeopen] " + top + ".\n";
+  // GTKWave save file: one group per module (scope), buses in decimal, states by name.
+  GtkwSave save;
+  save.dump_path = vcd_path;
+  save.window_start = t0;
+  save.window_end = end;
+  save.tree_open = {top + "."};
+  for (const auto& f : filters_) save.filters.push_back(GtkwSave::Filter{f.first, f.second});
   for (const std::string& sc : scopes) {
-    g += "@800200\n-" + sc + "\n";
+    GtkwSave::Group grp{sc, false, {}};
     for (const Signal& s : signals_) {
       if (s.scope != sc) continue;
-      g += s.width == 1 ? "@28\n" : "@24\n";
-      g += top + "." + sc + "." + s.name;
-      if (s.width > 1) g += "[" + std::to_string(s.width - 1) + ":0]";
-      g += "\n";
+      std::string name = top + "." + sc + "." + s.name;
+      if (s.width > 1) name += "[" + std::to_string(s.width - 1) + ":0]";
+      grp.traces.push_back(GtkwSave::Trace{name, s.width, s.filter});
     }
-    g += "@1000200\n-" + sc + "\n";
+    save.groups.push_back(std::move(grp));
   }
-  write_file(gtkw_path(vcd_path), g);
+  write_gtkw(gtkw_path(vcd_path), save);
 }
 
 }  // namespace trirast::sc

@@ -6,6 +6,7 @@
 #pragma once
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace trirast::sc {
@@ -18,6 +19,10 @@ class VcdRecorder {
   // driven by deltas (+1/-1) instead of values. Returns its handle.
   int add(const std::string& scope, const std::string& name, int width, uint64_t initial,
           bool counter = false);
+  // Shows signal `sig` by name in GTKWave: a translate filter (value -> label) named `filter`,
+  // written beside the .gtkw (core/gtkw_save.hpp). Filters of one name are declared once.
+  void name_values(int sig, const std::string& filter,
+                   const std::vector<std::pair<uint64_t, std::string>>& labels);
 
   // Only changes taking effect in cycles first..last are written; earlier ones make the values the
   // trace starts with.
@@ -58,11 +63,13 @@ class VcdRecorder {
   }
 
   // Writes the VCD (timescale: one cycle = 1 ns, time = the run's cycle number) under `top`, and
-  // the .gtkw beside it (path with .vcd replaced by .gtkw). Each file goes to a temporary name
+  // the .gtkw beside it (path with .vcd replaced by .gtkw; core/gtkw_save.hpp: the dump named
+  // relative to it, the zoom on the window, one group per scope, states by name). A .fst path gets the VCD converted
+  // by gtkwave's vcd2fst (and FILE.gtkw beside it). Each file goes to a temporary name
   // first and is renamed when complete. Throws std::runtime_error naming the file on failure.
   void write(const std::string& vcd_path, const std::string& top) const;
 
-  // The .gtkw path written beside a VCD path.
+  // The .gtkw path written beside a VCD (or FST) path: FILE.vcd / FILE.fst -> FILE.gtkw.
   static std::string gtkw_path(const std::string& vcd_path);
 
  private:
@@ -72,6 +79,7 @@ class VcdRecorder {
     bool counter;
     uint64_t initial;
     uint64_t initial_cycle;
+    std::string filter;  // translate filter name, or empty
   };
   struct Change {
     uint64_t cycle;
@@ -81,6 +89,7 @@ class VcdRecorder {
   };
   std::vector<Signal> signals_;
   std::vector<Change> changes_;
+  std::vector<std::pair<std::string, std::vector<std::pair<uint64_t, std::string>>>> filters_;
   uint64_t first_ = 0, last_ = ~uint64_t(0);
   uint64_t seq_ = 0;
 };

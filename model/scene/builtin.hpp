@@ -51,7 +51,7 @@ struct BuiltinEntry {
   BuiltinMaker make;
 };
 
-// The hard-case built-ins (hard_cases.cpp), in hard-cases.md order.
+// The hard-case built-ins (hard_cases.cpp), in docs/hard-cases.md order.
 const std::vector<BuiltinEntry>& hard_case_entries();
 
 // ---- 2D building blocks (pixels, y down) ----

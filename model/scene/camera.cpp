@@ -104,6 +104,7 @@ class MeshProjector {
   }
 
   void project_face(const std::array<uint32_t, 3>& face, Scene& scene) const {
+    ++scene.mesh_faces;
     int inside = 0;
     for (uint32_t idx : face) inside += verts_[idx].near_dist >= 0.0;
     if (inside == 0) {
@@ -157,6 +158,7 @@ class MeshProjector {
       tri.y[i] = pts[i].y;
     }
     scene.tris.push_back(tri);
+    ++scene.mesh_pieces;
     return true;
   }
 

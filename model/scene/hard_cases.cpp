@@ -488,6 +488,8 @@ Scene hard_all(const BuiltinParams& p, const RasterConfig& cfg, const CameraOpti
     all.near_clipped += part.near_clipped;
     all.near_dropped += part.near_dropped;
     all.range_dropped += part.range_dropped;
+    all.mesh_faces += part.mesh_faces;
+    all.mesh_pieces += part.mesh_pieces;
   }
   return all;
 }

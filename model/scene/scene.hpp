@@ -17,6 +17,10 @@ struct Scene {
   uint64_t near_clipped = 0;           // mesh triangles cut by the near plane (pieces kept)
   uint64_t near_dropped = 0;           // mesh triangles wholly behind the near plane
   uint64_t range_dropped = 0;          // mesh triangles whose projection left the coordinate range
+  uint64_t mesh_faces = 0;             // mesh triangles projected (kept, clipped or dropped)
+  uint64_t mesh_pieces = 0;            // triangles in `tris` those became (clipping may make 2)
+  // Triangles in the file or built-in, before near-plane clipping and drops.
+  uint64_t source_triangles() const { return tris.size() - mesh_pieces + mesh_faces; }
 };
 
 // Raised for unreadable or malformed scenes. what() is one line naming the file and line (or the

@@ -13,7 +13,7 @@ HsClass HsTileWalker::classify(const HsSetupOut& s, int64_t i0, int64_t j0) cons
     const int64_t c[4] = {c00, c00 + d * e.a, c00 + d * e.b, c00 + d * e.a + d * e.b};
     int inside = 0;
     for (int64_t v : c) {
-      check_signed(v, w_.edge_value, s.tri, "corner E", "edge value");
+      check_signed(v, w_.hs_edge_value, s.tri, "corner E", "half-space corner value");
       inside += v >= 0;
     }
     if (inside == 0) return HsClass::Reject;

@@ -10,8 +10,8 @@ namespace {
 const RasterConfig& checked_config(const RasterConfig& cfg) {
   cfg.validate();
   const UnitWidths w = unit_widths(cfg);
-  if (w.edge_value > 63)
-    throw WidthError("halfspace: " + std::to_string(w.edge_value) +
+  if (w.hs_edge_value > 63)
+    throw WidthError("halfspace: " + std::to_string(w.hs_edge_value) +
                      "-bit edge values exceed the 64-bit model; use fewer --coord-bits or --subpixel-bits");
   return cfg;
 }

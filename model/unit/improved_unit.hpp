@@ -57,7 +57,7 @@ class ImprovedUnit {
 // Adds one triangle's work into an engine's work map ("divider_iterations", "spans", ...).
 void add_work(const TriangleWork& w, std::map<std::string, uint64_t>& work);
 
-// The unit as an engine (register as "unit" in app/engines.cpp).
+// The unit as an engine (register as "improved-datapath" in app/engines.cpp).
 std::unique_ptr<Engine> make_unit_engine();
 
 }  // namespace trirast

@@ -1,7 +1,7 @@
 // The traditional Bresenham triangle rasterizer: the baseline the improved unit is compared with
 // (003_ef0fb899afde143a.txt), as the older GR3 software renderer did it (001_efbf726a8c96efcc.txt,
-// sections 2.1 and 2.1.1). It deliberately does NOT follow raster-rules.md; its difference from the
-// golden rasterizer is reported as error.
+// sections 2.1 and 2.1.1). It deliberately does NOT follow docs/coverage-rule.md; its difference
+// from the golden rasterizer is reported as error.
 //
 // Hardware stages, in order (one C++ class per stage, integer arithmetic only, int64 throughout):
 //
@@ -138,7 +138,8 @@ class TradSpanFiller {
 // "spans", "pixels", "trad_collinear" (triangles dropped by stage 1).
 void add_trad_work(const TradTriangleResult& r, std::map<std::string, uint64_t>& work);
 
-// The traditional rasterizer as an engine (register as "trad" in app/engines.cpp; not exact).
+// The traditional rasterizer as an untimed engine (not exact); app/engines.cpp registers its timed
+// form, make_trad_model_engine(), as "trad-sc".
 std::unique_ptr<Engine> make_trad_engine();
 
 }  // namespace trirast

@@ -1,6 +1,6 @@
-// The Verilated RTL of the traditional-Bresenham unit (rtl/trirast_trad_*.sv, engine "rtl-trad"):
+// The Verilated RTL of the traditional-Bresenham unit (rtl/trirast_trad_*.sv, engine "trad-rtl"):
 // its spans equal the C++ trad model's (model/unit/trad_bresenham.*, engine make_trad_engine),
-// pixel for pixel, and its cycles equal the SystemC trad model's (engine "trad", docs/timing.md
+// pixel for pixel, and its cycles equal the SystemC trad model's (engine "trad-sc", docs/timing.md
 // "The traditional unit"): accept, first span, done and stall cycles of every triangle, with the
 // sink always ready and with stalling sinks, on the hard cases, random triangles and meshes.
 // Nothing here is a stored result: every expectation comes from running the two models.
@@ -11,6 +11,7 @@
 
 #include "core/setup.hpp"
 #include "engines.hpp"
+#include "reference/cycle_columns.hpp"
 #include "verilator/rtl_trad_engine.hpp"
 #include "scene/scene.hpp"
 #include "sc/sc_engine.hpp"
@@ -58,17 +59,11 @@ size_t expect_trad(const SetupResult& setup, const RasterConfig& cfg, const std:
   size_t mismatches = 0;
   for (size_t p = 0; p < std::min(rtl.cycles.size(), sc.cycles.size()); ++p) {
     const TriangleCycles &a = rtl.cycles[p], &b = sc.cycles[p];
-    const bool same = a.tri == b.tri && a.accept_cycle == b.accept_cycle &&
-                      a.first_span_cycle == b.first_span_cycle && a.done_cycle == b.done_cycle &&
-                      a.spans == b.spans && a.pixels == b.pixels &&
-                      a.stall_cycles == b.stall_cycles;
-    if (!same && mismatches++ < 3)
-      ADD_FAILURE() << what << ": triangle " << a.tri << " (position " << p << "): rtl accept "
-                    << a.accept_cycle << " first " << a.first_span_cycle << " done "
-                    << a.done_cycle << " spans " << a.spans << " stalls " << a.stall_cycles
-                    << "; trad model accept " << b.accept_cycle << " first "
-                    << b.first_span_cycle << " done " << b.done_cycle << " spans " << b.spans
-                    << " stalls " << b.stall_cycles;
+    // Every column, the stage breakdown too (docs/timing.md, "Outputs").
+    if (!test::same_cycles(a, b) && mismatches++ < 3)
+      ADD_FAILURE() << what << ": triangle " << a.tri << " (position " << p << ", "
+                    << test::kCyclesColumns << "): rtl (" << test::cycles_row(a)
+                    << ") trad model (" << test::cycles_row(b) << ")";
   }
   EXPECT_EQ(mismatches, 0u) << what << ": triangles with other cycles";
   EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
@@ -87,7 +82,7 @@ RasterConfig cfg_with(const std::string& sink, int depth, int endpoints = 1) {
 const char* const kSinks[] = {"none", "random:7:30", "periodic:3:2"};
 
 TEST(RtlTrad, RegisteredNotExact) {
-  const EngineInfo* e = find_engine("rtl-trad");
+  const EngineInfo* e = find_engine("trad-rtl");
   ASSERT_NE(e, nullptr);
   EXPECT_FALSE(e->exact);
 }
@@ -178,12 +173,12 @@ TEST(RtlTrad, IndependentOfTheXSeed) {
 
 TEST(RtlTrad, RefusesUnbuiltWidths) {
   RasterConfig cfg;
-  cfg.subpixel_bits = 4;
+  cfg.subpixel_bits = 5;  // no build (docs/synth.md: S = 8, 4, 0)
   cfg.validate();
   EngineResult r;
   try {
     rtl::run_rtl_trad(SetupResult{}, cfg, rtl::RtlRunOptions{}, r);
-    FAIL() << "accepted --subpixel-bits 4";
+    FAIL() << "accepted --subpixel-bits 5";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--subpixel-bits"), std::string::npos) << e.what();
   }

@@ -8,6 +8,7 @@
 
 #include "core/setup.hpp"
 #include "core/sink_pattern.hpp"
+#include "reference/cycle_columns.hpp"
 #include "reference/cycle_reference.hpp"
 #include "sc/sc_engine.hpp"
 #include "reference/reference_raster.hpp"
@@ -228,6 +229,12 @@ std::vector<test::RefTriangle> improved_reference_input(const SetupResult& setup
       for (const EdgeWork& e : u.work.edge)
         L = std::max(L, e.boundary_steps + e.divider_iterations);
       r.setup_cycles = 3 + L;
+      for (const EdgeWork& e : u.work.edge) {
+        r.divider_iterations += e.divider_iterations;
+        r.boundary_steps += e.boundary_steps;
+      }
+      r.box_width = uint64_t(u.iface.Xmax) + 1;
+      r.box_height = uint64_t(u.iface.Ymax) + 1;
       r.row_cost.assign(size_t(u.iface.Ymax + 1), 1);
       r.row_pixels.assign(size_t(u.iface.Ymax + 1), 0);
       for (const Span& s : spans) r.row_pixels[size_t(s.y - u.iface.y0)] = uint64_t(s.pixels());
@@ -249,6 +256,9 @@ std::vector<test::RefTriangle> trad_reference_input(const SetupResult& setup,
     r.retire_in_setup = f.verts.empty;
     if (!f.verts.empty) {
       r.setup_cycles = 3;
+      const Vec2i* p = f.verts.p;
+      r.box_width = uint64_t(std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x})) + 1;
+      r.box_height = uint64_t(p[2].y - p[0].y) + 1;
       const TradWalkTiming w(f.verts);
       for (int64_t y = w.first_row(); y <= w.last_row(); ++y) {
         r.row_cost.push_back(w.row_cycles(y));
@@ -277,15 +287,10 @@ void compare_with_reference(bool trad, const std::vector<InputTriangle>& tris, R
     const TriangleCycles& a = r.cycles[i];
     const TriangleCycles& b = ref[i];
     total = std::max(total, b.done_cycle + 1);
-    if (a.tri == b.tri && a.accept_cycle == b.accept_cycle &&
-        a.first_span_cycle == b.first_span_cycle && a.done_cycle == b.done_cycle &&
-        a.spans == b.spans && a.pixels == b.pixels && a.stall_cycles == b.stall_cycles)
-      continue;
-    ADD_FAILURE() << what << ": triangle " << a.tri << " model (" << a.accept_cycle << ","
-                  << a.first_span_cycle << "," << a.done_cycle << "," << a.spans << "," << a.pixels
-                  << "," << a.stall_cycles << ") reference (" << b.accept_cycle << ","
-                  << b.first_span_cycle << "," << b.done_cycle << "," << b.spans << "," << b.pixels
-                  << "," << b.stall_cycles << ")";
+    // Every column, the stage breakdown too (docs/timing.md, "Outputs").
+    if (test::same_cycles(a, b)) continue;
+    ADD_FAILURE() << what << ": triangle " << a.tri << " (" << test::kCyclesColumns << ") model ("
+                  << test::cycles_row(a) << ") reference (" << test::cycles_row(b) << ")";
     if (++reported == 5) return;
   }
   EXPECT_EQ(r.total_cycles, total) << what;

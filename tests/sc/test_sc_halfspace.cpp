@@ -110,11 +110,14 @@ TEST(ScHalfspace, GoldenSpansAndSaneCyclesEverywhere) {
             for (const TriangleCycles& c : r.cycles) {
               EXPECT_LE(c.accept_cycle, c.first_span_cycle) << what;
               EXPECT_LE(c.first_span_cycle, c.done_cycle) << what;
-              if (&c != &r.cycles[0]) EXPECT_GT(c.accept_cycle, prev_accept) << what;
+              if (&c != &r.cycles[0]) {
+                EXPECT_GT(c.accept_cycle, prev_accept) << what;
+              }
               prev_accept = c.accept_cycle;
             }
-            if (std::string(sink) != "none" && depth == 1)
+            if (std::string(sink) != "none" && depth == 1) {
               EXPECT_GT(r.work.at("stall_cycles.walk"), 0u) << what;
+            }
           }
 }
 

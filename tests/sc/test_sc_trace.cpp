@@ -141,6 +141,27 @@ TEST(ScTrace, DocumentedSignalsExistAndChange) {
     for (const char* group : {"-setup", "-walk", "-span", "-span_fifo"})
       EXPECT_NE(gtkw.find(std::string("\n") + group + "\n"), std::string::npos) << group;
     EXPECT_NE(gtkw.find("[dumpfile]"), std::string::npos);
+    // The dump named relative to the save file (beside it), the view on the window, the setup
+    // state by name through a filter file beside it.
+    const std::string base = trad ? "sc_trace_trad" : "sc_trace_model";
+    EXPECT_NE(gtkw.find("[dumpfile] \"" + base + ".vcd\"\n[savefile] \"" + base + ".gtkw\"\n"),
+              std::string::npos) << gtkw.substr(0, 300);
+    EXPECT_NE(gtkw.find("[timestart] 0\n"), std::string::npos);
+    EXPECT_NE(gtkw.find("\n*-"), std::string::npos);  // a zoom out to the whole run
+    EXPECT_NE(gtkw.find("^1 " + base + ".setup_state.filter\n@2024\n"), std::string::npos);
+    const std::string filter = slurp(testing::TempDir() + base + ".setup_state.filter");
+    EXPECT_NE(filter.find(trad ? "1 StSort\n" : "3 StLanes\n"), std::string::npos) << filter;
+    // Every module of the statistics table (busy_cycles.* / stall_cycles.*) has its scope.
+    for (const auto& [key, value] : r.work) {
+      for (const char* prefix : {"busy_cycles.", "stall_cycles."}) {
+        if (key.rfind(prefix, 0) != 0) continue;
+        const std::string module = key.substr(std::string(prefix).size());
+        if (trad && module != "setup" && module != "walk" && module != "span_fifo" &&
+            module != "span_sink")
+          continue;  // the traditional unit's own modules are not traced (docs/sc-model.md)
+        EXPECT_NE(gtkw.find("\n-" + module + "\n"), std::string::npos) << module;
+      }
+    }
   }
 }
 

@@ -5,21 +5,33 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
+#include "engines.hpp"
+
 namespace trirast::test {
 
-namespace {
 std::string slurp(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
 }
-}  // namespace
+
+int count_lines(const std::string& s) { return int(std::count(s.begin(), s.end(), '\n')); }
+
+std::vector<const EngineInfo*> exact_engines() {
+  std::vector<const EngineInfo*> out;
+  std::set<std::string> seen;
+  for (const EngineInfo& e : engine_registry())
+    if (e.exact && seen.insert(e.name).second) out.push_back(&e);
+  return out;
+}
 
 CommandResult run_command(const std::string& command) {
   char tmpl[] = "/tmp/trirast-cmd-XXXXXX";

@@ -1,8 +1,18 @@
-// Runs a shell command for CLI tests and captures its exit status, stdout and stderr.
+// What the tests of the trirast program share: running a shell command and capturing its exit
+// status, stdout and stderr; the program's path (kBin); a temporary directory; reading an output
+// back; the exact engines of this build.
 #pragma once
 #include <string>
+#include <vector>
+
+#include "core/engine.hpp"
 
 namespace trirast::test {
+
+#ifdef TRIRAST_BIN
+// The trirast program of this build (tests/CMakeLists.txt defines TRIRAST_BIN for tests/test_*).
+inline const std::string kBin = TRIRAST_BIN;
+#endif
 
 struct CommandResult {
   int status = -1;  // exit status; 128 + signal number when killed by a signal
@@ -27,5 +37,10 @@ class TempDir {
 
 void write_file(const std::string& path, const std::string& content);
 bool file_exists(const std::string& path);
+// The whole file, bytes as they are; empty when it cannot be read.
+std::string slurp(const std::string& path);
+int count_lines(const std::string& s);
+// Every exact engine this build holds (the golden included), each name once, in list order.
+std::vector<const EngineInfo*> exact_engines();
 
 }  // namespace trirast::test

@@ -1,6 +1,6 @@
-// libFuzzer target (issue 7): decodes the fuzzer's bytes into a configuration and triangles biased
-// toward hard-cases.md (the same generator as `trirast fuzz`, drawing from the bytes instead of a
-// PRNG), then holds every engine of kEngines against the golden. Any difference, exception or
+// libFuzzer target: decodes the fuzzer's bytes into a configuration and triangles biased
+// toward docs/hard-cases.md (the same generator as `trirast fuzz`, drawing from the bytes instead
+// of a PRNG), then holds every engine of kEngines against the golden. Any difference, exception or
 // out-of-viewport span aborts with the reproducer on stderr.
 //
 // Also fuzzed: setup's handling of arbitrary doubles (NaN, infinities, 1e300, subnormals, values
@@ -34,9 +34,9 @@ namespace {
 // input cannot leak state into the next. An engine built for fewer configurations (the rtl: one
 // set of widths) throws std::invalid_argument for the others and is skipped on those inputs.
 const std::vector<EngineInfo> kEngines = {
-    {"unit", "bit-accurate unit model", true, make_unit_engine},
+    {"improved-datapath", "bit-accurate unit model", true, make_unit_engine},
 #ifdef TRIRAST_FUZZ_HAS_RTL
-    {"rtl", "Verilated RTL through its harness", true, make_rtl_engine},
+    {"improved-rtl", "Verilated RTL through its harness", true, make_rtl_engine},
 #endif
 };
 
@@ -78,8 +78,8 @@ std::vector<EngineInfo> engines_under_test() {
   std::abort();
 }
 
-// Whether `v` snaps into the configured range: the rule of raster-rules.md, written out apart from
-// setup's implementation (long double, no ldexp).
+// Whether `v` snaps into the configured range: the rule of docs/coverage-rule.md, written out apart
+// from setup's implementation (long double, no ldexp).
 bool representable(double v, const RasterConfig& cfg) {
   if (!std::isfinite(v)) return false;
   const long double scaled = (long double)v * (long double)(1u << cfg.subpixel_bits);

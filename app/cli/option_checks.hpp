@@ -1,0 +1,50 @@
+// Checks of command-line options that need more than their own text: the engine (--trace needs a
+// timed one), the scene (--trace-tris within its triangles), the file type (PNG only), and which
+// output files a run actually wrote (for its "wrote" lines).
+#pragma once
+#include <sys/stat.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+
+#include "core/engine.hpp"
+
+namespace trirast {
+
+// Throws UsageError "trirast CMD: --trace: engine 'X' is not timed ..." for an untimed engine
+// (one that reports no cycles: it has no waveform to trace).
+void check_trace_engine(const EngineInfo& engine, const std::string& cmd);
+
+// Throws UsageError naming `option` unless `path` ends in .png (any case); then checks that the
+// path can be written (check_output_path).
+void check_png_path(const std::string& path, const std::string& cmd, const std::string& option);
+
+// Throws UsageError naming --trace-tris and the scene's triangle count when the window A:B
+// holds no triangle of a scene of `triangles` triangles.
+void check_trace_window(int64_t first, int64_t last, uint64_t triangles, const std::string& cmd);
+
+// What was at each output path before a run: a path counts as written by the run when it exists
+// afterwards and did not before, or is another file now (writers rename a new file over it).
+class OutputStamps {
+ public:
+  void note(const std::string& path);
+  bool written(const std::string& path) const;
+
+ private:
+  struct Stamp {
+    bool exists = false;
+    dev_t dev = 0;
+    ino_t ino = 0;
+    int64_t mtime_ns = 0;
+    int64_t size = 0;
+    bool operator==(const Stamp& o) const {
+      return exists == o.exists && dev == o.dev && ino == o.ino && mtime_ns == o.mtime_ns &&
+             size == o.size;
+    }
+  };
+  static Stamp stamp(const std::string& path);
+  std::map<std::string, Stamp> before_;
+};
+
+}  // namespace trirast

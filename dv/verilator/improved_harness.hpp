@@ -1,0 +1,132 @@
+// The transactor between the engine interface and one Verilated build of trirast_top (docs/rtl.md,
+// "Harness"): the improved unit's configuration and triangle ports and its module counters, for a
+// build Top of the widths P (a struct of dv/verilator's generated parameter headers,
+// scripts/gen_params.py --struct); the per-cycle loop is cycle_loop.hpp. Instantiated once per
+// build by the generated rtl_build_*.cpp (dv/verilator/CMakeLists.txt).
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "cycle_loop.hpp"
+#include "harness_util.hpp"
+#include "unit/improved_unit.hpp"
+#include "unit/unit_widths.hpp"
+
+namespace trirast::rtl {
+
+// The improved unit's modules, in the model's names (model/sc/improved_sc.cpp).
+enum ImprovedModule : int {
+  kImpSetup, kImpInterface, kImpLane0, kImpDivider0 = kImpLane0 + 3, kImpWalk = kImpDivider0 + 3,
+  kImpSpanGenerator
+};
+
+// Setup-stage states of rtl/trirast_setup_stage.sv (and the trad one: 1..2 its own, 4 StHold).
+enum : unsigned { kRtlStIdle = 0, kRtlStBox = 1, kRtlStEdge = 2, kRtlStLanes = 3, kRtlStHold = 4 };
+
+template <class Top, class P>
+struct ImprovedPorts {
+  using PortBits = Bits<8>;  // up to 256-bit ports
+  static_assert(words(3 * P::kEdgeBits) <= 8, "Bits<8> holds up to 256 bits");
+
+  void configure(Top& top, const RasterConfig& cfg) const {
+    top.cfg_divide_i = cfg.boundary == BoundaryMode::Divide;
+    top.cfg_adaptive_i = cfg.divider == DividerMode::Adaptive;
+    top.cfg_endpoints_i = uint32_t(cfg.endpoints);
+  }
+  void offer(Top& top, const TriangleSetup& t) const {
+    PortBits vx, vy, a, b, c;
+    uint32_t bias = 0;
+    for (int k = 0; k < 3; ++k) {
+      vx.put(k * P::kVertexBits, P::kVertexBits, t.v[k].x);
+      vy.put(k * P::kVertexBits, P::kVertexBits, t.v[k].y);
+      a.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].A);
+      b.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].B);
+      c.put(k * P::kEdgeBits, P::kEdgeBits, t.edge[k].C);
+      if (t.edge[k].bias != 0) bias |= 1u << k;
+    }
+    drive(top.tri_vx_i, vx, words(3 * P::kVertexBits));
+    drive(top.tri_vy_i, vy, words(3 * P::kVertexBits));
+    drive(top.tri_a_i, a, words(3 * P::kCoefBits));
+    drive(top.tri_b_i, b, words(3 * P::kCoefBits));
+    drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
+    top.tri_bias_i = bias;
+  }
+  // The lanes' work while the triangle is set up: a busy lane does a divider iteration or a
+  // boundary column step.
+  void observe_setup(const Top& top, TriangleCycles& tc) const {
+    const unsigned busy = top.lane_busy_o, div = top.lane_div_o;
+    tc.divider_iterations += unsigned(__builtin_popcount(busy & div));
+    tc.boundary_steps += unsigned(__builtin_popcount(busy & ~div & 7u));
+  }
+  void observe_handoff(const Top& top, TriangleCycles& tc) const {
+    tc.box_width = uint64_t(top.box_xmax_o) + 1;
+    tc.box_height = uint64_t(top.box_ymax_o) + 1;
+  }
+  // A box that clips to nothing retires in the box stage.
+  bool early_retire(const Top& top, size_t& tag) const {
+    if (!top.box_retire_o) return false;
+    tag = top.box_retire_tag_o;
+    return true;
+  }
+  // The model's definitions (model/sc/improved_sc.cpp, stage_skeleton.hpp): the setup stage is
+  // busy in StBox..StLanes and stalls in StHold while the walk stage is busy; the interface works
+  // in StBox and StEdge; a lane while its busy_o is high, its divider while it iterates (div_en);
+  // the walk stage and the span generator in a cycle whose group goes, and the walk stage stalls
+  // in a cycle without room.
+  void count(const Top& top, ModuleCycles& m) const {
+    const auto* r = top.rootp;
+    const unsigned st = top.setup_state_o;
+    m.busy[kImpSetup] += st >= kRtlStBox && st <= kRtlStLanes;
+    m.stall[kImpSetup] += st == kRtlStHold && top.walk_busy_o;
+    m.busy[kImpInterface] += st == kRtlStBox || st == kRtlStEdge;
+    const unsigned lanes = top.lane_busy_o;
+    m.busy[kImpLane0 + 0] += lanes & 1u;
+    m.busy[kImpLane0 + 1] += (lanes >> 1) & 1u;
+    m.busy[kImpLane0 + 2] += (lanes >> 2) & 1u;
+    m.busy[kImpDivider0 + 0] +=
+        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__0__KET____DOT__u_lane__DOT__div_en;
+    m.busy[kImpDivider0 + 1] +=
+        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__1__KET____DOT__u_lane__DOT__div_en;
+    m.busy[kImpDivider0 + 2] +=
+        r->trirast_top__DOT__u_setup__DOT__g_edge__BRA__2__KET____DOT__u_lane__DOT__div_en;
+    if (top.walk_busy_o) {
+      const bool stall = top.walk_stall_o;
+      m.busy[kImpWalk] += !stall;
+      m.busy[kImpSpanGenerator] += !stall;
+      m.stall[kImpWalk] += stall;
+    }
+  }
+  void add_counters(const ModuleCycles& m, std::map<std::string, uint64_t>& work) const {
+    work["busy_cycles.setup"] += m.busy[kImpSetup];
+    work["stall_cycles.setup"] += m.stall[kImpSetup];
+    work["busy_cycles.interface"] += m.busy[kImpInterface];
+    for (int k = 0; k < 3; ++k) {
+      work["busy_cycles.edge_lane" + std::to_string(k)] += m.busy[kImpLane0 + k];
+      work["busy_cycles.adder_divider" + std::to_string(k)] += m.busy[kImpDivider0 + k];
+    }
+    work["busy_cycles.walk"] += m.busy[kImpWalk];
+    work["stall_cycles.walk"] += m.stall[kImpWalk];
+    work["busy_cycles.span_generator"] += m.busy[kImpSpanGenerator];
+  }
+};
+
+// Runs a scene through a fresh instance of build Top (widths P): checks every triangle against the
+// widths first (the bit-accurate model raises the WidthError naming it), then the cycle loop.
+template <class Top, class P>
+void run_improved_build(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
+                        EngineResult& out) {
+  {
+    ImprovedUnit unit(cfg);
+    SpanList scratch;
+    for (const TriangleSetup& t : setup.tris) {
+      scratch.clear();
+      unit.run_triangle(t, scratch);
+      for (int k = 0; k < 3; ++k) check_signed(t.edge[k].C, P::kEdgeBits, t.index, "C", "edge value");
+    }
+  }
+  ImprovedPorts<Top, P> ports;
+  run_cycles<Top>(setup, cfg, x_seed, "improved-rtl", "trirast_top", ports, out);
+}
+
+}  // namespace trirast::rtl

@@ -1,0 +1,38 @@
+// Wall and process CPU time of an engine run, reported as the simulator's speed (the work counters
+// sim_wall_microseconds, sim_cpu_microseconds, sim_cycles_per_second, sim_cycles_per_cpu_second).
+#pragma once
+#include <time.h>
+
+#include <chrono>
+#include <cstdint>
+
+#include "core/engine.hpp"
+
+namespace trirast {
+
+class SimClock {
+ public:
+  SimClock() : wall0_(std::chrono::steady_clock::now()), cpu0_(cpu_seconds()) {}
+  static double cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+  }
+  // Adds the speed of the run so far (out.total_cycles simulated) to out.work.
+  void report(EngineResult& out) const {
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0_).count();
+    const double cpu = cpu_seconds() - cpu0_;
+    const double cycles = double(out.total_cycles);
+    out.work["sim_wall_microseconds"] = uint64_t(wall * 1e6);
+    out.work["sim_cpu_microseconds"] = uint64_t(cpu * 1e6);
+    out.work["sim_cycles_per_second"] = wall > 0 ? uint64_t(cycles / wall) : 0;
+    out.work["sim_cycles_per_cpu_second"] = cpu > 0 ? uint64_t(cycles / cpu) : 0;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point wall0_;
+  double cpu0_;
+};
+
+}  // namespace trirast

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# One synthesis task of the distributed sweep (scripts/sweep_slurm.sh, scripts/sweep_parallel.sh):
+#   scripts/sweep_synth_task.sh TODO INDEX RESULTS
+# TODO is the list `trirast sweep --merge RESULTS --synth-todo TODO` wrote (one UNIT:S:COORD:BOX:N
+# per line, index 0 first); the task synthesizes line INDEX with scripts/synth.sh --one into
+# RESULTS/synth/UNIT-SS-cC-bB-NN.synth (written whole, then renamed). A complete result file is not
+# redone (a rerun resumes). Traditional units are also placed and routed (iCE40 Fmax): they fit.
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+[ $# -eq 3 ] || { echo "usage: sweep_synth_task.sh TODO INDEX RESULTS" >&2; exit 2; }
+TODO="$1"; INDEX="$2"; RES="$3"
+[ -f "$TODO" ] || { echo "sweep_synth_task.sh: $TODO: no such file" >&2; exit 2; }
+LINE=$(sed -n "$((INDEX + 1))p" "$TODO")
+[ -n "$LINE" ] || { echo "sweep_synth_task.sh: $TODO: no task $INDEX" >&2; exit 2; }
+IFS=: read -r unit s c b n <<< "$LINE"
+OUT="$RES/synth/$unit-S$s-c$c-b$b-N$n.synth"
+mkdir -p "$RES/synth"
+if [ -f "$OUT" ] && [ "$(tail -1 "$OUT")" = "# end" ]; then
+  echo "sweep_synth_task.sh: $LINE: done already ($OUT)"
+  exit 0
+fi
+PNR=""
+[ "$unit" = trad ] && PNR=--one-pnr
+exec "$ROOT/scripts/synth.sh" --one "$LINE" --one-out "$OUT" $PNR "$RES/synth-work"
