@@ -43,12 +43,18 @@ JOBS=2
 REPORT_ONLY=0
 ONLY=""
 MERGE=0
+ONE=""       # --one UNIT:S:COORD:BOX:N  one configuration (a job of the distributed sweep)
+ONE_OUT=""   # --one-out FILE            its result file (written whole, then renamed)
+ONE_PNR=0    # --one-pnr                 also place and route it on the iCE40 HX8K (trad only: fits)
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) JOBS="$2"; shift 2 ;;
     --report-only) REPORT_ONLY=1; shift ;;
     --only) ONLY="$2"; shift 2 ;;
     --merge) MERGE=1; shift ;;
+    --one) ONE="$2"; shift 2 ;;
+    --one-out) ONE_OUT="$2"; shift 2 ;;
+    --one-pnr) ONE_PNR=1; shift ;;
     -h|--help) sed -n '2,45p' "$0"; exit 0 ;;
     *) break ;;
   esac
@@ -166,6 +172,45 @@ gen_wrapper() {  # gen_wrapper NAME TOP UNIT CONFIG [--tie PORT=VALUE ...] [--pa
 TIE_N="--tie cfg_endpoints_i=trirast_pkg::DefaultEndpoints"
 TIE_DEPTH="--tie cfg_fifo_depth_i=trirast_pkg::DefaultFifoDepth"
 
+# ---- --one: one configuration of one unit for the distributed sweep (scripts/sweep_slurm.sh) ----
+# Xilinx 7 synthesis (the sweep's area target) and, with --one-pnr, iCE40 place and route for Fmax.
+# Writes ONE_OUT: "# trirast-synth-result 1", a CSV header, one row per target, "# end".
+if [ -n "$ONE" ]; then
+  IFS=: read -r unit s c b n <<< "$ONE"
+  [ -n "$n" ] && [ -n "$ONE_OUT" ] || { echo "synth.sh: --one UNIT:S:COORD:BOX:N needs --one-out FILE" >&2; exit 2; }
+  name="$unit-S$s-c$c-b$b-N$n"
+  mkdir -p "$WORK/$name"
+  python3 "$ROOT/scripts/gen_params.py" --subpixel-bits "$s" --coord-bits "$c" --box-bits "$b" \
+    --endpoints "$n" --sv "$WORK/$name/trirast_pkg.sv"
+  t0=$(date +%s)
+  yosys_stat "$unit" "$name" xilinx
+  f="$WORK/$name/$unit.xilinx.stat"
+  fm=""
+  if [ "$ONE_PNR" = 1 ] && [ "$unit" = trad ]; then
+    # shellcheck disable=SC2086
+    gen_wrapper trirast_synth_trad trirast_trad_top trad "$name" $TIE_DEPTH
+    pnr "trad.$name" trad "$name" trirast_synth_trad "" "$WORK/$name/trirast_synth_trad.sv $ROOT/rtl/trirast_synth_shell.sv" || true
+    log="$WORK/pnr/trad.$name/nextpnr.log"
+    if [ -f "$log" ] && grep -q "Program finished normally" "$log"; then
+      fm=$(grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/")
+    fi
+  fi
+  tmp="$ONE_OUT.tmp.$$"
+  {
+    echo "# trirast-synth-result 1"
+    echo "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,box_bits,endpoints,seconds"
+    echo "$unit,$name,xilinx7,$(count '^LUT[1-6]$' "$f"),$(count '^FD[RSCPE]*$' "$f"),$(count '^CARRY4$' "$f"),$(count '^RAMB' "$f"),$(count '^DSP48' "$f"),,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    if [ -n "$fm" ]; then
+      p="$WORK/pnr/trad.$name/design.stat"
+      echo "$unit,$name,ice40-pnr,$(count '^SB_LUT4$' "$p"),$(count '^SB_DFF' "$p"),$(count '^SB_CARRY$' "$p"),0,0,$fm,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    fi
+    echo "# end"
+  } > "$tmp"
+  mv "$tmp" "$ONE_OUT"
+  echo "synth.sh: $name: $(sed -n 3p "$ONE_OUT")" >&2
+  exit 0
+fi
+
 if [ "$REPORT_ONLY" = 0 ]; then
 mkdir -p "$WORK/jobs"
 # A full run starts afresh; a partial run replaces only its own jobs' results.
@@ -281,7 +326,7 @@ if [ -n "$ONLY" ]; then  # a partial run: its results (and with --merge, the doc
     else stat="$WORK/$(echo "$job" | cut -d. -f2)/${job%%.*}.$(echo "$job" | cut -d. -f3).stat"; fi
     fm=""
     [[ "$job" == pnr.* ]] && fm=$(grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" \
-      "$WORK/pnr/${job#pnr.}/nextpnr.log" 2>/dev/null | tail -1 | sed "s/.*: //")
+      "$WORK/pnr/${job#pnr.}/nextpnr.log" 2>/dev/null | tail -1 | sed "s/.*: //" || true)
     echo "$job: $(cat "$f"); cells: $(awk '/Number of cells/ {n = $4} END {print n}' "$stat" 2>/dev/null)${fm:+; Fmax $fm}"
   done
   [ "$MERGE" = 1 ] || exit 0
@@ -298,7 +343,7 @@ ELAPSED=$(($(date +%s) - START))
 } > "$WORK/run.info"
 fi
 fi
-[ -f "$WORK/run.info" ] || { echo "synth.sh: no $WORK/run.info (run without --report-only first)" >&2; exit 2; }
+[ -f "$WORK/run.info" ] || { echo "synth.sh: no $WORK/run.info: the documents need a full run's logs in $WORK (run scripts/synth.sh $WORK once, or copy a full run's work directory there)" >&2; exit 2; }
 # shellcheck disable=SC1091
 . "$WORK/run.info"
 
@@ -431,7 +476,7 @@ OUT="$ROOT/docs/synth.md"
     echo "Then, $(run_field "$tag" FINISHED), \`$(run_field "$tag" CMDLINE)\` ($(run_field "$tag" ELAPSED) s, load"
     echo "average $(run_field "$tag" LOADAVG) at the end) redid the jobs below whose run is \`$tag\`, with the RTL at"
     echo "commit \`$(run_field "$tag" RTL_COMMIT)\`; every number from those jobs (rows of the units"
-    echo "and designs they name: $(for f in "$WORK"/jobs/*.status; do j=$(basename "$f" .status); [ "$(job_run "$j")" = "$tag" ] && printf '\`%s\` ' "$j"; done | sed 's/ $//')) is from that run, the"
+    echo "and designs they name: $(for f in "$WORK"/jobs/*.status; do j=$(basename "$f" .status); [ "$(job_run "$j")" = "$tag" ] && printf '`%s` ' "$j"; done | sed 's/ $//')) is from that run, the"
     echo "others from the run above."
   done
   echo
@@ -573,7 +618,7 @@ OUT="$ROOT/docs/synth.md"
     echo "### The half-space unit"
     echo
     echo "Placed at the default configuration (TileSize $HS_TILE, WalkZigzag $HS_ZIGZAG) once per stamp size, with"
-    echo "its setup stage (\`trirast_hs_setup_stage\`: the interface, the improved unit's, with its corner"
+    echo "its setup stage (\`trirast_hs_setup_stage\`: the improved unit's interface with its corner"
     echo "products, and the edge values at the box corner) and its tile walker with the stamp tester"
     echo "(\`trirast_hs_tile_walker\`) each alone in a wrapper, so that a unit that does not fit says which part"
     echo "does not:"
@@ -591,11 +636,20 @@ OUT="$ROOT/docs/synth.md"
     echo "- the setup stage alone (the same for every stamp size): $(hs_part halfspace.setup)."
     echo
     fs=$(pnr_fmax halfspace.setup)
-    if [ -z "$fs" ] && [ -f "$WORK/pnr/halfspace.setup/nextpnr.log" ]; then
+    nofit=""; fit=""
+    for unit in $HS_UNITS; do
+      case "$(pnr_status "$unit.walker")" in
+        "does not fit"*) nofit="$nofit ${unit#halfspace-s}" ;;
+        routed*) fit="$fit ${unit#halfspace-s}" ;;
+      esac
+    done
+    if [ "$(pnr_status halfspace.setup)" = "does not fit the HX8K" ]; then
       echo "So the part of the half-space unit that does not fit the HX8K is its setup stage, as for the"
-      echo "improved unit: iCE40 has no multipliers, and the interface's nine corner products are LUTs there."
-      echo "The walker's rows give the traversal's own Fmax on iCE40 (for information: the walker's paths"
-      echo "into the span emitter and the FIFO are timed from the wrapper's registers, not through them)."
+      echo "improved unit: iCE40 has no multipliers, and the interface's corner products are LUTs there."
+      [ -n "$fit" ] && echo "The tile walker with the stamp tester fits alone at stamp size$(echo "$fit" | sed 's/ /, /g; s/^,//')."
+      [ -n "$nofit" ] && echo "At stamp size$(echo "$nofit" | sed 's/ /, /g; s/^,//') the walker alone does not fit either (its wrapper adds a flip-flop per input bit and two per output bit)."
+      echo "The walker's Fmax is the traversal's own on iCE40, for information: its paths into the span"
+      echo "emitter and the FIFO are timed from and to the wrapper's registers, not through them."
       echo
     fi
   fi

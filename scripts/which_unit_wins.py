@@ -86,6 +86,7 @@ def scene_plot(label, rows, path):
     ax[0].set_xticks(xs)
     ax[0].set_xticklabels(["0" if x < 0 else f"2^{x}" for x in xs], rotation=90, fontsize=7)
     ax[0].set_ylabel("triangles")
+    ax[0].set_yscale("log")
     ax[0].set_title("triangle size (pixels)")
     ax[0].legend(fontsize=8)
     asp = [math.log2(int(r["box_w"]) / int(r["box_h"])) for r in rows if int(r["box_h"]) > 0
@@ -96,7 +97,7 @@ def scene_plot(label, rows, path):
         ax[1].bar(xa, [ka.count(x) for x in xa], width=0.8)
         ax[1].set_xticks(xa)
         ax[1].set_xticklabels([f"{2.0 ** x:g}" for x in xa], rotation=90, fontsize=7)
-    ax[1].set_title("box aspect w/h (nearest power of 2)")
+    ax[1].set_title("box aspect w/h (nearest power of 2; non-empty boxes)")
     ax[1].set_ylabel("triangles")
     # Mean added cycles per triangle in each box-area bin.
     xb = sorted(set(kb))
@@ -179,6 +180,21 @@ def winner_ranges(rs, units):
     return ", ".join(parts)
 
 
+def bin_ranges(changes, last):
+    """'A up to a px, B b-c px, C from d px' from the winner changes between box-area bins."""
+    if not changes:
+        return f"{LABEL[last]} at every size"
+    parts = [f"{LABEL[changes[0][2]]} up to {bin_label(changes[0][0]).split('-')[-1]} px"]
+    for i, (k0, k1, a0, b0) in enumerate(changes):
+        lo = bin_label(k1).split("-")[0]
+        if i + 1 < len(changes):
+            hi = bin_label(changes[i + 1][0]).split("-")[-1]
+            parts.append(f"{LABEL[b0]} {lo}-{hi} px")
+        else:
+            parts.append(f"{LABEL[b0]} from {lo} px")
+    return ", ".join(parts)
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--data", required=True)
@@ -232,8 +248,8 @@ def main():
     w("## Per scene: total cycles, winner, cycles x area")
     w("")
     w("Fewest cycles in **bold**. \"cycles x LUTs\" multiplies a unit's total cycles by its Xilinx 7 "
-      "LUTs (millions; DSP48 slices not counted: the improved unit uses 9, the half-space unit "
-      "the same corner products); its winner is the unit with the least work per unit of area.")
+      "LUTs (millions; the DSP48 slices of the area table are not counted); its winner is the unit "
+      "with the least work per unit of area.")
     w("")
     w("| scene | triangles | " + " | ".join(LABEL[u] for u in UNITS) +
       " | fewest cycles | fewest cycles x LUTs | " +
@@ -348,10 +364,16 @@ def main():
         k = log2bin(int(r["box_w"]) * int(r["box_h"]))
         bins.setdefault(k, []).append(r)
     w("| box area | triangles | " + " | ".join(LABEL[u] for u in UNITS) +
-      " | winner | winner, exact units | winner by cycles x LUTs |")
-    w("|---:|---:|" + "---:|" * len(UNITS) + "---|---|---|")
+      " | winner | winner, exact units | winner by cycles x LUTs | ... exact units |")
+    w("|---:|---:|" + "---:|" * len(UNITS) + "---|---|---|---|")
     prev = None
     changes = []
+    prev_e = None
+    changes_e = []  # among the exact units
+    prev_x = None
+    changes_x = []  # the same by cycles x LUTs
+    prev_xe = None
+    changes_xe = []  # ... among the exact units
     for k in sorted(bins):
         rs = bins[k]
         m = {u: sum(int(r[u]) for r in rs) / len(rs) for u in UNITS}
@@ -360,24 +382,38 @@ def main():
             if prev is not None and win != prev[1]:
                 changes.append((prev[0], k, prev[1], win))
             prev = (k, win)
+            we = winner({u: m[u] for u in exact})
+            if prev_e is not None and we != prev_e[1]:
+                changes_e.append((prev_e[0], k, prev_e[1], we))
+            prev_e = (k, we)
         mx = {u: m[u] * area[u]["xilinx7"][0] for u in UNITS if "xilinx7" in area[u]}
+        if mx and k >= 0 and len(rs) >= 20:
+            wx = winner(mx)
+            if prev_x is not None and wx != prev_x[1]:
+                changes_x.append((prev_x[0], k, prev_x[1], wx))
+            prev_x = (k, wx)
+            wxe = winner({u: v for u, v in mx.items() if u != "trad"})
+            if prev_xe is not None and wxe != prev_xe[1]:
+                changes_xe.append((prev_xe[0], k, prev_xe[1], wxe))
+            prev_xe = (k, wxe)
         w(f"| {bin_label(k) if k >= 0 else '0 (empty box)'} | {len(rs):,} | " +
           " | ".join(f"**{fmt(m[u])}**" if u == win else fmt(m[u]) for u in UNITS) +
           f" | {LABEL[win]} | {LABEL[winner({u: m[u] for u in exact})]} | "
-          f"{LABEL[winner(mx)] if mx else '-'} |")
+          f"{LABEL[winner(mx)] if mx else '-'} | "
+          f"{LABEL[winner({u: v for u, v in mx.items() if u != 'trad'})] if len(mx) > 1 else '-'} |")
     w("")
     if changes:
-        w("Winner changes between bins with at least 20 triangles: " + "; ".join(
-            f"{LABEL[a0]} up to {bin_label(k0)} px, {LABEL[b0]} from {bin_label(k1)} px"
-            for k0, k1, a0, b0 in changes) + ". (Box area 0: the box is empty, the triangle "
+        w(f"Winners over the bins with at least 20 triangles: {bin_ranges(changes, prev[1])}; "
+          f"among the exact units: {bin_ranges(changes_e, prev_e[1])}. (Box area 0: the box is empty, the triangle "
             "off-screen; the traditional unit still walks its rows.)")
         w("")
     # ---- per scene ----
     w("## Per scene: triangle sizes, box shapes and cycles")
     w("")
-    w("Left: histogram of the triangles' box areas and covered pixels (powers of 2; \"0\": no "
-      "pixel). Middle: histogram of the box aspect ratio w/h. Right: mean cycles a triangle adds, "
-      "per unit, by box-area bin (log scale).")
+    w("Left: histogram of the triangles' box areas and covered pixels (bins of powers of 2, "
+      "log scale; \"0\": an empty box, no pixel). Middle: histogram of the box aspect ratio w/h "
+      "(non-empty boxes). Right: mean cycles a triangle adds, per unit, by box-area bin (log "
+      "scale).")
     w("")
     for s in scenes:
         rows = per_scene[s["scene"]]
@@ -411,9 +447,16 @@ def main():
         S.append("- **Square boxes (sweep, w/h = 1)**, fewest cycles per triangle: "
                  f"{winner_ranges(sq, UNITS)}; among the exact units: {winner_ranges(sq, exact)}.")
     if changes:
-        S.append("- **The scenes' triangles binned by box area** (at least 20 a bin): " + "; ".join(
-            f"{LABEL[a0]} wins up to {bin_label(k0)} px, {LABEL[b0]} from {bin_label(k1)} px"
-            for k0, k1, a0, b0 in changes) + ".")
+        S.append("- **The scenes' triangles binned by box area** (at least 20 a bin), fewest "
+                 f"cycles: {bin_ranges(changes, prev[1])}; among the exact units: "
+                 f"{bin_ranges(changes_e, prev_e[1])}.")
+    if cx_all:
+        S.append("- **The same bins by cycles x Xilinx 7 LUTs**: "
+                 f"{bin_ranges(changes_x, prev_x[1])}; among the exact units: "
+                 f"{bin_ranges(changes_xe, prev_xe[1])}.")
+    S.append("- The traditional unit is not exact (docs/timing.md: it walks whole-pixel vertices and "
+             "draws its own coverage, not the rule's), so its cycles are not always for the same "
+             "pixels; hence the rankings among the exact units beside each.")
     S.append("- Why: the improved unit walks a row per cycle but sets up with divisions (at least "
              f"{min(float(r['improved']) for r in sweep):.1f} cycles per triangle in the sweep); the "
              "traditional unit sets up in 3 cycles and steps every pixel of its x-major edges; the "
