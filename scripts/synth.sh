@@ -55,7 +55,7 @@ while [ $# -gt 0 ]; do
     --one) ONE="$2"; shift 2 ;;
     --one-out) ONE_OUT="$2"; shift 2 ;;
     --one-pnr) ONE_PNR=1; shift ;;
-    -h|--help) sed -n '2,45p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,39p' "$0"; exit 0 ;;
     *) break ;;
   esac
 done
@@ -635,7 +635,6 @@ OUT="$ROOT/docs/synth.md"
     done
     echo "- the setup stage alone (the same for every stamp size): $(hs_part halfspace.setup)."
     echo
-    fs=$(pnr_fmax halfspace.setup)
     nofit=""; fit=""
     for unit in $HS_UNITS; do
       case "$(pnr_status "$unit.walker")" in

@@ -438,7 +438,7 @@ def main():
     sq = sorted([r for r in sweep if float(r["aspect"]) == 1.0], key=lambda r: float(r["mean_box"]))
     S = ["## In short", ""]
     S.append("- **Cycles, all scenes together**: " + ", ".join(
-        f"{LABEL[u]} {tot[u]:,}" for u in order) + f"; per scene the winner is in the table below.")
+        f"{LABEL[u]} {tot[u]:,}" for u in order) + "; per scene the winner is in the table below.")
     if cx_all:
         S.append("- **Cycles x Xilinx 7 LUTs, all scenes together**: " + ", ".join(
             f"{LABEL[u]} {cx_all[u] / 1e9:,.2f} G" for u in sorted(cx_all, key=lambda u: cx_all[u]))
