@@ -140,17 +140,28 @@ def sweep_plot(sweep, path):
 
 
 def crossings(rs, a, b, key="mean_box"):
-    """Box areas where sign(cycles a - cycles b) changes between consecutive sweep points."""
+    """Box areas where sign(cycles a - cycles b) changes between consecutive sweep points (points
+    where the two are equal are skipped), with the unit that needs fewer cycles above it."""
+    pts = [r for r in rs if float(r[a]) != float(r[b])]
     out = []
-    for r0, r1 in zip(rs, rs[1:]):
+    for r0, r1 in zip(pts, pts[1:]):
         d0 = float(r0[a]) - float(r0[b])
         d1 = float(r1[a]) - float(r1[b])
-        if (d0 < 0) != (d1 < 0) and d0 != 0 and d1 != 0:
+        if (d0 < 0) != (d1 < 0):
             # log-linear interpolation of the zero of the difference
             x0, x1 = math.log2(float(r0[key])), math.log2(float(r1[key]))
             x = x0 + (x1 - x0) * d0 / (d0 - d1)
-            out.append((2 ** x, float(r0[key]), float(r1[key]), b if d0 > 0 else a))
+            out.append((2 ** x, float(r0[key]), float(r1[key]), a if d1 < 0 else b))
     return out
+
+
+def no_crossing(rs, a, b):
+    """The phrase for a pair without a crossover: who needs fewer cycles at every size."""
+    d = [float(r[a]) - float(r[b]) for r in rs]
+    if all(v == 0 for v in d):
+        return "equal at every size"
+    lead = a if all(v <= 0 for v in d) else b
+    return f"{LABEL[lead]} at every size" + (" (equal at some)" if any(v == 0 for v in d) else "")
 
 
 def trad_short(r):
@@ -221,6 +232,11 @@ def main():
       "ready; the half-space unit with tile 8 and the zig-zag walk at stamp sizes 1, 2 and 4 (S1, "
       "S2, S4). The areas are the default configuration's rows of [synth.csv](synth.csv) "
       "(scripts/synth.sh; [synth.md](synth.md) names the command and run behind each row).")
+    w("")
+    w("A scene's totals are what `trirast raster --engine E --scene SCENE --cycles FILE.csv` "
+      "reports for it (1 + the largest `done_cycle`), E = `improved-sc`, `trad-sc` or "
+      "`halfspace-sc --stamp S` (`model` and `trad` in trees before the engine names "
+      "`<unit>-<view>`); the tool calls the same SystemC models directly.")
     w("")
     w("Per triangle, a unit's cycles are what the triangle adds to the scene's total: its done "
       "cycle minus the latest done cycle of the triangles completed before it (so a scene's "
@@ -339,8 +355,7 @@ def main():
         for p, q in pairs:
             cs = crossings(rs, p, q)
             if not cs:
-                c0 = {u: float(rs[0][u]) for u in (p, q)}
-                w(f"| {x:g} | {LABEL[p]} vs {LABEL[q]} | none | | {LABEL[winner(c0)]} at every size |")
+                w(f"| {x:g} | {LABEL[p]} vs {LABEL[q]} | none | | {no_crossing(rs, p, q)} |")
             for at, lo, hi, up in cs:
                 w(f"| {x:g} | {LABEL[p]} vs {LABEL[q]} | **{at:,.0f}** | {lo:,.0f} .. {hi:,.0f} | "
                   f"{LABEL[up]} |")
