@@ -233,6 +233,12 @@ def main():
       "S2, S4). The areas are the default configuration's rows of [synth.csv](synth.csv) "
       "(scripts/synth.sh; [synth.md](synth.md) names the command and run behind each row).")
     w("")
+    w("Scenes: those of [cycles-improved-vs-trad.md](cycles-improved-vs-trad.md) (the five "
+      "benchmark scenes, the built-in sphere, torus and surface meshes, tests/data/cube.obj) and "
+      "the meshes of Debian's assimp-testmodels that scripts/which_unit_wins.sh passes "
+      "(/usr/share/assimp/models/OBJ/WusonOBJ.obj and spider.obj), each through the default mesh "
+      "camera.")
+    w("")
     w("A scene's totals are what `trirast raster --engine E --scene SCENE --cycles FILE.csv` "
       "reports for it (1 + the largest `done_cycle`), E = `improved-sc`, `trad-sc` or "
       "`halfspace-sc --stamp S` (`model` and `trad` in trees before the engine names "
