@@ -34,7 +34,8 @@
 #     * the whole traditional unit (trirast_synth_trad) at every configuration;
 #     * the whole half-space unit (trirast_synth_hs_sS) at the default configuration, per stamp
 #       size; its setup stage (trirast_synth_hs_setup) and its tile walker with the stamp tester
-#       (trirast_synth_hs_walker_sS, per stamp size) alone, which say which part does not fit.
+#       (trirast_synth_hs_walker_sS, per stamp size) alone, which say which part does not fit;
+#       and the whole half-space unit per stamp size at FIT_CONFIG, as the improved unit.
 #   --timing-allow-fail only so that a report is written; a design that does not reach the 12 MHz
 #   request is reported as failing, never as met. Fmax is nextpnr's last "Max frequency" line.
 set -euo pipefail
@@ -244,9 +245,12 @@ fi
 for unit in $HS_UNITS; do
   read -r s t z <<< "$(hs_params "$unit")"
   # shellcheck disable=SC2086
-  wanted "pnr.$unit.default" && { gen_wrapper "trirast_synth_hs_s$s" trirast_hs_top "$unit" default $TIE_DEPTH \
-    --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
-    echo "synth.sh: half-space wrapper (stamp $s) failed" >&2; }
+  for cfg in default "$FIT_CONFIG"; do
+    # shellcheck disable=SC2086
+    wanted "pnr.$unit.$cfg" && { gen_wrapper "trirast_synth_hs_s$s" trirast_hs_top "$unit" "$cfg" $TIE_DEPTH \
+      --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
+      echo "synth.sh: half-space wrapper (stamp $s, $cfg) failed" >&2; }
+  done
 done
 for unit in $HS_UNITS; do
   read -r s t z <<< "$(hs_params "$unit")"
@@ -287,6 +291,12 @@ for unit in $HS_UNITS; do
   [ -f "$WORK/default/trirast_synth_hs_walker_s$s.sv" ] &&
     run_job "pnr.$unit.walker" pnr "$unit.walker" "$unit" default "trirast_synth_hs_walker_s$s" "" \
       "$SHELL_SV $WORK/default/trirast_synth_hs_walker_s$s.sv"
+done
+for unit in $HS_UNITS; do
+  s="${unit#halfspace-s}"
+  [ -f "$WORK/$FIT_CONFIG/trirast_synth_hs_s$s.sv" ] &&
+    run_job "pnr.$unit.$FIT_CONFIG" pnr "$unit.$FIT_CONFIG" "$unit" "$FIT_CONFIG" "trirast_synth_hs_s$s" "" \
+      "$SHELL_SV $WORK/$FIT_CONFIG/trirast_synth_hs_s$s.sv"
 done
 [ -f "$WORK/default/trirast_synth_hs_setup.sv" ] &&
   run_job pnr.halfspace.setup pnr halfspace.setup "${HS_UNITS%% *}" default trirast_synth_hs_setup "" \
@@ -385,6 +395,8 @@ pnr_status() {  # a phrase: met / failing / did not fit / failed
   elif grep -qi "unable to place\|Design uses .* cells which is more than\|too many" "$log" ||
        { [ -n "$lc" ] && [ "${lc%%/*}" -gt "${lc##*/}" ]; }; then
     echo "does not fit the HX8K"
+  elif grep -q "^Info: Routing" "$log"; then
+    echo "placed, routing did not complete"
   else
     echo "nextpnr failed (see $log)"
   fi
@@ -452,6 +464,11 @@ CSV="$ROOT/docs/synth.csv"
   for st in halfspace.setup $(for u in $HS_UNITS; do echo "$u.walker"; done); do
     f="$WORK/pnr/$st/design.stat"
     [ -f "$f" ] && echo "$st,default,ice40-wrapped,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$(pnr_fmax "$st")"
+  done
+  # The whole half-space unit at FIT_CONFIG, placed (no unwrapped synthesis at that configuration).
+  for u in $HS_UNITS; do
+    f="$WORK/pnr/$u.$FIT_CONFIG/design.stat"
+    [ -f "$WORK/jobs/pnr.$u.$FIT_CONFIG.status" ] && [ -f "$f" ] && echo "$u,$FIT_CONFIG,ice40-wrapped,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$(pnr_fmax "$u.$FIT_CONFIG")"
   done
   true
 } > "$CSV"
@@ -566,12 +583,15 @@ OUT="$ROOT/docs/synth.md"
   [ -n "$HS_UNITS" ] && [ -f "$WORK/jobs/pnr.halfspace.setup.status" ] &&
     pnr_row halfspace.setup "half-space setup stage (interface, edge values at the box corner)" default
   for unit in $HS_UNITS; do
+    [ -f "$WORK/jobs/pnr.$unit.$FIT_CONFIG.status" ] && pnr_row "$unit.$FIT_CONFIG" "whole half-space unit, stamp ${unit#halfspace-s}x${unit#halfspace-s}, tile $HS_TILE" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
+  done
+  for unit in $HS_UNITS; do
     [ -f "$WORK/jobs/pnr.$unit.walker.status" ] && pnr_row "$unit.walker" "half-space tile walker + stamp tester alone, stamp ${unit#halfspace-s}x${unit#halfspace-s}" default
   done
   echo
   echo "Critical paths (nextpnr's first source and last sink cell of the worst path):"
   echo
-  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done); do
+  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done) $(for u in $HS_UNITS; do echo "$u.$FIT_CONFIG"; done); do
     p=$(pnr_path "$d")
     [ -n "$p" ] && echo "- \`$d\`: \`$p\`"
   done
@@ -634,6 +654,18 @@ OUT="$ROOT/docs/synth.md"
       echo "- stamp ${st}x$st: the whole unit $(hs_part "$unit.default"); the tile walker + stamp tester alone $(hs_part "$unit.walker")."
     done
     echo "- the setup stage alone (the same for every stamp size): $(hs_part halfspace.setup)."
+    for unit in $HS_UNITS; do
+      st="${unit#halfspace-s}"
+      echo "- stamp ${st}x$st, the whole unit at the $FIT_CONFIG configuration (as the improved unit above): $(hs_part "$unit.$FIT_CONFIG")."
+    done
+    for unit in $HS_UNITS; do
+      if [ "$(pnr_status "$unit.$FIT_CONFIG")" = "placed, routing did not complete" ]; then
+        echo
+        echo "(\"routing did not complete\": nextpnr's router stopped converging on the nearly full device,"
+        echo "its unrouted and overused wire counts unchanged over millions of iterations, and the run was"
+        echo "stopped: see \`pnr/$unit.$FIT_CONFIG/nextpnr.log\` in the work directory.)"
+      fi
+    done
     echo
     nofit=""; fit=""
     for unit in $HS_UNITS; do
