@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Synthesis of the units' RTL (rtl/) and place and route for Fmax; writes docs/synth.md and
 # docs/synth.csv (unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz; app/sweep/sweep_area.cpp reads it).
-#   scripts/synth.sh [--jobs J] [WORKDIR]     (default build/synth, J = 2; 15-25 minutes on 2 cores)
+#   scripts/synth.sh [--jobs J] [WORKDIR]     (default build/synth, J = 2; on 2 cores shared at load
+#                                              4-5: 36 minutes for the improved and traditional
+#                                              units, about 50 more for the half-space unit's jobs)
 #   scripts/synth.sh --report-only [WORKDIR]  (rewrite the two documents from WORKDIR's logs of the
 #                                              last full run, without running the tools)
 #   scripts/synth.sh --only REGEX [WORKDIR]   (only the jobs whose names match REGEX, e.g.
@@ -36,6 +38,8 @@
 #       size; its setup stage (trirast_synth_hs_setup) and its tile walker with the stamp tester
 #       (trirast_synth_hs_walker_sS, per stamp size) alone, which say which part does not fit;
 #       and the whole half-space unit per stamp size at FIT_CONFIG, as the improved unit.
+#   PNR_TIMEOUT=SECONDS in the environment stops a place and route that takes longer (its router
+#   can stop converging on a nearly full device: the half-space unit at stamp 4, FIT_CONFIG).
 #   --timing-allow-fail only so that a report is written; a design that does not reach the 12 MHz
 #   request is reported as failing, never as met. Fmax is nextpnr's last "Max frequency" line.
 set -euo pipefail
@@ -56,7 +60,7 @@ while [ $# -gt 0 ]; do
     --one) ONE="$2"; shift 2 ;;
     --one-out) ONE_OUT="$2"; shift 2 ;;
     --one-pnr) ONE_PNR=1; shift ;;
-    -h|--help) sed -n '2,39p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,/^[^#]/p' "$0" | sed '$d'; exit 0 ;;
     *) break ;;
   esac
 done
@@ -158,7 +162,8 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
   # combinational in the unit, so block RAM would change its timing).
   yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl $(sources "$unit" "$cfg") $extra;
     $pre synth_ice40 -nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
-  nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" --pcf-allow-unconstrained \
+  # PNR_TIMEOUT (seconds, environment; 0 or unset = none) stops a router that no longer converges.
+  timeout "${PNR_TIMEOUT:-0}" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" --pcf-allow-unconstrained \
     --freq "$PNR_FREQ" --seed 1 --timing-allow-fail --log "$d/nextpnr.log" >/dev/null 2>&1
 }
 
