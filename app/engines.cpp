@@ -8,8 +8,10 @@
 
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
+#include "unit/halfspace_unit.hpp"
 #include "unit/improved_unit.hpp"
 #include "verilator/rtl_engine.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "verilator/rtl_trad_engine.hpp"
 
 namespace trirast {
@@ -33,6 +35,16 @@ const std::vector<EngineInfo>& engine_registry() {
       {"trad-rtl",
        "traditional Bresenham unit, Verilated RTL (rtl/trirast_trad.f): trad-sc's spans and cycles",
        false, make_rtl_trad_engine, /*timed=*/true},
+      {"halfspace-datapath",
+       "half-space (edge-function) tile unit, bit-accurate datapath, untimed (docs/unit.md)", true,
+       make_halfspace_engine},
+      {"halfspace-sc",
+       "half-space tile unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
+       true, make_halfspace_model_engine, /*timed=*/true},
+      {"halfspace-rtl",
+       "half-space tile unit, Verilated RTL (rtl/trirast_halfspace.f): halfspace-sc's spans and "
+       "cycles",
+       true, make_rtl_halfspace_engine, /*timed=*/true},
       {"float-scanline",
        "float scanline with the top-left rule as ceil(x - 0.5): a CPU baseline, not exact", false,
        make_float_scanline_engine},

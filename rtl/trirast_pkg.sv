@@ -24,6 +24,11 @@ package trirast_pkg;
   localparam int TagBits = 32;  // bits of the triangle tag carried with every span
   localparam int DefaultEndpoints = 1;  // N of the default (synthesized) unit
   localparam int DefaultFifoDepth = 8;  // DEPTH of the default (synthesized) unit
+  localparam int HsEdgeBits1 = 50;  // half-space corner values, unit side 1 (docs/unit.md)
+  localparam int HsEdgeBits2 = 50;  // half-space corner values, unit side 2 (docs/unit.md)
+  localparam int HsEdgeBits4 = 50;  // half-space corner values, unit side 4 (docs/unit.md)
+  localparam int HsEdgeBits8 = 50;  // half-space corner values, unit side 8 (docs/unit.md)
+  localparam int HsEdgeBits16 = 50;  // half-space corner values, unit side 16 (docs/unit.md)
 
   // ---- what one edge says about a row (docs/unit.md, section 4) ----
   // (plain constants, not an enum: Icarus 11 crashes on arrays of enums)

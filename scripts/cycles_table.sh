@@ -17,9 +17,9 @@ fi
 table="$(SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$build/trirast_sc_cycles_table" "$root")"
 tmp="$out.tmp"
 cat >"$tmp" <<DOC
-# Improved vs traditional Bresenham unit, in cycles
+# Improved vs traditional Bresenham unit (and the half-space tile unit), in cycles
 
-Made by \`scripts/cycles_table.sh\` (SystemC models of both units, docs/timing.md; 1024x768, S = 8,
+Made by \`scripts/cycles_table.sh\` (SystemC models of the three units, docs/timing.md; 1024x768, S = 8,
 default camera; N = 1, FIFO 8, sink always ready, boundary \`step\` unless the column says
 otherwise). "improved vs trad" is \`(trad - improved) / trad\`: positive when the improved unit
 needs fewer cycles. The paper (Zhang & Ruan, "A triangle rasterization based on improved
@@ -44,6 +44,11 @@ low-poly meshes, whole-screen and off-screen parts), and loses where triangles a
 (high-poly far, dense meshes), where even a short division per edge costs more than the
 traditional unit's few steps. N = 4 changes little while the set-up is the bottleneck; \`divide\`
 mode trades boundary steps for a third division, which helps tall boxes only.
+
+The half-space tile unit (docs/timing.md, "The half-space unit"; \`--stamp\`, \`--tile\`,
+\`--hs-walk\`) has a 2-cycle set-up (no divider) and walks its box: one cycle per tile test and per
+stamp of a partial tile, one span per cycle out of a band buffer. "half-space vs improved" is
+\`(improved - half-space) / improved\`: positive when the half-space unit needs fewer cycles.
 DOC
 mv "$tmp" "$out"
 echo "cycles_table: wrote $out"

@@ -56,6 +56,17 @@ def derive(base):
         "DefaultEndpoints": (base["endpoints"], "N of the default (synthesized) unit"),
         "DefaultFifoDepth": (base["fifo_depth"], "DEPTH of the default (synthesized) unit"),
     }
+    # The half-space unit's corner values, per unit side U (model/unit/unit_widths.cpp
+    # hs_edge_bits, which explains the bound): |E| <= 2 (2^p - 1) reach + 1.
+    lim = 1 << (base["coord_int_bits"] - 1)
+    for u in (1, 2, 4, 8, 16):
+        one, half = 1 << frac, 1 << (frac - 1)
+        up = lambda v: (v + u - 1) // u * u
+        reach = max((up(min(1 << box, lim)) - 1) * one + half + lim * one,
+                    up(min(1 << box, lim - 1)) * one)
+        bound = 2 * ((1 << p) - 1) * reach + 1
+        d[f"HsEdgeBits{u}"] = (bound.bit_length() + 1,
+                               f"half-space corner values, unit side {u} (docs/unit.md)")
     if not (0 <= s <= 8 and 2 <= base["coord_int_bits"] <= 24 and 1 <= box <= 14):
         raise SystemExit("gen_params.py: configuration outside the ranges RasterConfig accepts")
     if d["EdgeBits"][0] > 63:

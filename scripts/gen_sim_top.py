@@ -37,7 +37,10 @@ def main():
     if not m:
         sys.exit(f"gen_sim_top.py: {a.dut}: no ANSI header of module {a.top}")
     params_text, ports_text = m.group(2) or "", m.group(3)
-    params = re.findall(r"parameter\s+(?:int\s+)?(\w+)\s*=", params_text)
+    # parameter [type] [range] NAME = ...
+    params = re.findall(r"parameter\s+(?:\w+\s+)?(?:\[[^\]]*\]\s*)?(\w+)\s*=", params_text)
+    if len(params) != len(re.findall(r"\bparameter\b", params_text)):
+        sys.exit(f"gen_sim_top.py: {a.dut}: cannot read every parameter of {a.top}")
     ports = []  # (direction, range, name)
     for line in ports_text.splitlines():
         line = line.split("//")[0].strip()

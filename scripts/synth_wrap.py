@@ -9,10 +9,11 @@ timing paths are TOP's own and the wrapper needs five pins. The first input port
 bits of the input register, the first output port the highest bits of the output word.
 
   scripts/synth_wrap.py --json TOP.json --top TOP --name WRAPPER --out WRAPPER.sv \
-      [--tie PORT=VALUE ...]
+      [--tie PORT=VALUE ...] [--param NAME=VALUE ...]
 
 VALUE is a number or a constant expression (e.g. trirast_pkg::DefaultEndpoints), cast to the
-port's width.
+port's width. --param overrides a parameter of TOP in the instance (e.g. StampSize=4); the port
+list must not depend on it (it is read from TOP at its defaults).
 """
 import argparse
 import json
@@ -29,6 +30,8 @@ def main():
     ap.add_argument("--reset", default="rst_ni")
     ap.add_argument("--tie", action="append", default=[],
                     help="PORT=VALUE (a number or a constant expression)")
+    ap.add_argument("--param", action="append", default=[],
+                    help="NAME=VALUE: a parameter override on the instance of TOP")
     a = ap.parse_args()
     with open(a.json) as f:
         mods = json.load(f)["modules"]
@@ -39,6 +42,10 @@ def main():
     if bad:
         sys.exit(f"synth_wrap.py: --tie {bad[0]}: expected PORT=VALUE")
     ties = dict(t.split("=", 1) for t in a.tie)
+    bad = [p for p in a.param if "=" not in p]
+    if bad:
+        sys.exit(f"synth_wrap.py: --param {bad[0]}: expected NAME=VALUE")
+    params = [p.split("=", 1) for p in a.param]
     ins, outs = [], []
     for name, p in top["ports"].items():
         w = len(p["bits"])
@@ -85,7 +92,10 @@ def main():
         L.append("  assign unused_dut_in = dut_in[0];")
     for n, _ in outs:
         conns.append(f"    .{n} (o_{n})")
-    L.append(f"  {a.top} u_dut (")
+    if params:
+        L.append(f"  {a.top} #(" + ", ".join(f".{n} ({v})" for n, v in params) + ") u_dut (")
+    else:
+        L.append(f"  {a.top} u_dut (")
     L.append(",\n".join(conns))
     L.append("  );")
     L.append("  assign dut_out = {" + ", ".join(f"o_{n}" for n, _ in outs) + "};")

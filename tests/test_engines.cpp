@@ -32,7 +32,9 @@ std::vector<std::string> acceptance_scenes() {
 }
 
 // Engines whose whole-suite runs are long get the same scenes in their own test programs.
-bool runs_here(const EngineInfo& e) { return e.name != "improved-rtl" && e.name != "trad-rtl"; }
+bool runs_here(const EngineInfo& e) {
+  return e.name != "improved-rtl" && e.name != "trad-rtl" && e.name != "halfspace-rtl";
+}
 
 TEST(ExactEngines, AgreeWithGoldenOnEveryAcceptanceScene) {
   const EngineInfo* golden = find_engine("golden");

@@ -18,6 +18,7 @@
 #include "core/span_diff.hpp"
 #include "golden/golden.hpp"
 #include "fuzz/fuzz_scene.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "scene/scene.hpp"
 #include "reference/reference_raster.hpp"
 #include "support/run_command.hpp"
@@ -225,18 +226,30 @@ TEST(FuzzGenerator, DeterministicAndByteDecoderIsTotal) {
 // ---- in process: the engines against the golden ------------------------------------------------
 
 TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
-  // A few seconds of what `trirast fuzz` does, in process, on a fixed seed.
+  // A few seconds of what `trirast fuzz` does, in process, on a fixed seed. The half-space
+  // engines walk a box a tile or a stamp per cycle (their time grows with the box area, not its
+  // height): they run the scenes of viewports up to 512 x 512 pixels here (trirast fuzz runs them on
+  // every scene).
   const std::vector<const EngineInfo*> engines = exact_engines();
+  std::vector<const EngineInfo*> without_hs;
+  for (const EngineInfo* e : engines)
+    if (e->name.rfind("halfspace-", 0) != 0) without_hs.push_back(e);
   ASSERT_GE(engines.size(), 2u);
-  uint64_t triangles = 0, pixels = 0;
+  ASSERT_GT(engines.size(), without_hs.size());
+  uint64_t triangles = 0, pixels = 0, hs_scenes = 0;
   std::map<std::string, int> skipped;  // scenes an engine's build does not cover (the rtl's widths)
   for (uint64_t scene = 0; scene < 3000; ++scene) {
     RngDraws d(0xfeed0000 + scene);
-    const RasterConfig cfg = draw_fuzz_config(d);
+    RasterConfig cfg = draw_fuzz_config(d);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(d, cfg, 100);
+    // As trirast fuzz: the half-space unit's parameters among halfspace-rtl's builds.
+    draw_fuzz_hs_config(d, cfg, rtl::halfspace_built_params(cfg));
     uint64_t p = 0;
     std::vector<std::string> skips;
-    const std::vector<FuzzDisagreement> found = check_engines(tris, cfg, engines, &p, &skips);
+    const bool hs = int64_t(cfg.width) * cfg.height <= 512 * 512;
+    hs_scenes += hs;
+    const std::vector<FuzzDisagreement> found =
+        check_engines(tris, cfg, hs ? engines : without_hs, &p, &skips);
     for (const std::string& e : skips) ++skipped[e];
     triangles += tris.size();
     pixels += p;
@@ -247,11 +260,14 @@ TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
   }
   EXPECT_GT(triangles, 60000u);
   EXPECT_GT(pixels, 1000000u);
-  // Only an engine built for fixed widths skips, and it still runs a good share of the scenes.
+  // Only the engines built for fixed widths skip (the half-space one never for its stamp, tile
+  // or walk: they are drawn among its builds), and they still run a good share of the scenes.
   for (const auto& [engine, n] : skipped) {
-    EXPECT_EQ(engine, "improved-rtl");
+    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl") << engine;
     EXPECT_LT(n, 3000 * 7 / 10) << engine;
   }
+  EXPECT_GT(hs_scenes, 600u);
+  EXPECT_LT(skipped["halfspace-rtl"], hs_scenes * 7 / 10);
 }
 
 TEST(FuzzDifferential, CheckerCatchesWrongEnginesAndReducesToTheCulprit) {

@@ -1,4 +1,4 @@
-// The improved unit against the traditional one in cycles (scripts/cycles_table.sh writes the
+// The improved unit against the traditional one and the half-space tile unit in cycles (scripts/cycles_table.sh writes the
 // output to docs/cycles-improved-vs-trad.md): the five seed-000 scene analogues and meshes, both
 // SystemC models with the default parameters (N = 1, FIFO 8, sink always ready), and the improved
 // unit with N = 4 and in divide mode beside them.
@@ -52,9 +52,10 @@ int sc_main(int argc, char** argv) {
   std::printf(
       "| scene | triangles | improved cycles | trad cycles | improved vs trad | improved cyc/tri "
       "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide | "
-      "improved fixed divider |\n");
-  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|\n");
-  uint64_t sum_i = 0, sum_t = 0;
+      "improved fixed divider | half-space cycles (S2 T8 zigzag) | half-space vs improved | "
+      "half-space cyc/tri (setup, walk) | half-space S4 T16 | half-space S1 no tiles |\n");
+  std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
+  uint64_t sum_i = 0, sum_t = 0, sum_h = 0;
   for (const Entry& e : scenes) {
     RasterConfig cfg;
     Scene scene;
@@ -79,19 +80,35 @@ int sc_main(int argc, char** argv) {
     RasterConfig cfgf = cfg;
     cfgf.divider = DividerMode::Fixed;
     const Run ifx = run(*model, setup, cfgf);
+    auto hs = make_halfspace_model_engine();
+    const Run h = run(*hs, setup, cfg);
+    RasterConfig cfgh4 = cfg;
+    cfgh4.hs_stamp = 4;
+    cfgh4.hs_tile = 16;
+    const Run h4 = run(*hs, setup, cfgh4);
+    RasterConfig cfgh1 = cfg;
+    cfgh1.hs_stamp = 1;
+    cfgh1.hs_tile = 0;
+    const Run h1 = run(*hs, setup, cfgh1);
     sum_i += i.cycles;
     sum_t += t.cycles;
+    sum_h += h.cycles;
     std::printf(
         "| %s | %zu | %llu | %llu | %s | %.1f (%.1f, %.1f) | %.1f (%.1f, %.1f) | %llu | %llu | "
-        "%llu |\n",
+        "%llu | %llu | %s | %.1f (%.1f, %.1f) | %llu | %llu |\n",
         e.label.c_str(), setup.tris.size(), (unsigned long long)i.cycles,
         (unsigned long long)t.cycles, pct(double(i.cycles), double(t.cycles)).c_str(),
         double(i.cycles) / n, double(i.setup_busy) / n, double(i.walk_busy) / n,
         double(t.cycles) / n, double(t.setup_busy) / n, double(t.walk_busy) / n,
         (unsigned long long)i4.cycles, (unsigned long long)id.cycles,
-        (unsigned long long)ifx.cycles);
+        (unsigned long long)ifx.cycles, (unsigned long long)h.cycles,
+        pct(double(h.cycles), double(i.cycles)).c_str(), double(h.cycles) / n,
+        double(h.setup_busy) / n, double(h.walk_busy) / n, (unsigned long long)h4.cycles,
+        (unsigned long long)h1.cycles);
   }
-  std::printf("| **all** | | %llu | %llu | %s | | | | | |\n", (unsigned long long)sum_i,
-              (unsigned long long)sum_t, pct(double(sum_i), double(sum_t)).c_str());
+  std::printf("| **all** | | %llu | %llu | %s | | | | | | %llu | %s | | | |\n",
+              (unsigned long long)sum_i, (unsigned long long)sum_t,
+              pct(double(sum_i), double(sum_t)).c_str(), (unsigned long long)sum_h,
+              pct(double(sum_h), double(sum_i)).c_str());
   return 0;
 }

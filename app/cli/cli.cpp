@@ -54,6 +54,9 @@ std::vector<OptionSpec> scene_options() {
       {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
       {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
       {"--divider", "MODE", "unit: divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
+      {"--stamp", "S", "half-space unit: stamp of S x S pixels tested per cycle, 1 | 2 | 4", "2"},
+      {"--tile", "T", "half-space unit: tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
+      {"--hs-walk", "ORDER", "half-space unit: tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
       {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
@@ -72,7 +75,15 @@ RasterConfig config_from(const Args& a) {
   cfg.endpoints = int(a.get_int("--endpoints", 1, 4));
   cfg.fifo_depth = int(a.get_int("--fifo-depth", 1, 1024));
   cfg.sink_stall = a.get("--sink-stall");
+  cfg.hs_stamp = int(a.get_int("--stamp", 1, 4));
   try {
+    const std::string tile = a.get("--tile");
+    if (tile == "none") {
+      cfg.hs_tile = 0;
+    } else {
+      cfg.hs_tile = int(a.get_int("--tile", 8, 16));
+    }
+    cfg.hs_walk = parse_hs_walk(a.get("--hs-walk"));
     cfg.cull = parse_cull_mode(a.get("--cull"));
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
     cfg.divider = parse_divider_mode(a.get("--divider"));

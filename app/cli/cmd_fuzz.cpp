@@ -20,6 +20,7 @@
 #include "io/output_file.hpp"
 #include "util.hpp"
 #include "verilator/rtl_builds.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 
 namespace trirast {
 
@@ -166,25 +167,41 @@ int cmd_fuzz(int argc, char** argv) {
 
   std::string engine_list;
   for (const std::string& n : names) engine_list += (engine_list.empty() ? "" : ",") + n;
-  // With an RTL engine among them, the widths are those of its Verilated builds (every width
-  // configuration of docs/synth.md), so that no scene skips it.
+  // With RTL engines among them, the widths are those every one of them has a Verilated build
+  // of (for the improved and traditional units: every width configuration of docs/synth.md), so
+  // that no scene skips them.
+  auto same = [](const FuzzWidths& a, const FuzzWidths& b) {
+    return a.subpixel_bits == b.subpixel_bits && a.coord_int_bits == b.coord_int_bits &&
+           a.box_bits == b.box_bits;
+  };
   std::vector<FuzzWidths> widths;
-  for (const EngineInfo* info : engines)
-    if (info->name.size() > 4 && info->name.compare(info->name.size() - 4, 4, "-rtl") == 0 &&
-        widths.empty())
-      for (const rtl::RtlBuild& b : rtl::improved_builds()) {
-        const FuzzWidths w{b.subpixel_bits, b.coord_int_bits, b.box_bits};
-        if (std::none_of(widths.begin(), widths.end(), [&](const FuzzWidths& o) {
-              return o.subpixel_bits == w.subpixel_bits && o.coord_int_bits == w.coord_int_bits &&
-                     o.box_bits == w.box_bits;
-            }))
-          widths.push_back(w);
-      }
+  bool any_rtl = false;
+  for (const EngineInfo* info : engines) {
+    const std::vector<rtl::RtlBuild>* builds = info->name == "improved-rtl"    ? &rtl::improved_builds()
+                                               : info->name == "trad-rtl"      ? &rtl::trad_builds()
+                                               : info->name == "halfspace-rtl" ? &rtl::halfspace_builds()
+                                                                               : nullptr;
+    if (!builds) continue;
+    std::vector<FuzzWidths> own;
+    for (const rtl::RtlBuild& b : *builds) {
+      const FuzzWidths w{b.subpixel_bits, b.coord_int_bits, b.box_bits};
+      if (std::none_of(own.begin(), own.end(), [&](const FuzzWidths& o) { return same(o, w); }) &&
+          (!any_rtl || std::any_of(widths.begin(), widths.end(),
+                                   [&](const FuzzWidths& o) { return same(o, w); })))
+        own.push_back(w);
+    }
+    widths = own;
+    any_rtl = true;
+  }
+  if (any_rtl && widths.empty())
+    throw UsageError("trirast fuzz: --engines: the RTL engines among them have no width "
+                     "configuration in common");
   std::fprintf(stderr, "fuzz: seed %llu, engines %s, widths %s, %s\n", (unsigned long long)seed,
                engine_list.c_str(), widths.empty() ? "any" : "of the RTL builds",
                time_limited ? (std::to_string(seconds) + " s").c_str()
                             : (std::to_string(max_scenes) + " scenes").c_str());
 
+  const bool hs_rtl = std::find(names.begin(), names.end(), "halfspace-rtl") != names.end();
   const auto t0 = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   double next_report = 1.0;
@@ -198,8 +215,12 @@ int cmd_fuzz(int argc, char** argv) {
          (!time_limited || elapsed() < double(seconds))) {
     const uint64_t n = scenes++;
     RngDraws draws(scene_seed(seed, n));
-    const RasterConfig cfg = draw_fuzz_config(draws, widths);
+    RasterConfig cfg = draw_fuzz_config(draws, widths);
     const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris));
+    // The half-space unit's stamp, tile and walk: among halfspace-rtl's builds of these widths
+    // when it runs (it then never skips a scene for them), else among all.
+    draw_fuzz_hs_config(draws, cfg,
+                        hs_rtl ? rtl::halfspace_built_params(cfg) : std::vector<HsParams>{});
     triangles += tris.size();
     uint64_t golden_pixels = 0;
     std::vector<std::string> skipped;

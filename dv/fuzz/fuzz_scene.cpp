@@ -409,7 +409,31 @@ std::string config_options(const RasterConfig& cfg) {
          std::to_string(cfg.coord_int_bits) + " --box-bits " + std::to_string(cfg.box_bits) +
          " --boundary " + boundary_mode_name(cfg.boundary) + " --cull " + cull_mode_name(cfg.cull) +
          " --endpoints " + std::to_string(cfg.endpoints) + " --fifo-depth " +
-         std::to_string(cfg.fifo_depth) + " --sink-stall " + cfg.sink_stall;
+         std::to_string(cfg.fifo_depth) + " --sink-stall " + cfg.sink_stall + hs_options(cfg);
+}
+
+std::string hs_options(const RasterConfig& cfg) {
+  const RasterConfig d;
+  if (cfg.hs_stamp == d.hs_stamp && cfg.hs_tile == d.hs_tile && cfg.hs_walk == d.hs_walk)
+    return "";
+  return " --stamp " + std::to_string(cfg.hs_stamp) + " --tile " +
+         (cfg.hs_tile ? std::to_string(cfg.hs_tile) : std::string("none")) + " --hs-walk " +
+         hs_walk_name(cfg.hs_walk);
+}
+
+void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<HsParams>& among) {
+  if (!among.empty()) {
+    const HsParams& c = among[d.below(among.size())];
+    cfg.hs_stamp = c.stamp;
+    cfg.hs_tile = c.tile;
+    cfg.hs_walk = c.walk;
+  } else {
+    static const int stamps[] = {1, 2, 4}, tiles[] = {0, 8, 16};
+    cfg.hs_stamp = stamps[d.below(3)];
+    cfg.hs_tile = tiles[d.below(3)];
+    cfg.hs_walk = d.chance(50) ? HsWalk::Zigzag : HsWalk::Row;
+  }
+  cfg.validate();
 }
 
 RasterConfig parse_config_options(const std::string& options) {
@@ -440,6 +464,9 @@ RasterConfig parse_config_options(const std::string& options) {
     else if (key == "--endpoints") cfg.endpoints = to_int(key, value);
     else if (key == "--fifo-depth") cfg.fifo_depth = to_int(key, value);
     else if (key == "--sink-stall") cfg.sink_stall = value;
+    else if (key == "--stamp") cfg.hs_stamp = to_int(key, value);
+    else if (key == "--tile") cfg.hs_tile = value == "none" ? 0 : to_int(key, value);
+    else if (key == "--hs-walk") cfg.hs_walk = parse_hs_walk(value);
     else throw std::invalid_argument("unknown option '" + key + "'");
   }
   cfg.validate();

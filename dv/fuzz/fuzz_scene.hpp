@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/config.hpp"
+#include "unit/halfspace_setup.hpp"
 #include "core/engine.hpp"
 #include "core/setup.hpp"
 #include "scene/rng.hpp"
@@ -100,8 +101,16 @@ InputTriangle draw_fuzz_triangle(FuzzDraws& d, const RasterConfig& cfg);
 // class, tiny after huge, so pipelined engines see every kind of neighbour.
 std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris);
 
-// The command-line options that reproduce `cfg` with `trirast compare` / `raster`.
+// The half-space unit's build parameters (--stamp, --tile, --hs-walk), drawn after the scene (so
+// a seed's scenes stay those it drew before these existed): uniformly among `among` (e.g. the
+// Verilated builds of halfspace-rtl at cfg's widths, so that engine runs every scene it can), or
+// among all 18 when it is empty.
+void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<HsParams>& among);
+
+// The command-line options that reproduce `cfg` with `trirast compare` / `raster` (the half-space
+// options only when they are not the defaults: hs_options()).
 std::string config_options(const RasterConfig& cfg);
+std::string hs_options(const RasterConfig& cfg);
 // Parses what config_options() writes (and any subset of it); throws std::invalid_argument.
 RasterConfig parse_config_options(const std::string& options);
 

@@ -1,16 +1,21 @@
 // Writes the vectors of the Icarus testbench (dv/icarus/tb_trirast.sv): the set-up triangles of a
 // scene, and the spans with their pop cycles and the accept cycles that the Verilated model
 // produces for them at the default hardware (N = 1, DEPTH = 8) with a periodic sink.
-//   trirast_rtl_vectors SCENE OUTDIR READY STALL
+//   trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK]]
+// (the half-space unit's vectors from the halfspace-rtl engine, at --stamp STAMP --tile TILE
+// (0: none) --hs-walk WALK (row | zigzag); default 2:8:zigzag, trirast_hs_top's defaults)
 // OUTDIR gets tris.hex, spans.hex, accept.hex, done.hex and plusargs.txt.
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <sstream>
+#include <stdexcept>
 #include <iostream>
 #include <string>
 
 #include "core/setup.hpp"
 #include "verilator/rtl_engine.hpp"
+#include "verilator/rtl_hs_engine.hpp"
 #include "scene/scene.hpp"
 #include "verilator/trirast_rtl_params.hpp"
 
@@ -43,8 +48,9 @@ struct HexBits {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL\n";
+  const std::string unit = argc == 6 ? argv[5] : "";
+  if (argc != 5 && !(argc == 6 && unit.rfind("halfspace", 0) == 0)) {
+    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK]]\n";
     return 2;
   }
   try {
@@ -56,13 +62,26 @@ int main(int argc, char** argv) {
     cfg.endpoints = 1;
     cfg.fifo_depth = 8;
     cfg.sink_stall = "periodic:" + std::to_string(ready) + ":" + std::to_string(stall);
+    if (unit.size() > 9) {  // halfspace:STAMP:TILE:WALK
+      std::istringstream in(unit.substr(10));
+      std::string stamp, tile, walk;
+      if (unit[9] != ':' || !std::getline(in, stamp, ':') || !std::getline(in, tile, ':') ||
+          !std::getline(in, walk))
+        throw std::invalid_argument("halfspace[:STAMP:TILE:WALK]: '" + unit + "' is malformed");
+      cfg.hs_stamp = std::stoi(stamp);
+      cfg.hs_tile = std::stoi(tile);
+      cfg.hs_walk = parse_hs_walk(walk);
+    }
     cfg.validate();
     const Scene scene = spec.rfind("builtin:", 0) == 0
                             ? make_builtin(spec.substr(8), cfg, CameraOptions{})
                             : read_tri_file(spec);
     const SetupResult setup = setup_scene(scene.tris, cfg);
     EngineResult res;
-    rtl::run_rtl(setup, cfg, rtl::RtlRunOptions{}, res);
+    if (argc == 6)  // the half-space unit at trirast_hs_top's default build parameters
+      rtl::run_rtl_halfspace(setup, cfg, 1, res);
+    else
+      rtl::run_rtl(setup, cfg, rtl::RtlRunOptions{}, res);
 
     std::ofstream tris(dir + "/tris.hex"), spans(dir + "/spans.hex"), acc(dir + "/accept.hex"),
         args(dir + "/plusargs.txt");

@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Runs the Icarus testbench dv/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
-#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR
+#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK]]
+# (halfspace: the half-space unit, rtl/trirast_halfspace.f, at StampSize STAMP, TileSize TILE
+# (0: none), walk row | zigzag (default 2:8:zigzag, trirast_hs_top's defaults), against the
+# halfspace-rtl engine's vectors of the same build parameters)
 # For each scene, trirast_rtl_vectors writes the set-up triangles and the Verilated model's spans
 # and cycles; Icarus runs the RTL at its default parameters (NumEndpoints = 1, FifoDepth = 8)
 # and must agree span for span and cycle for cycle. Exit status 0 only if every scene passes.
@@ -8,14 +11,29 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 VECTORS="$1"
 WORK="$2"
+UNIT="${3:-}"
 mkdir -p "$WORK"
-# The improved unit's file list (rtl/trirast_improved.f: one path a line, relative to rtl/).
-SOURCES="$(sed 's#//.*##' "$ROOT/rtl/trirast_improved.f" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}')
+LIST=trirast_improved.f
+DEFINES=""
+case "$UNIT" in
+  "") ;;
+  halfspace|halfspace:*)
+    IFS=: read -r _ stamp tile walk _rest <<< "$UNIT:::"
+    stamp=${stamp:-2}; tile=${tile:-8}; walk=${walk:-zigzag}
+    case "$walk" in zigzag) zig=1 ;; row) zig=0 ;; *) echo "run.sh: walk '$walk' is not row or zigzag" >&2; exit 2 ;; esac
+    UNIT="halfspace:$stamp:$tile:$walk"
+    LIST=trirast_halfspace.f
+    DEFINES="-DTRIRAST_TB_HALFSPACE -Ptb_trirast.HsStamp=$stamp -Ptb_trirast.HsTile=$tile -Ptb_trirast.HsZigzag=$zig"
+    ;;
+  *) echo "run.sh: unit '$UNIT' is not halfspace[:STAMP:TILE:WALK]" >&2; exit 2 ;;
+esac
+# The unit's file list (rtl/*.f: one path a line, relative to rtl/).
+SOURCES="$(sed 's#//.*##' "$ROOT/rtl/$LIST" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}')
   $ROOT/dv/icarus/tb_trirast.sv"
 # Icarus prints "sorry: constant selects in always_* processes" for loops over arrays in
 # always_comb (a sensitivity-list simplification, harmless), and "sorry: Case unique/unique0
 # qualities are ignored" (Verilator checks them); keep the rest.
-iverilog -g2012 -I "$ROOT/rtl" -o "$WORK/tb_trirast.vvp" $SOURCES \
+iverilog -g2012 $DEFINES -I "$ROOT/rtl" -o "$WORK/tb_trirast.vvp" $SOURCES \
   2> >(grep -v "constant selects\|qualities are ignored" >&2)
 status=0
 # scene  ready  stall
@@ -24,7 +42,7 @@ for case in "builtin:fan:n=12 1 0" "builtin:random:count=120,size=small,seed=3 3
   read -r scene ready stall <<< "$case"
   dir="$WORK/$(echo "$scene" | tr ':=,' '___')"
   mkdir -p "$dir"
-  "$VECTORS" "$scene" "$dir" "$ready" "$stall"
+  "$VECTORS" "$scene" "$dir" "$ready" "$stall" $UNIT
   out=$(vvp -n "$WORK/tb_trirast.vvp" +dir="$dir" $(cat "$dir/plusargs.txt"))
   echo "$scene (periodic:$ready:$stall): $(echo "$out" | tail -1)"
   if ! echo "$out" | grep -q "^PASS"; then

@@ -3,7 +3,12 @@
 // checks every span (in pop order), every accept cycle and every triangle's first_span_cycle and
 // done_cycle against the Verilated model's, with a periodic sink (+ready=R +stall=S).
 `timescale 1ns / 1ps
-module tb_trirast;
+module tb_trirast #(
+  // The half-space unit's build parameters (TRIRAST_TB_HALFSPACE; run.sh sets them with -P).
+  parameter int HsStamp = 2,
+  parameter int HsTile = 8,
+  parameter bit HsZigzag = 1'b1
+);
   localparam int P = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
   localparam int EB = trirast_pkg::EdgeBits;
@@ -33,6 +38,19 @@ module tb_trirast;
   logic [CountBits-1:0] fifo_count;
   logic [PB-1:0] vpx, vpy;
 
+`ifdef TRIRAST_TB_HALFSPACE
+  // The half-space unit at the build parameters HsStamp, HsTile, HsZigzag: same ports but no
+  // boundary, divider or endpoints configuration.
+  trirast_hs_top #(
+    .StampSize  (HsStamp),
+    .TileSize   (HsTile),
+    .WalkZigzag (HsZigzag)
+  ) u_dut (
+    .clk_i            (clk),
+    .rst_ni           (rst_n),
+    .cfg_vp_xmax_i    (vpx),
+    .cfg_vp_ymax_i    (vpy),
+`else
   trirast_top u_dut (
     .clk_i            (clk),
     .rst_ni           (rst_n),
@@ -41,6 +59,7 @@ module tb_trirast;
     .cfg_divide_i     (1'b0),
     .cfg_adaptive_i   (1'b1),
     .cfg_endpoints_i  (3'd1),
+`endif
     .cfg_fifo_depth_i (CountBits'(trirast_pkg::DefaultFifoDepth)),
     .tri_valid_i      (tri_valid),
     .tri_ready_o      (tri_ready),

@@ -35,6 +35,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/engine.hpp"
@@ -61,6 +62,11 @@ struct CycleCounts {
 // Runs every set-up triangle through a fresh instance of Top (named top_name in the trace) and
 // fills out.spans, out.cycles, out.total_cycles and the work counters triangles, spans, pixels,
 // walk_stall_cycles, total_cycles and rtl_x_seed. `engine` names the engine in errors.
+template <class Unit, class = void>
+struct has_watchdog : std::false_type {};
+template <class Unit>
+struct has_watchdog<Unit, std::void_t<decltype(Unit::kWatchdogCycles)>> : std::true_type {};
+
 template <class Top, class Unit>
 CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        const char* engine, const char* top_name, Unit& unit, EngineResult& out) {
@@ -169,8 +175,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   // Cycles without a handshake, a retirement or a triangle's last group or row. A triangle walks
   // at most 2^c rows (c = CoordIntBits), each in a bounded number of cycles, well under 2^22;
   // its stalls wait for pops, which are handshakes. A walk stage that never ends its triangle, or
-  // a sink pattern that never lets spans out, trips this.
-  const uint64_t watchdog = uint64_t(1) << 22;
+  // a sink pattern that never lets spans out, trips this. A unit whose walk may go longer
+  // without a span (the half-space unit tests every unit of a box, up to 2^(2 box_bits)) says so
+  // with `static constexpr uint64_t kWatchdogCycles`.
+  uint64_t watchdog = uint64_t(1) << 22;
+  if constexpr (has_watchdog<Unit>::value) watchdog = std::max(watchdog, Unit::kWatchdogCycles);
   uint64_t c = 0;
   for (;; ++c) {
     top->span_ready_i = sink.ready(c);

@@ -1,7 +1,8 @@
-// The Verilated builds of the two units (dv/verilator/CMakeLists.txt): every width configuration
+// The Verilated builds of the units (cmake/trirast_rtl_builds.cmake): every width configuration
 // docs/synth.md names, each at the hardware maximums the runtime options need (NumEndpoints 4,
 // FifoDepth 1024), and the default configuration also at its synthesized size (N = 1, DEPTH = 8),
-// which simulates several times faster. A run takes the smallest build that covers its options.
+// which simulates several times faster; the half-space unit at the stamp/tile/walk configurations
+// that file lists. A run takes the smallest build that covers its options.
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -19,11 +20,15 @@ struct RtlBuild {
   int endpoints, fifo_depth;                    // NumEndpoints, FifoDepth it was verilated with
   // Runs the scene through a fresh instance (cycle_loop.hpp); returns the cycle loop's counts.
   void (*run)(const SetupResult&, const RasterConfig&, uint32_t x_seed, EngineResult&);
+  // The half-space unit's build parameters StampSize, TileSize (0: none), WalkZigzag (0 otherwise).
+  int stamp, tile;
+  bool zigzag;
 };
 
 // Smallest first (by FIFO depth, then endpoints). Defined in the generated rtl_builds_list.cpp.
 const std::vector<RtlBuild>& improved_builds();
 const std::vector<RtlBuild>& trad_builds();
+const std::vector<RtlBuild>& halfspace_builds();
 
 // "S:coord:box N<=4 DEPTH<=1024, ..." for error messages.
 std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box);

@@ -23,5 +23,10 @@ constexpr int kPixBits = 15;  // unsigned bits of a pixel index in the viewport
 constexpr int kTagBits = 32;  // bits of the triangle tag carried with every span
 constexpr int kDefaultEndpoints = 1;  // N of the default (synthesized) unit
 constexpr int kDefaultFifoDepth = 8;  // DEPTH of the default (synthesized) unit
+constexpr int kHsEdgeBits1 = 50;  // half-space corner values, unit side 1 (docs/unit.md)
+constexpr int kHsEdgeBits2 = 50;  // half-space corner values, unit side 2 (docs/unit.md)
+constexpr int kHsEdgeBits4 = 50;  // half-space corner values, unit side 4 (docs/unit.md)
+constexpr int kHsEdgeBits8 = 50;  // half-space corner values, unit side 8 (docs/unit.md)
+constexpr int kHsEdgeBits16 = 50;  // half-space corner values, unit side 16 (docs/unit.md)
 
 }  // namespace trirast::rtl

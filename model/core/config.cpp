@@ -41,6 +41,14 @@ const char* divider_mode_name(DividerMode mode) {
   return mode == DividerMode::Fixed ? "fixed" : "adaptive";
 }
 
+HsWalk parse_hs_walk(const std::string& text) {
+  if (text == "row") return HsWalk::Row;
+  if (text == "zigzag") return HsWalk::Zigzag;
+  throw std::invalid_argument("--hs-walk: expected row or zigzag, got '" + text + "'");
+}
+
+const char* hs_walk_name(HsWalk walk) { return walk == HsWalk::Zigzag ? "zigzag" : "row"; }
+
 void RasterConfig::validate() const {
   if (width < 1 || width > kMaxViewport)
     throw std::invalid_argument("--width: " + std::to_string(width) + " is outside 1.." +
@@ -72,6 +80,10 @@ void RasterConfig::validate() const {
     throw std::invalid_argument("--fifo-depth: " + std::to_string(fifo_depth) + " is outside " +
                                 std::to_string(endpoints) + "..1024 (at least --endpoints)");
   SinkPattern::parse(sink_stall);  // throws with a message naming --sink-stall
+  if (hs_stamp != 1 && hs_stamp != 2 && hs_stamp != 4)
+    throw std::invalid_argument("--stamp: " + std::to_string(hs_stamp) + " is not 1, 2 or 4");
+  if (hs_tile != 0 && hs_tile != 8 && hs_tile != 16)
+    throw std::invalid_argument("--tile: " + std::to_string(hs_tile) + " is not none, 8 or 16");
   if (box_bits < 1 || box_bits > 14)
     throw std::invalid_argument("--box-bits: " + std::to_string(box_bits) + " is outside 1..14");
 }

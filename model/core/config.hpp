@@ -22,6 +22,13 @@ enum class DividerMode { Fixed, Adaptive };
 DividerMode parse_divider_mode(const std::string& text);
 const char* divider_mode_name(DividerMode mode);
 
+// How the half-space unit walks the box's tiles (docs/timing.md, "The half-space unit"):
+// Row = every tile of every band, left to right; Zigzag = bands alternate direction and a band
+// ends at the first tile rejected after a tile that was not (the rest of the band is empty).
+enum class HsWalk { Row, Zigzag };
+HsWalk parse_hs_walk(const std::string& text);
+const char* hs_walk_name(HsWalk walk);
+
 // Parses "none" | "back" | "front"; throws std::invalid_argument otherwise.
 CullMode parse_cull_mode(const std::string& text);
 const char* cull_mode_name(CullMode mode);
@@ -43,6 +50,11 @@ struct RasterConfig {
   // exact default: Q, or the bits the box needs); K > 0 caps every division at K quotient bits,
   // so a quotient >= 2^K saturates (read as "beyond the box") and the unit is no longer exact.
   int divider_quotient_bits = 0;
+
+  // ---- the half-space unit's hardware parameters (docs/unit.md, "The half-space unit") ----
+  int hs_stamp = 2;                 // S: the stamp tester tests S x S pixels per cycle (1, 2, 4)
+  int hs_tile = 8;                  // T: tile edge for hierarchical rejection (8, 16; 0 = none)
+  HsWalk hs_walk = HsWalk::Zigzag;  // tile order
 
   // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
   int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)

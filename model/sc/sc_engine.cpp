@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <exception>
 
+#include "sc/halfspace_sc.hpp"
 #include "sc/improved_sc.hpp"
 #include "sc/trad_sc.hpp"
 #include "unit/improved_unit.hpp"
@@ -19,13 +20,14 @@ bool quiet_systemc() {
   return true;
 }
 
-enum class Unit { Improved, Trad };
+enum class Unit { Improved, Trad, Halfspace };
 
 // Both units, elaborated together on first use (SystemC elaborates once per process).
 struct World {
   bool quiet = quiet_systemc();
   ImprovedUnitSc improved{"improved"};
   TradUnitSc trad{"trad"};
+  HalfspaceUnitSc halfspace{"halfspace"};
 
   static World& get() {
     static World w;
@@ -33,6 +35,7 @@ struct World {
   }
   UnitScIf& unit(Unit u) {
     if (u == Unit::Improved) return improved;
+    if (u == Unit::Halfspace) return halfspace;
     return trad;
   }
 };
@@ -87,7 +90,9 @@ void write_trace(Unit unit, const SetupResult& setup, const RasterConfig& cfg,
       prev = r;
     }
   }
-  rec.write(cfg.trace_path, unit == Unit::Improved ? "improved" : "trad");
+  rec.write(cfg.trace_path, unit == Unit::Improved    ? "improved"
+                            : unit == Unit::Halfspace ? "halfspace"
+                                                      : "trad");
 }
 
 class ScEngine : public Engine {
@@ -97,6 +102,7 @@ class ScEngine : public Engine {
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
     cfg.validate();
     if (unit_ == Unit::Improved) ImprovedUnit check(cfg);  // the datapath's width limits
+    if (unit_ == Unit::Halfspace) HalfspaceUnit check(cfg);
     const double secs = simulate(unit_, setup, cfg, out, nullptr);
     World::get().unit(unit_).add_counters(out.work);
     out.work["triangles"] += setup.tris.size();
@@ -118,6 +124,11 @@ std::unique_ptr<Engine> make_model_engine() {
   static volatile auto keep = &sc_main;
   (void)keep;
   return std::make_unique<sc::ScEngine>(sc::Unit::Improved);
+}
+std::unique_ptr<Engine> make_halfspace_model_engine() {
+  static volatile auto keep = &sc_main;
+  (void)keep;
+  return std::make_unique<sc::ScEngine>(sc::Unit::Halfspace);
 }
 std::unique_ptr<Engine> make_trad_model_engine() {
   return std::make_unique<sc::ScEngine>(sc::Unit::Trad);

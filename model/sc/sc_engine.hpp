@@ -13,5 +13,7 @@ std::unique_ptr<Engine> make_model_engine();
 // The traditional-Bresenham unit, timed: the spans of make_trad_engine() plus cycles
 // (register as "trad-sc").
 std::unique_ptr<Engine> make_trad_model_engine();
+// The half-space tile unit, timed (register as "halfspace-sc"; docs/timing.md).
+std::unique_ptr<Engine> make_halfspace_model_engine();
 
 }  // namespace trirast

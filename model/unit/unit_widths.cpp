@@ -1,5 +1,6 @@
 #include "unit/unit_widths.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace trirast {
@@ -16,7 +17,34 @@ UnitWidths unit_widths(const RasterConfig& cfg) {
   w.remainder = w.step;             // 0 <= r < D, and D has p + F bits
   w.walker_x = w.quotient + 2;      // X' in [-(2^Q + 1), 2^Q + 2^box_bits)
   w.numerator = w.edge_value;       // |edge value| of a 2p+2-bit signed value
+  w.hs_edge_value = hs_edge_bits(cfg, cfg.hs_tile > 0 ? cfg.hs_tile : cfg.hs_stamp);
   return w;
+}
+
+int hs_edge_bits(const RasterConfig& cfg, int unit_side) {
+  // In frac_bits() units (u = 2^F per pixel, h = u / 2), on one axis: a vertex lies in
+  // [-L u, L u) (L = 2^(coord_int_bits - 1), L u = 2^(p-1)); the box's pixels x0..x0 + Xmax lie in
+  // the viewport, x0 + Xmax < L (the viewport port), Xmax < 2^box_bits; the units start at
+  // x0 + k U <= x0 + Xmax, so a corner is pixel x0 + i with i < R = Xmax + 1 rounded up to U.
+  //   x0 = 0 (the box clipped, a vertex anywhere left): distance <= (R - 1) u + h + L u,
+  //          R <= roundup(min(2^box_bits, L), U);
+  //   x0 > 0 (pixel x0 - 1's centre lies left of every vertex): distance < R u,
+  //          R <= roundup(min(2^box_bits, L - 1), U).
+  // Both are at most 2^p - h (the pixels' own bound, 2p + 2 bits) unless the units reach past
+  // the viewport's largest extent, i.e. U > L (coord_int_bits <= 4). With |A|, |B| <= 2^p - 1:
+  // |E| <= 2 (2^p - 1) reach + 1 (the top-left bias).
+  const int p = cfg.vertex_bits(), F = cfg.frac_bits();
+  const int64_t u = int64_t(1) << F, h = u / 2, L = cfg.coord_limit_px();
+  const int64_t box = int64_t(1) << cfg.box_bits, U = unit_side;
+  auto roundup = [U](int64_t v) { return (v + U - 1) / U * U; };
+  const int64_t clipped = (roundup(std::min(box, L)) - 1) * u + h + L * u;
+  const int64_t unclipped = roundup(std::min(box, L - 1)) * u;
+  const int64_t reach = std::max(clipped, unclipped);
+  // p <= 30 (RasterConfig::validate), U <= 16, box_bits <= 14: reach < 2^31, |E| < 2^62.
+  const int64_t bound = 2 * ((int64_t(1) << p) - 1) * reach + 1;
+  int bits = 0;
+  while (bits < 63 && (bound >> bits) != 0) ++bits;
+  return bits + 1;  // magnitude bits + sign
 }
 
 namespace {

@@ -21,7 +21,18 @@ struct UnitWidths {
   int remainder;   // p + F: unsigned bits of a remainder or Bresenham error e
   int walker_x;    // Q + 2: signed bits of the walker's bound X'
   int numerator;   // 2p + 2: unsigned bits of a divider numerator (a magnitude of an edge value)
+  // The half-space unit's edge values at the corners of its U x U units (U = --tile, or --stamp
+  // without tiles), which lie up to U - 1 pixels past the box and so past the coordinate range:
+  // hs_edge_bits(cfg, U): 2p + 2 unless U > 2^(coord_int_bits - 1), i.e. the units reach past
+  // the largest viewport (coord_int_bits <= 4 with tiles).
+  int hs_edge_value;
 };
+
+// Signed bits of every edge value the half-space unit forms at a unit corner for unit side U:
+// |E| <= 2 (2^p - 1) reach + 1, with reach the farthest a corner (up to U - 1 pixels past the
+// box) lies from a vertex on one axis, from the coordinate range, the viewport and the box size
+// (unit_widths.cpp derives it; docs/unit.md).
+int hs_edge_bits(const RasterConfig& cfg, int unit_side);
 
 // The widths for one configuration.
 UnitWidths unit_widths(const RasterConfig& cfg);

@@ -1,0 +1,111 @@
+// The engine "halfspace-rtl": picks the Verilated build of trirast_hs_top (rtl_builds.hpp,
+// cmake/trirast_rtl_builds.cmake) of the run's widths and --stamp/--tile/--hs-walk whose FIFO
+// holds --fifo-depth, and runs it (halfspace_harness.hpp: the ports; cycle_loop.hpp: the cycles).
+#include "rtl_hs_engine.hpp"
+
+#include <cstdlib>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/sink_pattern.hpp"
+#include "rtl_builds.hpp"
+
+namespace trirast {
+namespace rtl {
+
+namespace {
+
+std::string describe_hs(int stamp, int tile, bool zigzag) {
+  return "--stamp " + std::to_string(stamp) + " --tile " +
+         (tile ? std::to_string(tile) : std::string("none")) + " --hs-walk " +
+         (zigzag ? "zigzag" : "row");
+}
+
+bool same_widths(const RtlBuild& b, const RasterConfig& cfg) {
+  return b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
+         b.box_bits == cfg.box_bits;
+}
+
+bool same_unit(const RtlBuild& b, const RasterConfig& cfg) {
+  return b.stamp == cfg.hs_stamp && b.tile == cfg.hs_tile &&
+         b.zigzag == (cfg.hs_walk == HsWalk::Zigzag);
+}
+
+const RtlBuild& pick_build(const RasterConfig& cfg) {
+  const std::vector<RtlBuild>& builds = halfspace_builds();
+  bool widths = false, unit = false;
+  for (const RtlBuild& b : builds) {
+    widths = widths || same_widths(b, cfg);
+    if (!same_widths(b, cfg) || !same_unit(b, cfg)) continue;
+    unit = true;
+    if (cfg.fifo_depth >= 1 && cfg.fifo_depth <= b.fifo_depth) return b;
+  }
+  const std::string add = "; built: " + halfspace_built_configurations() +
+                          "; add one in cmake/trirast_rtl_builds.cmake)";
+  if (!widths)
+    throw std::invalid_argument(
+        "--subpixel-bits/--coord-bits/--box-bits: " + std::to_string(cfg.subpixel_bits) + ":" +
+        std::to_string(cfg.coord_int_bits) + ":" + std::to_string(cfg.box_bits) +
+        " is not covered by the halfspace-rtl engine's Verilated models (no build of these widths" +
+        add);
+  if (!unit)
+    throw std::invalid_argument(
+        "--stamp/--tile/--hs-walk: " +
+        describe_hs(cfg.hs_stamp, cfg.hs_tile, cfg.hs_walk == HsWalk::Zigzag) +
+        " is not covered by the halfspace-rtl engine's Verilated models (no build of these "
+        "parameters at these widths" + add);
+  throw std::invalid_argument("--fifo-depth: " + std::to_string(cfg.fifo_depth) +
+                              " is not covered by the halfspace-rtl engine's Verilated models "
+                              "(too deep" + add);
+}
+
+}  // namespace
+
+std::string halfspace_built_configurations() {
+  std::string s;
+  for (const RtlBuild& b : halfspace_builds())
+    s += (s.empty() ? "" : "; ") + std::to_string(b.subpixel_bits) + ":" +
+         std::to_string(b.coord_int_bits) + ":" + std::to_string(b.box_bits) + " " +
+         describe_hs(b.stamp, b.tile, b.zigzag) + " DEPTH<=" + std::to_string(b.fifo_depth);
+  return "S:coord:box " + s;
+}
+
+bool halfspace_build_covers(const RasterConfig& cfg) {
+  for (const RtlBuild& b : halfspace_builds())
+    if (same_widths(b, cfg) && same_unit(b, cfg) && cfg.fifo_depth <= b.fifo_depth) return true;
+  return false;
+}
+
+std::vector<HsParams> halfspace_built_params(const RasterConfig& cfg) {
+  std::vector<HsParams> out;
+  for (const RtlBuild& b : halfspace_builds())
+    if (same_widths(b, cfg) && cfg.fifo_depth <= b.fifo_depth)
+      out.push_back({b.stamp, b.tile, b.zigzag ? HsWalk::Zigzag : HsWalk::Row});
+  return out;
+}
+
+void run_rtl_halfspace(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
+                       EngineResult& out) {
+  (void)SinkPattern::parse(cfg.sink_stall);
+  pick_build(cfg).run(setup, cfg, x_seed, out);
+}
+
+}  // namespace rtl
+
+namespace {
+
+class RtlHalfspaceEngine : public Engine {
+ public:
+  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
+    uint32_t seed = 1;
+    if (const char* s = std::getenv("TRIRAST_RTL_SEED")) seed = uint32_t(std::strtoul(s, nullptr, 0));
+    rtl::run_rtl_halfspace(setup, cfg, seed, out);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> make_rtl_halfspace_engine() { return std::make_unique<RtlHalfspaceEngine>(); }
+
+}  // namespace trirast

@@ -1,0 +1,272 @@
+// The Verilated RTL of the half-space tile unit (rtl/trirast_halfspace.f, engine "halfspace-rtl"),
+// in every Verilated configuration (StampSize / TileSize / walk order): its spans equal the
+// golden's, span for span, and its cycles equal the SystemC model's (halfspace-sc,
+// docs/timing.md "The half-space unit") for every triangle: accept, first span, done, spans,
+// pixels and stall cycles, with the sink always ready and with stalling sinks and shallow FIFOs.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/fixed_point.hpp"
+#include "core/setup.hpp"
+#include "golden/golden.hpp"
+#include "reference/reference_raster.hpp"
+#include "sc/sc_engine.hpp"
+#include "scene/scene.hpp"
+#include "unit/halfspace_unit.hpp"
+#include "unit/unit_widths.hpp"
+#include "verilator/rtl_builds.hpp"
+#include "verilator/rtl_hs_engine.hpp"
+
+namespace trirast {
+namespace {
+
+struct Built {
+  int stamp, tile;
+  HsWalk walk;
+};
+// The stamp/tile/walk configurations Verilated at the default widths (rtl_builds.hpp).
+std::vector<Built> built_at_default_widths() {
+  std::vector<Built> out;
+  const RasterConfig d;
+  for (const rtl::RtlBuild& b : rtl::halfspace_builds())
+    if (b.subpixel_bits == d.subpixel_bits && b.coord_int_bits == d.coord_int_bits &&
+        b.box_bits == d.box_bits)
+      out.push_back({b.stamp, b.tile, b.zigzag ? HsWalk::Zigzag : HsWalk::Row});
+  return out;
+}
+const std::vector<Built> kBuilt = built_at_default_widths();
+
+size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
+  EngineResult rtl, sc;
+  make_rtl_halfspace_engine()->run(setup, cfg, rtl);
+  make_halfspace_model_engine()->run(setup, cfg, sc);
+  SpanList g;
+  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
+  sort_spans(g);
+  sort_spans(rtl.spans);
+  EXPECT_TRUE(rtl.spans == g) << what << ": " << rtl.spans.size() << " rtl spans, " << g.size()
+                              << " golden";
+  EXPECT_EQ(rtl.cycles.size(), sc.cycles.size()) << what;
+  int reported = 0;
+  for (size_t i = 0; i < std::min(rtl.cycles.size(), sc.cycles.size()); ++i) {
+    const TriangleCycles& a = rtl.cycles[i];
+    const TriangleCycles& b = sc.cycles[i];
+    if (a.tri == b.tri && a.accept_cycle == b.accept_cycle &&
+        a.first_span_cycle == b.first_span_cycle && a.done_cycle == b.done_cycle &&
+        a.spans == b.spans && a.pixels == b.pixels && a.stall_cycles == b.stall_cycles)
+      continue;
+    ADD_FAILURE() << what << ": triangle " << a.tri << " rtl (" << a.accept_cycle << ","
+                  << a.first_span_cycle << "," << a.done_cycle << "," << a.spans << "," << a.pixels
+                  << "," << a.stall_cycles << ") sc (" << b.accept_cycle << ","
+                  << b.first_span_cycle << "," << b.done_cycle << "," << b.spans << "," << b.pixels
+                  << "," << b.stall_cycles << ")";
+    if (++reported == 5) break;
+  }
+  EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
+  return rtl.cycles.size();
+}
+
+RasterConfig config(const Built& b) {
+  RasterConfig cfg;
+  cfg.hs_stamp = b.stamp;
+  cfg.hs_tile = b.tile;
+  cfg.hs_walk = b.walk;
+  return cfg;
+}
+
+std::string name(const Built& b, const std::string& sink, int depth) {
+  return "stamp " + std::to_string(b.stamp) + " tile " + std::to_string(b.tile) + " " +
+         hs_walk_name(b.walk) + " sink " + sink + " depth " + std::to_string(depth);
+}
+
+TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
+  test::TestRng rng(1515);
+  auto tris = test::random_grid_triangles(rng, 120, -20, 140, -20, 100, 2, 12);
+  auto big = test::random_grid_triangles(rng, 120, -20, 140, -20, 100, 8, 60);
+  tris.insert(tris.end(), big.begin(), big.end());
+  ASSERT_GE(kBuilt.size(), 3u);
+  size_t n = 0;
+  for (const Built& b : kBuilt)
+    for (const char* sink : {"none", "periodic:1:3", "random:5:70"})
+      for (int depth : {1, 2, 8}) {
+        RasterConfig cfg = config(b);
+        cfg.width = 128;
+        cfg.height = 96;
+        cfg.sink_stall = sink;
+        cfg.fifo_depth = depth;
+        n += expect_equal(setup_scene(tris, cfg), cfg, name(b, sink, depth));
+      }
+  EXPECT_GT(n, 5000u);
+}
+
+TEST(RtlHalfspace, HardCasesAndMeshes) {
+  for (const Built& b : kBuilt)
+    for (const char* spec : {"builtin:hard-all", "builtin:sphere"})
+      for (const char* sink : {"none", "random:9:40"}) {
+        if (std::string(spec) == "builtin:sphere" && std::string(sink) != "none") continue;
+        RasterConfig cfg = config(b);
+        cfg.sink_stall = sink;
+        const SetupResult setup = setup_scene(load_scene(spec, cfg, CameraOptions{}).tris, cfg);
+        expect_equal(setup, cfg, std::string(spec) + " " + name(b, sink, cfg.fifo_depth));
+      }
+}
+
+// ---- the coordinate limits ----------------------------------------------------------------------
+
+InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
+  InputTriangle t;
+  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
+  return t;
+}
+
+// Triangles with vertices on the corners and edges of the coordinate range [-L, L) and on the
+// viewport's far edge (the box reaches the viewport's last pixel, its units past it), and random
+// ones with every vertex at an extreme of the range or of the viewport.
+std::vector<InputTriangle> limit_triangles(const RasterConfig& cfg, uint64_t seed) {
+  const double L = double(cfg.coord_limit_px()), step = std::ldexp(1.0, -cfg.subpixel_bits);
+  const double lo = -L, hi = L - step;
+  // The viewport's far edge, inside the range (at S = 0, x.5 snaps to the even neighbour).
+  const double w = std::min(double(cfg.width), hi), h = std::min(double(cfg.height), hi);
+  std::vector<InputTriangle> t = {
+      tri(lo, lo, hi, lo, lo, hi), tri(hi, hi, lo, hi, hi, lo), tri(lo, lo, hi, hi, lo, hi),
+      tri(lo, lo, hi, hi, hi, lo), tri(lo, hi, hi, lo, hi, hi), tri(lo, hi, hi, lo, lo, lo),
+      tri(lo, lo, std::min(w - 0.5, hi), lo, lo, std::min(h - 0.5, hi)),
+      tri(lo, std::min(h - 0.5, hi), std::min(w - 0.5, hi), lo, hi, hi),
+      tri(lo, hi, w - step, lo, w - step, hi), tri(hi, lo, lo, h - step, hi, h - step),
+      tri(0.5, lo, 0.5, hi, w, h / 2), tri(lo, 0.5, hi, 0.5, w / 2, h),
+  };
+  const double xs[] = {lo, lo + step, hi, hi - step, 0, 0.5, std::min(w - 0.5, hi), w - step, w / 2};
+  const double ys[] = {lo, lo + step, hi, hi - step, 0, 0.5, std::min(h - 0.5, hi), h - step, h / 2};
+  test::TestRng rng(seed);
+  for (int n = 0; n < 60; ++n) {
+    InputTriangle r;
+    for (int k = 0; k < 3; ++k) {
+      r.x[k] = xs[rng.range(0, 8)];
+      r.y[k] = ys[rng.range(0, 8)];
+    }
+    t.push_back(r);
+  }
+  return t;
+}
+
+// The largest |E| at a corner of any unit of the set-up scene (the values the tile walker tests).
+int64_t largest_corner_value(const SetupResult& setup, const RasterConfig& cfg) {
+  HalfspaceUnit unit(cfg);
+  const int64_t U = HsParams::from(cfg).unit();
+  int64_t most = 0;
+  for (const TriangleSetup& t : setup.tris) {
+    const HsSetupOut s = unit.set_up(t);
+    if (s.empty) continue;
+    for (int64_t j0 = 0; j0 <= s.Ymax; j0 += U)
+      for (int64_t i0 = 0; i0 <= s.Xmax; i0 += U)
+        for (const HsEdge& e : s.edge)
+          for (int64_t di : {int64_t(0), U - 1})
+            for (int64_t dj : {int64_t(0), U - 1}) {
+              const int64_t v = e.E0 + (i0 + di) * e.a + (j0 + dj) * e.b;
+              most = std::max(most, v < 0 ? -v : v);
+            }
+  }
+  return most;
+}
+
+// Triangles at the coordinate limits, at every stamp and tile size and walk, in the widths where
+// a unit's corners lie past the coordinate range (the narrow ones) and in wide ones: the
+// datapath and the SystemC model give the golden's spans, and the corner values fit
+// hs_edge_bits (the bound of model/unit/unit_widths.cpp) and, where it exceeds 2p + 2, need the
+// extra bits (so 2p + 2-bit corner values would fail this test).
+TEST(HalfspaceLimits, CoordinateLimitsAtEveryStampTileAndWalk) {
+  struct W {
+    int S, coord, box, width, height;
+  };
+  // (the wide ones at small viewports: their corner values need 2p + 2 bits at any viewport)
+  const W widths[] = {{8, 2, 1, 2, 2},     {4, 3, 4, 4, 4},      {8, 3, 2, 4, 4},
+                      {0, 4, 4, 8, 8},     {1, 8, 7, 128, 100},  {4, 12, 11, 160, 120},
+                      {8, 16, 14, 256, 192}, {0, 24, 14, 128, 128}, {8, 22, 14, 256, 192}};
+  int needed_more = 0;
+  for (const W& w : widths)
+    for (int stamp : {1, 2, 4})
+      for (int tile : {0, 8, 16})
+        for (HsWalk walk : {HsWalk::Row, HsWalk::Zigzag}) {
+          RasterConfig cfg;
+          cfg.subpixel_bits = w.S;
+          cfg.coord_int_bits = w.coord;
+          cfg.box_bits = w.box;
+          cfg.width = w.width;
+          cfg.height = w.height;
+          cfg.hs_stamp = stamp;
+          cfg.hs_tile = tile;
+          cfg.hs_walk = walk;
+          cfg.validate();
+          const std::string what = "S " + std::to_string(w.S) + " coord " +
+                                   std::to_string(w.coord) + " box " + std::to_string(w.box) +
+                                   " " + name(Built{stamp, tile, walk}, "none", cfg.fifo_depth);
+          const SetupResult setup = setup_scene(limit_triangles(cfg, 77), cfg);
+          SpanList g;
+          for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
+          sort_spans(g);
+          EngineResult dp, sc;
+          ASSERT_NO_THROW(make_halfspace_engine()->run(setup, cfg, dp)) << what;
+          ASSERT_NO_THROW(make_halfspace_model_engine()->run(setup, cfg, sc)) << what;
+          sort_spans(dp.spans);
+          sort_spans(sc.spans);
+          EXPECT_TRUE(dp.spans == g) << what << ": halfspace-datapath";
+          EXPECT_TRUE(sc.spans == g) << what << ": halfspace-sc";
+          const UnitWidths uw = unit_widths(cfg);
+          const int64_t most = largest_corner_value(setup, cfg);
+          EXPECT_TRUE(fits_signed(most, uw.hs_edge_value)) << what << ": " << most;
+          if (!fits_signed(most, uw.edge_value)) ++needed_more;
+          // The bound is 2p + 2 bits exactly when the units stay inside the largest viewport.
+          EXPECT_EQ(uw.hs_edge_value > uw.edge_value, (tile ? tile : stamp) > cfg.coord_limit_px())
+              << what;
+        }
+  EXPECT_GT(needed_more, 10) << "no scene needs corner values wider than 2p + 2 bits";
+}
+
+// The same triangles through every Verilated build of halfspace-rtl (each at its widths and
+// stamp / tile / walk, the narrow "hslimit" widths among them): spans equal the golden's and
+// cycles the SystemC model's, with the sink always ready and stalling.
+TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
+  int narrow = 0;
+  for (const rtl::RtlBuild& b : rtl::halfspace_builds())
+    for (const char* sink : {"none", "random:3:50"}) {
+      RasterConfig cfg;
+      cfg.subpixel_bits = b.subpixel_bits;
+      cfg.coord_int_bits = b.coord_int_bits;
+      cfg.box_bits = b.box_bits;
+      cfg.width = cfg.height = int(std::min<int64_t>(cfg.coord_limit_px(), 128));
+      cfg.hs_stamp = b.stamp;
+      cfg.hs_tile = b.tile;
+      cfg.hs_walk = b.zigzag ? HsWalk::Zigzag : HsWalk::Row;
+      cfg.sink_stall = sink;
+      cfg.fifo_depth = 2;
+      cfg.validate();
+      const SetupResult setup = setup_scene(limit_triangles(cfg, 91), cfg);
+      const UnitWidths uw = unit_widths(cfg);
+      narrow += !fits_signed(largest_corner_value(setup, cfg), uw.edge_value);
+      expect_equal(setup, cfg,
+                   std::string(b.prefix) + " " +
+                       name(Built{b.stamp, b.tile, cfg.hs_walk}, sink, cfg.fifo_depth));
+    }
+  EXPECT_GT(narrow, 0) << "no build sees corner values wider than 2p + 2 bits";
+}
+
+TEST(RtlHalfspace, UnbuiltConfigurationIsNamed) {
+  RasterConfig cfg;
+  cfg.hs_stamp = 4;
+  cfg.hs_tile = 8;
+  const SetupResult setup = setup_scene({}, cfg);
+  EngineResult r;
+  try {
+    make_rtl_halfspace_engine()->run(setup, cfg, r);
+    FAIL() << "expected std::invalid_argument";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--stamp 4 --tile 8"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace trirast
