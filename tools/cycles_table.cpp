@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/setup.hpp"
+#include "benchmark_scenes.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
 
@@ -35,20 +36,7 @@ std::string pct(double improved, double trad) {
 
 int sc_main(int argc, char** argv) {
   const std::string source = argc > 1 ? argv[1] : ".";
-  struct Entry {
-    std::string label, spec;
-  };
-  const std::vector<Entry> scenes = {
-      {"1 low-poly far", "builtin:lowpoly-far"},
-      {"2 low-poly near", "builtin:lowpoly-near"},
-      {"3 high-poly far", "builtin:highpoly-far"},
-      {"4 high-poly near", "builtin:highpoly-near"},
-      {"5 mixed", "builtin:mixed"},
-      {"mesh: sphere", "builtin:sphere"},
-      {"mesh: torus", "builtin:torus"},
-      {"mesh: surface", "builtin:surface"},
-      {"mesh: cube.obj", source + "/tests/data/cube.obj"},
-  };
+  const std::vector<BenchmarkScene> scenes = benchmark_scenes(source);
   std::printf(
       "| scene | triangles | improved cycles | trad cycles | improved vs trad | improved cyc/tri "
       "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide | "
@@ -56,7 +44,7 @@ int sc_main(int argc, char** argv) {
       "half-space cyc/tri (setup, walk) | half-space S4 T16 | half-space S1 no tiles |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
   uint64_t sum_i = 0, sum_t = 0, sum_h = 0;
-  for (const Entry& e : scenes) {
+  for (const BenchmarkScene& e : scenes) {
     RasterConfig cfg;
     Scene scene;
     try {

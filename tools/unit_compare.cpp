@@ -30,6 +30,7 @@
 #include <vector>
 
 #include "core/setup.hpp"
+#include "benchmark_scenes.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
 
@@ -122,20 +123,7 @@ int sc_main(int argc, char** argv) {
     return 2;
   }
   const std::string out = argv[1], source = argv[2];
-  struct Entry {
-    std::string label, spec;
-  };
-  std::vector<Entry> scenes = {
-      {"1 low-poly far", "builtin:lowpoly-far"},
-      {"2 low-poly near", "builtin:lowpoly-near"},
-      {"3 high-poly far", "builtin:highpoly-far"},
-      {"4 high-poly near", "builtin:highpoly-near"},
-      {"5 mixed", "builtin:mixed"},
-      {"mesh: sphere", "builtin:sphere"},
-      {"mesh: torus", "builtin:torus"},
-      {"mesh: surface", "builtin:surface"},
-      {"mesh: cube.obj", source + "/tests/data/cube.obj"},
-  };
+  std::vector<BenchmarkScene> scenes = benchmark_scenes(source);
   for (int i = 3; i < argc; ++i) {
     std::string p = argv[i];
     scenes.push_back({"mesh: " + p.substr(p.find_last_of('/') + 1), p});
@@ -146,7 +134,7 @@ int sc_main(int argc, char** argv) {
     sc << "scene,label,spec,triangles";
     for (const Unit& u : kUnits) sc << ',' << u.name;
     sc << '\n';
-    for (const Entry& e : scenes) {
+    for (const BenchmarkScene& e : scenes) {
       const RasterConfig cfg;
       Scene scene;
       try {

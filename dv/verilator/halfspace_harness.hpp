@@ -17,27 +17,10 @@ namespace trirast::rtl {
 
 template <class Top, class P>
 struct HalfspacePorts {
-  using PortBits = Bits<8>;  // up to 256-bit ports
-  static_assert(words(3 * P::kEdgeBits) <= 8, "Bits<8> holds up to 256 bits");
 
   void configure(Top&, const RasterConfig&) const {}  // viewport and FIFO only
   void offer(Top& top, const TriangleSetup& t) const {
-    PortBits vx, vy, a, b, c;
-    uint32_t bias = 0;
-    for (int k = 0; k < 3; ++k) {
-      vx.put(k * P::kVertexBits, P::kVertexBits, t.v[k].x);
-      vy.put(k * P::kVertexBits, P::kVertexBits, t.v[k].y);
-      a.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].A);
-      b.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].B);
-      c.put(k * P::kEdgeBits, P::kEdgeBits, t.edge[k].C);
-      if (t.edge[k].bias != 0) bias |= 1u << k;
-    }
-    drive(top.tri_vx_i, vx, words(3 * P::kVertexBits));
-    drive(top.tri_vy_i, vy, words(3 * P::kVertexBits));
-    drive(top.tri_a_i, a, words(3 * P::kCoefBits));
-    drive(top.tri_b_i, b, words(3 * P::kCoefBits));
-    drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
-    top.tri_bias_i = bias;
+    drive_edge_triangle<P>(top, t);
   }
   void observe_setup(const Top&, TriangleCycles&) const {}
   void observe_handoff(const Top& top, TriangleCycles& tc) const {

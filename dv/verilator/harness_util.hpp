@@ -10,6 +10,7 @@
 #include <string>
 #include <type_traits>
 
+#include "core/setup.hpp"
 #include "core/temporary_files.hpp"
 
 namespace trirast {
@@ -50,6 +51,29 @@ void drive(Port& port, const Bits<Words>& b, int n_words) {
   } else {
     for (int i = 0; i < n_words; ++i) port[i] = b.w[i];
   }
+}
+
+// The triangle ports of a unit that takes the set-up's edge functions (trirast_top,
+// trirast_hs_top): packed vertices, A, B, C and the bias bits, at the widths P of its build.
+template <class P, class Top>
+void drive_edge_triangle(Top& top, const TriangleSetup& t) {
+  static_assert(words(3 * P::kEdgeBits) <= 8, "Bits<8> holds up to 256 bits");
+  Bits<8> vx, vy, a, b, c;
+  uint32_t bias = 0;
+  for (int k = 0; k < 3; ++k) {
+    vx.put(k * P::kVertexBits, P::kVertexBits, t.v[k].x);
+    vy.put(k * P::kVertexBits, P::kVertexBits, t.v[k].y);
+    a.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].A);
+    b.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].B);
+    c.put(k * P::kEdgeBits, P::kEdgeBits, t.edge[k].C);
+    if (t.edge[k].bias != 0) bias |= 1u << k;
+  }
+  drive(top.tri_vx_i, vx, words(3 * P::kVertexBits));
+  drive(top.tri_vy_i, vy, words(3 * P::kVertexBits));
+  drive(top.tri_a_i, a, words(3 * P::kCoefBits));
+  drive(top.tri_b_i, b, words(3 * P::kCoefBits));
+  drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
+  top.tri_bias_i = bias;
 }
 
 inline bool ends_with(const std::string& s, const std::string& suffix) {

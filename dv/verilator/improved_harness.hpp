@@ -26,8 +26,6 @@ enum : unsigned { kRtlStIdle = 0, kRtlStBox = 1, kRtlStEdge = 2, kRtlStLanes = 3
 
 template <class Top, class P>
 struct ImprovedPorts {
-  using PortBits = Bits<8>;  // up to 256-bit ports
-  static_assert(words(3 * P::kEdgeBits) <= 8, "Bits<8> holds up to 256 bits");
 
   void configure(Top& top, const RasterConfig& cfg) const {
     top.cfg_divide_i = cfg.boundary == BoundaryMode::Divide;
@@ -35,22 +33,7 @@ struct ImprovedPorts {
     top.cfg_endpoints_i = uint32_t(cfg.endpoints);
   }
   void offer(Top& top, const TriangleSetup& t) const {
-    PortBits vx, vy, a, b, c;
-    uint32_t bias = 0;
-    for (int k = 0; k < 3; ++k) {
-      vx.put(k * P::kVertexBits, P::kVertexBits, t.v[k].x);
-      vy.put(k * P::kVertexBits, P::kVertexBits, t.v[k].y);
-      a.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].A);
-      b.put(k * P::kCoefBits, P::kCoefBits, t.edge[k].B);
-      c.put(k * P::kEdgeBits, P::kEdgeBits, t.edge[k].C);
-      if (t.edge[k].bias != 0) bias |= 1u << k;
-    }
-    drive(top.tri_vx_i, vx, words(3 * P::kVertexBits));
-    drive(top.tri_vy_i, vy, words(3 * P::kVertexBits));
-    drive(top.tri_a_i, a, words(3 * P::kCoefBits));
-    drive(top.tri_b_i, b, words(3 * P::kCoefBits));
-    drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
-    top.tri_bias_i = bias;
+    drive_edge_triangle<P>(top, t);
   }
   // The lanes' work while the triangle is set up: a busy lane does a divider iteration or a
   // boundary column step.
