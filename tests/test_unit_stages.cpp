@@ -439,6 +439,10 @@ TEST(UnitWidths, WidthTable) {
   cfg.subpixel_bits = 8;
   cfg.coord_int_bits = 24;
   EXPECT_THROW(ImprovedUnit{cfg}, WidthError);
+  // The half-space corner-value width of that configuration is computed, not wrapped (it exceeds
+  // 63 bits, so the half-space unit refuses it too).
+  EXPECT_GT(unit_widths(cfg).hs_edge_value, 63);
+  EXPECT_LT(unit_widths(cfg).hs_edge_value, 80);
 }
 
 }  // namespace

@@ -40,10 +40,11 @@ int hs_edge_bits(const RasterConfig& cfg, int unit_side) {
   const int64_t clipped = (roundup(std::min(box, L)) - 1) * u + h + L * u;
   const int64_t unclipped = roundup(std::min(box, L - 1)) * u;
   const int64_t reach = std::max(clipped, unclipped);
-  // p <= 30 (RasterConfig::validate), U <= 16, box_bits <= 14: reach < 2^31, |E| < 2^62.
-  const int64_t bound = 2 * ((int64_t(1) << p) - 1) * reach + 1;
+  // In 128 bits: a configuration RasterConfig accepts can need more than 63 (p up to 32, reach
+  // up to 2^33); the caller refuses those (HalfspaceUnit: WidthError), so they must not wrap here.
+  const __int128 bound = __int128(2) * ((__int128(1) << p) - 1) * reach + 1;
   int bits = 0;
-  while (bits < 63 && (bound >> bits) != 0) ++bits;
+  while ((bound >> bits) != 0) ++bits;
   return bits + 1;  // magnitude bits + sign
 }
 
