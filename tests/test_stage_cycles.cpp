@@ -193,6 +193,10 @@ TEST(CliStageCycles, JoinedCyclesFlagAMismatch) {
   // Different units are not compared.
   const std::vector<TimedCycles> units = {{"improved-sc", &a}, {"trad-sc", &b}};
   EXPECT_EQ(count_cycle_mismatches(units, first), 0u);
+  // The half-space unit's model and RTL are one unit.
+  const std::vector<TimedCycles> hs = {{"halfspace-sc", &a}, {"halfspace-rtl", &b}};
+  EXPECT_EQ(count_cycle_mismatches(hs, first), 1u);
+  EXPECT_EQ(timing_unit("halfspace-rtl"), timing_unit("halfspace-sc"));
 }
 
 TEST(CliStageCycles, ExportedWindowSetsUpTheSameTrianglesAndSpans) {

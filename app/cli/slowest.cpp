@@ -11,9 +11,11 @@
 namespace trirast {
 
 std::string timing_unit(const std::string& engine) {
-  // The old names and the new ones (improved-sc, improved-rtl, trad-sc, trad-rtl).
+  // The old names and the new ones (improved-sc, improved-rtl, trad-sc, trad-rtl, halfspace-sc,
+  // halfspace-rtl).
   if (engine.rfind("improved-", 0) == 0) return "improved";
   if (engine.rfind("trad-", 0) == 0) return "trad";
+  if (engine.rfind("halfspace-", 0) == 0) return "halfspace";
   return engine;
 }
 
