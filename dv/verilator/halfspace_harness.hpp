@@ -55,15 +55,7 @@ struct HalfspacePorts {
 template <class Top, class P>
 void run_halfspace_build(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                          EngineResult& out) {
-  {
-    HalfspaceUnit unit(cfg);
-    SpanList scratch;
-    for (const TriangleSetup& t : setup.tris) {
-      scratch.clear();
-      unit.run_triangle(t, scratch);
-      for (int k = 0; k < 3; ++k) check_signed(t.edge[k].C, P::kEdgeBits, t.index, "C", "edge value");
-    }
-  }
+  check_widths<HalfspaceUnit, P>(setup, cfg);
   HalfspacePorts<Top, P> ports;
   run_cycles<Top>(setup, cfg, x_seed, "halfspace-rtl", "trirast_hs_top", ports, out);
 }

@@ -11,6 +11,8 @@
 #include <type_traits>
 
 #include "core/setup.hpp"
+#include "core/span.hpp"
+#include "unit/unit_widths.hpp"
 #include "core/temporary_files.hpp"
 
 namespace trirast {
@@ -74,6 +76,20 @@ void drive_edge_triangle(Top& top, const TriangleSetup& t) {
   drive(top.tri_b_i, b, words(3 * P::kCoefBits));
   drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
   top.tri_bias_i = bias;
+}
+
+// Before a run of a unit with edge-function ports: runs its bit-accurate model Unit on every
+// triangle, so that one the widths P do not hold raises the model's WidthError naming it (the RTL
+// assumes fitting inputs), and checks each edge's C against the port.
+template <class Unit, class P>
+void check_widths(const SetupResult& setup, const RasterConfig& cfg) {
+  Unit unit(cfg);
+  SpanList scratch;
+  for (const TriangleSetup& t : setup.tris) {
+    scratch.clear();
+    unit.run_triangle(t, scratch);
+    for (int k = 0; k < 3; ++k) check_signed(t.edge[k].C, P::kEdgeBits, t.index, "C", "edge value");
+  }
 }
 
 inline bool ends_with(const std::string& s, const std::string& suffix) {

@@ -96,15 +96,7 @@ struct ImprovedPorts {
 template <class Top, class P>
 void run_improved_build(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                         EngineResult& out) {
-  {
-    ImprovedUnit unit(cfg);
-    SpanList scratch;
-    for (const TriangleSetup& t : setup.tris) {
-      scratch.clear();
-      unit.run_triangle(t, scratch);
-      for (int k = 0; k < 3; ++k) check_signed(t.edge[k].C, P::kEdgeBits, t.index, "C", "edge value");
-    }
-  }
+  check_widths<ImprovedUnit, P>(setup, cfg);
   ImprovedPorts<Top, P> ports;
   run_cycles<Top>(setup, cfg, x_seed, "improved-rtl", "trirast_top", ports, out);
 }
