@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/engine.hpp"
@@ -229,6 +230,66 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
   EXPECT_FALSE(find_row(cfgs, "improved-sc", "S8 c16 b14 K- N1")->at("luts").empty());
 }
 
+// The half-space unit in the sweep (--engines halfspace-*): its stamp, tile and walk as points,
+// exact against the golden, its RTL with its model's cycles, and its area where synthesis has
+// its stamp size at the synthesized tile and walk (tile 8, zigzag), unknown elsewhere.
+TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
+  // The full sweep's points: every stamp x tile x walk once, with distinct names.
+  const std::vector<SweepPoint> full = sweep_points(false, {"halfspace-sc"});
+  ASSERT_EQ(full.size(), 18u);
+  std::set<std::string> names;
+  for (const SweepPoint& p : full) {
+    EXPECT_EQ(p.kind(), UnitKind::Halfspace);
+    EXPECT_TRUE(p.rtl()) << p.label();
+    names.insert(p.config_name());
+  }
+  EXPECT_EQ(names.size(), 18u);
+  EXPECT_TRUE(names.count("S8 c16 b14 s4 t- row"));
+  // Not in the default engines: the default sweep has no half-space point.
+  for (const SweepPoint& p : sweep_points(false, {}))
+    EXPECT_NE(p.kind(), UnitKind::Halfspace) << p.label();
+
+  TempDir dir;
+  write_file(dir.file("synth.csv"),
+             "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
+             "improved,default,xilinx7,6536,2320,818,0,9,\n"
+             "halfspace-s1,default,xilinx7,5403,2393,666,0,15,\n"
+             "halfspace-s2,default,xilinx7,5944,2393,799,0,15,\n");
+  const CommandResult r = run_command(
+      kBin + " sweep --quick --no-progress --engines golden,halfspace-sc,halfspace-rtl "
+             "--scenes 'builtin:mixed:objects=2,tess=8;builtin:hard-tiny' --synth-csv " +
+      dir.file("synth.csv") + " --out " + dir.file("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto cfgs = read_csv(dir.file("out/sweep_configs.csv"));
+  int hs = 0;
+  for (const auto& row : cfgs) {
+    if (row.at("unit") != "halfspace") continue;
+    ++hs;
+    EXPECT_EQ(row.at("exact"), "1") << row.at("config");
+    EXPECT_EQ(row.at("failures"), "0") << row.at("config");
+    EXPECT_EQ(row.at("box_bits"), "14") << row.at("config");
+  }
+  EXPECT_EQ(hs, 4);  // quick: three model points and the RTL
+  const auto* s1 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s1 t8 zigzag");
+  const auto* s2 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s2 t8 zigzag");
+  const auto* s4 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s4 t16 row");
+  const auto* rtl = find_row(cfgs, "halfspace-rtl", "S8 c16 b14 s2 t8 zigzag");
+  ASSERT_TRUE(s1 && s2 && s4 && rtl);
+  EXPECT_EQ(s1->at("luts"), "5403");
+  EXPECT_EQ(s2->at("luts"), "5944");
+  EXPECT_EQ(s2->at("area_source"), "synth:xilinx7");
+  EXPECT_EQ(s4->at("luts"), "");  // stamp 4 not in this CSV, tile 16 row never synthesized
+  EXPECT_EQ(s4->at("area_source"), "");
+  EXPECT_EQ(rtl->at("total_cycles"), s2->at("total_cycles"));
+  // A larger stamp tests more pixels per cycle: fewer cycles.
+  EXPECT_LT(std::stol(s2->at("total_cycles")), std::stol(s1->at("total_cycles")));
+  // The synthesized half-space rows are in the report's area model without a width estimate.
+  const std::string json = slurp(dir.file("out/sweep.json"));
+  const size_t row = json.find("\"unit\": \"halfspace-s2\"");
+  ASSERT_NE(row, std::string::npos);
+  EXPECT_EQ(json.substr(row, json.find('}', row) - row).find("estimate"), std::string::npos);
+}
+
 TEST(SweepCli, BadUsageIsOneLine) {
   TempDir dir;
   for (const std::string& args :
@@ -380,6 +441,25 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   EXPECT_EQ(e.source, "estimate");
   EXPECT_GT(e.luts, d.luts);
   EXPECT_EQ(synth.area(UnitKind::Trad, def).source, "estimate");
+  // The half-space unit: synthesized per stamp size at tile 8, zigzag; no width formula.
+  write_file(dir.file("hs.csv"),
+             "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
+             "improved,default,xilinx7,6605,2320,818,0,9,\n"
+             "halfspace-s2,default,xilinx7,5944,2393,799,0,15,\n");
+  const AreaModel hs(dir.file("hs.csv"), dir.file("missing.sh"));
+  RasterConfig hs_cfg;
+  EXPECT_EQ(synth_unit_name(UnitKind::Halfspace, hs_cfg), "halfspace-s2");
+  EXPECT_EQ(hs.area(UnitKind::Halfspace, hs_cfg).luts, 5944);
+  EXPECT_EQ(hs.area(UnitKind::Improved, hs_cfg).luts, 6605);  // not confused with the improved row
+  hs_cfg.hs_tile = 16;
+  EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
+  hs_cfg.hs_tile = 8;
+  hs_cfg.hs_walk = HsWalk::Row;
+  EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
+  hs_cfg.hs_walk = HsWalk::Zigzag;
+  hs_cfg.hs_stamp = 4;
+  EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
+  EXPECT_FALSE(hs.estimate(UnitKind::Halfspace, RasterConfig{}).known());
   write_file(dir.file("bad.csv"), "unit,config,luts\nimproved,default,1\n");
   EXPECT_THROW(AreaModel(dir.file("bad.csv"), ""), std::runtime_error);
 }

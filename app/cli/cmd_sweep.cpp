@@ -272,29 +272,31 @@ std::string command_line(int argc, char** argv) {
 
 Json area_model_json(const AreaModel& area, const std::string& csv) {
   Json rows = Json::array();
-  for (const SynthRow& r : area.rows())
-    rows.push(Json::object()
-                  .set("unit", r.unit)
-                  .set("config", r.config)
-                  .set("target", r.target)
-                  .set("subpixel_bits", r.subpixel_bits)
-                  .set("coord_bits", r.coord_bits)
-                  .set("box_bits", r.box_bits)
-                  .set("luts", r.luts)
-                  .set("ffs", r.ffs)
-                  .set("endpoints", r.endpoints)
-                  .set("file", r.origin.empty() ? csv : r.origin)
-                  .set("from_run", r.from_run)
-                  .set("estimate", [&] {  // the width formula's figures for the same widths
-                    RasterConfig c;
-                    c.subpixel_bits = r.subpixel_bits;
-                    c.coord_int_bits = r.coord_bits;
-                    c.box_bits = r.box_bits;
-                    c.endpoints = r.endpoints;
-                    const Area e = area.estimate(
-                        r.unit == "trad" ? UnitKind::Trad : UnitKind::Improved, c);
-                    return Json::object().set("luts", e.luts).set("ffs", e.ffs);
-                  }()));
+  for (const SynthRow& r : area.rows()) {
+    Json row = Json::object()
+                   .set("unit", r.unit)
+                   .set("config", r.config)
+                   .set("target", r.target)
+                   .set("subpixel_bits", r.subpixel_bits)
+                   .set("coord_bits", r.coord_bits)
+                   .set("box_bits", r.box_bits)
+                   .set("luts", r.luts)
+                   .set("ffs", r.ffs)
+                   .set("endpoints", r.endpoints)
+                   .set("file", r.origin.empty() ? csv : r.origin)
+                   .set("from_run", r.from_run);
+    // The width formula's figures for the same widths (the units that have one).
+    if (r.unit == "improved" || r.unit == "trad") {
+      RasterConfig c;
+      c.subpixel_bits = r.subpixel_bits;
+      c.coord_int_bits = r.coord_bits;
+      c.box_bits = r.box_bits;
+      c.endpoints = r.endpoints;
+      const Area e = area.estimate(r.unit == "trad" ? UnitKind::Trad : UnitKind::Improved, c);
+      row.set("estimate", Json::object().set("luts", e.luts).set("ffs", e.ffs));
+    }
+    rows.push(std::move(row));
+  }
   const RasterConfig def;
   const Area imp = area.area(UnitKind::Improved, def), trad = area.area(UnitKind::Trad, def);
   const AreaTerms ti = improved_area_terms(def), tt = trad_area_terms(def);
@@ -357,7 +359,7 @@ int cmd_sweep(int argc, char** argv) {
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
              {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
-             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline (default) and improved-rtl, improved-datapath", ""},
+             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline,improved-rtl (default) and improved-datapath, halfspace-sc, halfspace-datapath, halfspace-rtl (the half-space unit over its stamp, tile and walk; area where scripts/synth.sh synthesized it)", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
              {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
@@ -602,11 +604,14 @@ int cmd_sweep(int argc, char** argv) {
               "cyc/tri", "LUTs", "cracks", "");
   for (size_t p = 0; p < points.size(); ++p)
     if (summaries[p].pareto_cycles)
-      std::printf("  %-40s %12.3f %10.3f %10.0f %8s  %s\n", points[p].label().c_str(),
+      std::printf("  %-40s %12.3f %10.3f %10s %8s  %s\n", points[p].label().c_str(),
                   summaries[p].error_ppm, summaries[p].cycles_per_triangle,
-                  summaries[p].area.luts,
+                  summaries[p].area.known() ? std::to_string(int64_t(summaries[p].area.luts)).c_str()
+                                            : "-",
                   summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
-                  summaries[p].area.estimate() ? "(area estimate)" : "");
+                  summaries[p].area.estimate() ? "(area estimate)"
+                  : summaries[p].area.known()  ? ""
+                                               : "(area not synthesized)");
   if (failures) std::printf("  %d point(s) failed: see the error column of sweep.csv\n", failures);
   if (!missing.empty())
     std::printf("  PARTIAL: %zu task(s) had no result file (first: %s); their points are left "

@@ -72,13 +72,17 @@ UnitKind SweepPoint::kind() const {
   if (engine == "improved-sc" || engine == "improved-datapath" || engine == "improved-rtl")
     return UnitKind::Improved;
   if (engine == "trad-sc") return UnitKind::Trad;
+  if (engine == "halfspace-sc" || engine == "halfspace-datapath" || engine == "halfspace-rtl")
+    return UnitKind::Halfspace;
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }
 
 bool SweepPoint::rtl() const {
   const UnitKind k = kind();
-  if (k == UnitKind::Trad) return cfg.fifo_depth == RasterConfig{}.fifo_depth;
+  // Stamp, tile and walk of the half-space unit are build parameters of its RTL.
+  if (k == UnitKind::Trad || k == UnitKind::Halfspace)
+    return cfg.fifo_depth == RasterConfig{}.fifo_depth;
   return k == UnitKind::Improved && cfg.divider_quotient_bits == 0 &&
          cfg.fifo_depth == RasterConfig{}.fifo_depth;
 }
@@ -91,6 +95,10 @@ std::string SweepPoint::config_name() const {
     s += " N" + std::to_string(cfg.endpoints);
     if (cfg.divider == DividerMode::Fixed) s += " fixed";
     if (cfg.boundary == BoundaryMode::Divide) s += " divide";
+  } else if (kind() == UnitKind::Halfspace) {
+    s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.hs_stamp) +
+         (cfg.hs_tile > 0 ? " t" + std::to_string(cfg.hs_tile) : std::string(" t-")) + " " +
+         hs_walk_name(cfg.hs_walk);
   }
   return s;
 }
@@ -120,6 +128,37 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     if (!seen.insert(p.label()).second) return;  // the same configuration in two groups
     pts.push_back(p);
   };
+  // The half-space unit (only when --engines names it): its build parameters at the default
+  // widths; its RTL at the stamp / tile / walk configurations that are Verilated
+  // (cmake/trirast_rtl_builds.cmake).
+  auto add_hs = [&](const std::string& engine, int stamp, int tile, HsWalk walk) {
+    if (!wanted(engine)) return;
+    SweepPoint p;
+    p.engine = engine;
+    p.group = "half-space";
+    p.cfg.hs_stamp = stamp;
+    p.cfg.hs_tile = tile;
+    p.cfg.hs_walk = walk;
+    if (seen.insert(p.label()).second) pts.push_back(p);
+  };
+  const auto Row = HsWalk::Row, Zz = HsWalk::Zigzag;
+  auto add_hs_points = [&] {
+    if (quick) {
+      add_hs("halfspace-sc", 1, 8, Zz);
+      add_hs("halfspace-sc", 2, 8, Zz);
+      add_hs("halfspace-sc", 4, 16, Row);
+    } else {
+      for (int stamp : {1, 2, 4})
+        for (int tile : {8, 16, 0})
+          for (HsWalk walk : {Zz, Row}) add_hs("halfspace-sc", stamp, tile, walk);
+    }
+    add_hs("halfspace-datapath", 2, 8, Zz);
+    add_hs("halfspace-rtl", 2, 8, Zz);
+    if (!quick) {
+      add_hs("halfspace-rtl", 4, 16, Row);
+      add_hs("halfspace-rtl", 1, 0, Zz);
+    }
+  };
   const auto A = DividerMode::Adaptive, Fx = DividerMode::Fixed;
   add("golden", "reference", 8, 16, 14, 0, 1);
   if (quick) {
@@ -132,6 +171,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     for (int S : {8, 4}) add("trad-sc", "traditional", S, 16, 14, 0, 1);
     add("float-scanline", "CPU baseline", 8, 16, 14, 0, 1);
     for (int N : {1, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
+    add_hs_points();
     return pts;
   }
   for (int S : {8, 6, 4, 2, 0})
@@ -154,6 +194,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     for (int coord : {16, 12}) add("trad-sc", "traditional", S, coord, 14, 0, 1);
   for (int S : {8, 6, 4, 2, 0}) add("float-scanline", "CPU baseline", S, 16, 14, 0, 1);
   for (int N : {1, 2, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
+  add_hs_points();
   return pts;
 }
 
@@ -376,9 +417,10 @@ std::string csv_field(const std::string& s) {
 std::string config_columns(const SweepPoint& p) {
   const RasterConfig& c = p.cfg;
   const bool improved = p.kind() == UnitKind::Improved;
+  const bool boxed = improved || p.kind() == UnitKind::Halfspace;
   return p.engine + "," + unit_kind_name(p.kind()) + "," + csv_field(p.group) + "," +
          csv_field(p.config_name()) + "," + std::to_string(c.subpixel_bits) + "," +
-         std::to_string(c.coord_int_bits) + "," + (improved ? std::to_string(c.box_bits) : "") +
+         std::to_string(c.coord_int_bits) + "," + (boxed ? std::to_string(c.box_bits) : "") +
          "," + (improved ? divider_mode_name(c.divider) : "") + "," +
          (improved ? std::to_string(c.divider_quotient_bits) : "") + "," +
          (improved ? std::to_string(c.endpoints) : "") + "," +
@@ -476,6 +518,11 @@ Json sweep_point_json(const SweepPoint& p) {
         .set("quotient_bits", c.divider_quotient_bits)
         .set("endpoints", c.endpoints)
         .set("boundary", boundary_mode_name(c.boundary));
+  if (p.kind() == UnitKind::Halfspace)
+    j.set("box_bits", c.box_bits)
+        .set("stamp", c.hs_stamp)
+        .set("tile", c.hs_tile)
+        .set("walk", hs_walk_name(c.hs_walk));
   return j;
 }
 

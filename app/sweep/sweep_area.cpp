@@ -15,8 +15,18 @@ const char* unit_kind_name(UnitKind k) {
   switch (k) {
     case UnitKind::Improved: return "improved";
     case UnitKind::Trad: return "trad";
+    case UnitKind::Halfspace: return "halfspace";
     case UnitKind::Cpu: return "cpu";
     default: return "golden";
+  }
+}
+
+std::string synth_unit_name(UnitKind k, const RasterConfig& cfg) {
+  switch (k) {
+    case UnitKind::Improved:
+    case UnitKind::Trad: return unit_kind_name(k);
+    case UnitKind::Halfspace: return "halfspace-s" + std::to_string(cfg.hs_stamp);
+    default: return "";
   }
 }
 
@@ -223,8 +233,9 @@ Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
 }
 
 double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
+  const std::string unit = synth_unit_name(kind, cfg);
   for (const SynthRow& r : fmax_rows_)
-    if (r.unit == unit_kind_name(kind) && r.subpixel_bits == cfg.subpixel_bits &&
+    if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
         r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
         r.endpoints == cfg.endpoints)
       return r.fmax_mhz;
@@ -233,12 +244,17 @@ double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
 
 Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
-  if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;  // no hardware
-  const RasterConfig synth_like;  // what synthesis fixes: FIFO 8, no truncation (N: the row's)
-  const bool fixed_match = cfg.fifo_depth == synth_like.fifo_depth &&
-                           (kind == UnitKind::Trad || cfg.divider_quotient_bits == 0);
+  if (kind != UnitKind::Improved && kind != UnitKind::Trad && kind != UnitKind::Halfspace)
+    return a;  // no hardware
+  // What synthesis fixes: FIFO 8; no truncation (improved); TileSize and walk (half-space); N:
+  // the row's.
+  const RasterConfig synth_like;
+  bool fixed_match = cfg.fifo_depth == synth_like.fifo_depth;
+  if (kind == UnitKind::Improved) fixed_match = fixed_match && cfg.divider_quotient_bits == 0;
+  if (kind == UnitKind::Halfspace)
+    fixed_match = fixed_match && cfg.hs_tile == synth_like.hs_tile && cfg.hs_walk == synth_like.hs_walk;
   if (fixed_match)
-    if (const SynthRow* r = find(unit_kind_name(kind), cfg)) {
+    if (const SynthRow* r = find(synth_unit_name(kind, cfg), cfg)) {
       a.luts = r->luts;
       a.ffs = r->ffs;
       a.source = "synth:" + r->target;

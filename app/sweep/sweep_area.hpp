@@ -9,8 +9,11 @@
 
 namespace trirast {
 
-enum class UnitKind { Improved, Trad, Cpu, Golden };
+enum class UnitKind { Improved, Trad, Halfspace, Cpu, Golden };
 const char* unit_kind_name(UnitKind k);
+// The unit's name in docs/synth.csv for a configuration: "improved", "trad", or the half-space
+// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S); "" for no hardware.
+std::string synth_unit_name(UnitKind k, const RasterConfig& cfg);
 
 struct Area {
   double luts = 0;
@@ -49,7 +52,9 @@ class AreaModel {
   // the file and line for a malformed CSV.
   AreaModel(const std::string& synth_csv, const std::string& synth_script);
   // Area of one configuration of a unit. Synthesis covers improved units with N = 1, FIFO 8 and no
-  // quotient truncation (divider and boundary modes are runtime inputs of the RTL).
+  // quotient truncation (divider and boundary modes are runtime inputs of the RTL), and the
+  // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, zigzag), per
+  // stamp size. The half-space unit has no width formula: elsewhere its area is unknown.
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
   // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a
@@ -57,7 +62,8 @@ class AreaModel {
   // default improved unit, recalibrates the estimate to it: the RTL of this run). Rows of another
   // target than target() (or of "ice40-pnr", which carries Fmax only) give only their Fmax.
   void add_rows(const std::vector<SynthRow>& rows);
-  // The width formula, scaled, whatever synthesis covers (to report its error against synthesis).
+  // The width formula, scaled, whatever synthesis covers (to report its error against synthesis);
+  // unknown (Area::known() false) for a unit without one (the half-space unit, CPU engines).
   Area estimate(UnitKind kind, const RasterConfig& cfg) const;
   // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
   double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
