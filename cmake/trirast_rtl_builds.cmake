@@ -93,7 +93,21 @@ function(trirast_add_rtl_builds)
     # The probes: internal signals the unit's harness counts busy cycles from.
     set(_probes "")
     if(_unit_top STREQUAL "trirast_top")
-      set(_probes --probe probe_div_en_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_en, u_dut.u_setup.g_edge[1].u_lane.div_en, u_dut.u_setup.g_edge[0].u_lane.div_en}")
+      # The lanes' divider enables and last iterations; the walk stage's rows: the three walkers' row states (2 bits
+      # per row of the group), the group's first row and the box's last (the walkers' Bresenham
+      # steps, counted by the harness as the model counts them).
+      set(_probes --probe probe_div_en_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_en, u_dut.u_setup.g_edge[1].u_lane.div_en, u_dut.u_setup.g_edge[0].u_lane.div_en}"
+                  --probe probe_div_last_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_last, u_dut.u_setup.g_edge[1].u_lane.div_last, u_dut.u_setup.g_edge[0].u_lane.div_last}"
+                  --probe probe_walker_state_o 6*NumEndpoints "{u_dut.u_walk.wst[2], u_dut.u_walk.wst[1], u_dut.u_walk.wst[0]}"
+                  --probe probe_walk_row_o trirast_pkg::RowBits u_dut.u_walk.row_q
+                  --probe probe_walk_ymax_o trirast_pkg::BoxBits u_dut.u_walk.ymax_q)
+    elseif(_unit_top STREQUAL "trirast_hs_top")
+      # The tile walker's state (WIdle .. WDrain), its unit test's class (accept, reject) and
+      # band hand-offs, and the span emitter's push.
+      set(_probes --probe probe_walk_state_o 3 u_dut.walk_state
+                  --probe probe_unit_class_o 2 "{u_dut.u_walker.accept, u_dut.u_walker.reject}"
+                  --probe probe_band_load_o 1 u_dut.band_load
+                  --probe probe_push_o 1 u_dut.push)
     elseif(_unit_top STREQUAL "trirast_trad_top")
       set(_probes --probe probe_long_step_o 1 u_dut.u_walk.long_step
                   --probe probe_short_step_o 1 u_dut.u_walk.short_step)
@@ -165,9 +179,11 @@ function(trirast_add_rtl_builds)
     list(GET _widths_${_cfg} 0 _s)
     list(GET _widths_${_cfg} 1 _coord)
     list(GET _widths_${_cfg} 2 _box)
+    set(_targs "${_prefix}, Params_${_cfg}")
     if(_unit STREQUAL "improved")
       set(_harness improved_harness.hpp)
       set(_fn run_improved_build)
+      set(_targs "${_targs}, ${_n}")  # NumEndpoints: the walkers' rows in the harness's probe
     elseif(_unit STREQUAL "halfspace")
       set(_harness halfspace_harness.hpp)
       set(_fn run_halfspace_build)
@@ -182,7 +198,7 @@ function(trirast_add_rtl_builds)
 #include \"verilator/${_harness}\"
 namespace trirast::rtl {
 void run${_prefix}(const SetupResult& s, const RasterConfig& c, uint32_t seed, EngineResult& o) {
-  ${_fn}<${_prefix}, Params_${_cfg}>(s, c, seed, o);
+  ${_fn}<${_targs}>(s, c, seed, o);
 }
 }  // namespace trirast::rtl
 ")

@@ -11,7 +11,7 @@ both of the simulation's surroundings, not of the unit:
     hangs off a register only after a clock edge. The configuration reaches most of the unit.
   * probes: --probe PORT WIDTH EXPR adds output PORT = EXPR, an expression over u_dut's
     hierarchy (the harness's busy counters), so the harness reads ports, not Verilator's internal
-    names.
+    names. WIDTH is a number or an expression over the unit's parameters.
 
   scripts/gen_sim_top.py --dut rtl/trirast_top.sv --top trirast_top --name trirast_top_sim \
       --out DIR/trirast_top_sim.sv [--probe PORT WIDTH EXPR ...]
@@ -64,7 +64,9 @@ def main():
         out.append("#(" + params_text.rstrip() + "\n)")
     port_lines = [f"  {d:<6} logic {rng + ' ' if rng else ''}{name}" for d, rng, name in ports]
     for port, width, _ in a.probe:
-        port_lines.append(f"  output logic [{int(width) - 1}:0] {port}")
+        # WIDTH: a number, or an expression over the unit's parameters (e.g. 6*NumEndpoints).
+        rng = f"{int(width) - 1}:0" if width.isdigit() else f"{width}-1:0"
+        port_lines.append(f"  output logic [{rng}] {port}")
     out.append("(" + ",\n".join(port_lines) + "\n);")
     for _, rng, name in cfg:
         out.append(f"  logic {rng + ' ' if rng else ''}{name[:-2]}_q;")

@@ -1,8 +1,12 @@
 // Every column of a per-triangle cycles row (docs/timing.md, "Outputs"), for tests that compare
-// two engines' rows column by column and print a mismatch in full.
+// two engines' rows column by column and print a mismatch in full; and the run's statistics a
+// unit's RTL reports as its SystemC model does.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 #include "core/engine.hpp"
 
@@ -25,6 +29,28 @@ inline constexpr const char* kCyclesColumns =
 // All sixteen columns equal.
 inline bool same_cycles(const TriangleCycles& a, const TriangleCycles& b) {
   return cycles_row(a) == cycles_row(b);
+}
+
+// The model's statistics the RTL must equal: every counter of the model's work (module busy and
+// stall cycles, the datapath's work) but its simulation speed (sim_*) and the names in `except`
+// (counters without an RTL counterpart). Returns the mismatches ("" when none) and sets
+// `compared` to the number of counters compared.
+inline std::string statistics_mismatch(const std::map<std::string, uint64_t>& model,
+                                       const std::map<std::string, uint64_t>& rtl,
+                                       const std::vector<std::string>& except, int& compared) {
+  std::string bad;
+  compared = 0;
+  for (const auto& [key, v] : model) {
+    if (key.rfind("sim_", 0) == 0 || std::find(except.begin(), except.end(), key) != except.end())
+      continue;
+    ++compared;
+    const auto it = rtl.find(key);
+    if (it == rtl.end())
+      bad += " " + key + " (not reported)";
+    else if (it->second != v)
+      bad += " " + key + " (rtl " + std::to_string(it->second) + ", model " + std::to_string(v) + ")";
+  }
+  return bad;
 }
 
 }  // namespace trirast::test

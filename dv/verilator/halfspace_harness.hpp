@@ -32,19 +32,50 @@ struct HalfspacePorts {
     tag = top.box_retire_tag_o;
     return true;
   }
-  // The setup stage as the model counts it (model/sc/halfspace_sc.cpp, stage_skeleton.hpp): busy
-  // in StBox and StEdge, stalled in StHold while the walk stage is busy. The walk stage's own
-  // counters (tile walker, span emitter) are the model's only.
-  void count(const Top& top, ModuleCycles& m) const {
+  // The modules as the model counts them (model/sc/halfspace_sc.cpp, stage_skeleton.hpp): the
+  // setup stage is busy in StBox and StEdge and stalled in StHold while the walk stage is busy;
+  // the tile walker (and the walk stage) works on a band in WUnit and WStamp and waits in WWait
+  // for the span emitter to take the band; the span emitter is busy for each push, and the walk
+  // stage stalls while a span waits for FIFO room (walk_stall_o).
+  void count(const Top& top, ModuleCycles& m) {
     const unsigned st = top.setup_state_o;
-    m.busy[0] += st == kHsStBox || st == kHsStEdge;
-    m.stall[0] += st == kHsStHold && top.walk_busy_o;
+    m.busy[kHsSetup] += st == kHsStBox || st == kHsStEdge;
+    m.stall[kHsSetup] += st == kHsStHold && top.walk_busy_o;
+    const unsigned w = top.probe_walk_state_o;
+    const bool band = w == kHsWUnit || w == kHsWStamp;
+    m.busy[kHsTileWalker] += band;
+    m.stall[kHsTileWalker] += w == kHsWWait;
+    m.busy[kHsWalk] += band;
+    m.stall[kHsWalk] += top.walk_stall_o;
+    m.busy[kHsSpanEmitter] += top.probe_push_o;
+    // The datapath's work (model/unit/halfspace_unit.cpp, HsWork): a unit tested per WUnit cycle
+    // (rejected, a tile accepted whole, or partial), a stamp per WStamp cycle, a band per hand-off
+    // to the span emitter.
+    if (w == kHsWUnit) {
+      const unsigned cls = top.probe_unit_class_o;  // bit 1: accept, bit 0: reject
+      ++work_.units_tested;
+      if (cls & 1u) ++work_.rejected;
+      else if (cls & 2u) ++work_.accepted;
+      else ++work_.partial;
+    }
+    work_.stamps += w == kHsWStamp;
+    work_.bands += top.probe_band_load_o;
   }
+  HsWork work_;  // spans and pixels stay 0: the loop counts those
   void add_counters(const ModuleCycles& m, std::map<std::string, uint64_t>& work) const {
-    work["busy_cycles.setup"] += m.busy[0];
-    work["stall_cycles.setup"] += m.stall[0];
+    work["busy_cycles.setup"] += m.busy[kHsSetup];
+    work["stall_cycles.setup"] += m.stall[kHsSetup];
+    work["busy_cycles.tile_walker"] += m.busy[kHsTileWalker];
+    work["stall_cycles.tile_walker"] += m.stall[kHsTileWalker];
+    work["busy_cycles.walk"] += m.busy[kHsWalk];
+    work["stall_cycles.walk"] += m.stall[kHsWalk];
+    work["busy_cycles.span_emitter"] += m.busy[kHsSpanEmitter];
+    add_hs_work(work_, work);
   }
+  enum : int { kHsSetup, kHsTileWalker, kHsWalk, kHsSpanEmitter };
   static constexpr unsigned kHsStBox = 1, kHsStEdge = 2, kHsStHold = 4;
+  // Tile-walker states of rtl/trirast_hs_tile_walker.sv.
+  static constexpr unsigned kHsWUnit = 1, kHsWStamp = 2, kHsWWait = 3;
   // A box of up to 2^box_bits x 2^box_bits pixels walked a pixel per cycle without a span (every
   // unit of an empty band is tested), plus margin: cycle_loop.hpp's watchdog.
   static constexpr uint64_t kWatchdogCycles = uint64_t(4) << (2 * P::kBoxBits);

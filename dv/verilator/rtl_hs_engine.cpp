@@ -10,6 +10,7 @@
 
 #include "core/sink_pattern.hpp"
 #include "rtl_builds.hpp"
+#include "sim_clock.hpp"
 
 namespace trirast {
 namespace rtl {
@@ -88,7 +89,9 @@ std::vector<HsParams> halfspace_built_params(const RasterConfig& cfg) {
 void run_rtl_halfspace(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        EngineResult& out) {
   (void)SinkPattern::parse(cfg.sink_stall);
-  pick_build(cfg).run(setup, cfg, x_seed, out);
+  const RtlBuild& build = pick_build(cfg);
+  build.run(setup, cfg, x_seed, out);
+  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
 }
 
 }  // namespace rtl
@@ -98,9 +101,7 @@ namespace {
 class RtlHalfspaceEngine : public Engine {
  public:
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    uint32_t seed = 1;
-    if (const char* s = std::getenv("TRIRAST_RTL_SEED")) seed = uint32_t(std::strtoul(s, nullptr, 0));
-    rtl::run_rtl_halfspace(setup, cfg, seed, out);
+    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_halfspace(setup, cfg, seed, out); });
   }
 };
 

@@ -60,11 +60,7 @@ namespace {
 class RtlTradEngine : public Engine {
  public:
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    rtl::RtlRunOptions opt;
-    if (const char* s = std::getenv("TRIRAST_RTL_SEED")) opt.x_seed = uint32_t(std::strtoul(s, nullptr, 0));
-    const SimClock clock;
-    rtl::run_rtl_trad(setup, cfg, opt, out);
-    clock.report(out);
+    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_trad(setup, cfg, {seed}, out); });
   }
 };
 

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <cstdlib>
 
 #include "core/engine.hpp"
 
@@ -34,5 +35,16 @@ class SimClock {
   std::chrono::steady_clock::time_point wall0_;
   double cpu0_;
 };
+
+// An RTL engine's run (rtl_engine.cpp, rtl_trad_engine.cpp, rtl_hs_engine.cpp): the X seed from
+// TRIRAST_RTL_SEED (default 1; reported as work "rtl_x_seed"), the run, and its speed.
+template <class Run>
+void run_rtl_timed(EngineResult& out, Run&& run) {
+  uint32_t seed = 1;
+  if (const char* s = std::getenv("TRIRAST_RTL_SEED")) seed = uint32_t(std::strtoul(s, nullptr, 0));
+  const SimClock clock;
+  run(seed);
+  clock.report(out);
+}
 
 }  // namespace trirast

@@ -76,6 +76,9 @@ struct TradPorts {
     work["stall_cycles.walk"] += m.stall[kTradWalk];
     work["busy_cycles.long_walker"] += m.busy[kTradLongWalker];
     work["busy_cycles.short_walker"] += m.busy[kTradShortWalker];
+    // The datapath's work as the model counts it: a Bresenham step per walker step (the model's
+    // rows_visited has no RTL counterpart here).
+    work["trad_bresenham_steps"] += m.busy[kTradLongWalker] + m.busy[kTradShortWalker];
   }
 };
 

@@ -5,6 +5,8 @@
 // pixels and stall cycles, with the sink always ready and with stalling sinks and shallow FIFOs.
 #include <gtest/gtest.h>
 
+#include "reference/cycle_columns.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -67,6 +69,11 @@ size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std
     if (++reported == 5) break;
   }
   EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
+  // The statistics: every module's busy and stall cycles and the datapath's work counters are
+  // the model's, counted from the RTL's own signals (halfspace_harness.hpp).
+  int stats = 0;
+  EXPECT_EQ(test::statistics_mismatch(sc.work, rtl.work, {}, stats), "") << what;
+  EXPECT_GE(stats, 18) << what;  // six modules' busy, three stalls, six hs_*, spans, pixels, ...
   return rtl.cycles.size();
 }
 

@@ -67,6 +67,11 @@ size_t expect_trad(const SetupResult& setup, const RasterConfig& cfg, const std:
   }
   EXPECT_EQ(mismatches, 0u) << what << ": triangles with other cycles";
   EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
+  // The statistics: the model's module busy and stall cycles and Bresenham steps (its
+  // rows_visited has no RTL counterpart).
+  int stats = 0;
+  EXPECT_EQ(test::statistics_mismatch(sc.work, rtl.work, {"rows_visited"}, stats), "") << what;
+  EXPECT_GE(stats, 12) << what;
   return setup.tris.size();
 }
 
