@@ -15,6 +15,7 @@
 //   void observe_setup(const Top&, TriangleCycles&)   every cycle a triangle is in the setup
 //                                                 stage: its lanes' divider and boundary work
 //   void observe_handoff(const Top&, TriangleCycles&) in its hand-off cycle: its box size
+//   static const UnitStates kStates               its stages' state names (rtl_gtkw.hpp)
 //
 // The stage breakdown (docs/timing.md, "Outputs") comes from the observation outputs both tops
 // have: setup_state_o (its first non-idle cycle, its first StHold cycle), handoff_o, and the walk
@@ -307,12 +308,8 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   }
   top->final();
   if (tracing) {
-    const bool trad = std::string(top_name) == "trirast_trad_top";
-    const StateNames setup_states =
-        trad ? StateNames{{0, "StIdle"}, {1, "StSort"}, {2, "StLine"}, {4, "StHold"}}
-             : StateNames{{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {3, "StLanes"}, {4, "StHold"}};
     write_rtl_gtkw(fst_path, cfg.trace_path, trace_start, std::max(trace_end, trace_start + 10),
-                   setup_states);
+                   Unit::kStates);
     finish_trace(fst_path, cfg.trace_path, engine);
     if (zero_fill) out.work["rtl_x_zero_fill"] = 1;
   }

@@ -17,6 +17,11 @@ namespace trirast::rtl {
 
 template <class Top, class P>
 struct HalfspacePorts {
+  // rtl/trirast_hs_setup_stage.sv; the tile walker (rtl/trirast_hs_tile_walker.sv) is the walk
+  // stage's state machine.
+  static inline const UnitStates kStates = {
+      {{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {4, "StHold"}},
+      {{0, "WIdle"}, {1, "WUnit"}, {2, "WStamp"}, {3, "WWait"}, {4, "WDrain"}}};
 
   void configure(Top&, const RasterConfig&) const {}  // viewport and FIFO only
   void offer(Top& top, const TriangleSetup& t) const {

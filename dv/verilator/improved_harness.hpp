@@ -27,6 +27,9 @@ enum : unsigned { kRtlStIdle = 0, kRtlStBox = 1, kRtlStEdge = 2, kRtlStLanes = 3
 
 template <class Top, class P, int kBuildEndpoints>
 struct ImprovedPorts {
+  // rtl/trirast_setup_stage.sv, trirast_walk_stage.sv.
+  static inline const UnitStates kStates = {
+      {{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {3, "StLanes"}, {4, "StHold"}}, kWalkStageStates};
 
   void configure(Top& top, const RasterConfig& cfg) {
     top.cfg_divide_i = cfg.boundary == BoundaryMode::Divide;

@@ -15,13 +15,21 @@
 
 namespace trirast::rtl {
 
-// The state encodings of a unit's setup stage (value, the RTL's enum name).
+// A state encoding (value, the RTL's enum name).
 using StateNames = std::vector<std::pair<uint64_t, std::string>>;
+// The state encodings of a unit's setup and walk stages (each harness's kStates).
+struct UnitStates {
+  StateNames setup, walk;
+};
+// The walk stage of the Bresenham units (rtl/trirast_walk_stage.sv, trirast_trad_walk_stage.sv).
+inline const StateNames kWalkStageStates = {{0, "StWalkIdle"}, {1, "StWalk"}};
 
 // Writes gtkw_path for the FST recording `fst_path` (the trace will be `trace_path`), whose
 // window runs from dump time `start` to `end`. The recording's time unit is 100 ps (10 per cycle).
+// The setup and walk stages' state registers (state_q, state_d in a scope named for the stage,
+// the unit's setup_state_o, walk_state_o or walk_state) show the names of `states`.
 inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace_path,
-                           uint64_t start, uint64_t end, const StateNames& setup_states) {
+                           uint64_t start, uint64_t end, const UnitStates& states) {
   void* rd = fstReaderOpen(fst_path.c_str());
   if (!rd) throw std::runtime_error("--trace " + trace_path + ": cannot read the recording back");
   GtkwSave save;
@@ -29,9 +37,8 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
   save.window_start = start;
   save.window_end = end;
   save.time_factor = 100;  // timescale 100ps: GTKWave counts in ps
-  save.filters.push_back(GtkwSave::Filter{"setup_state", setup_states});
-  save.filters.push_back(
-      GtkwSave::Filter{"walk_state", {{0, "StWalkIdle"}, {1, "StWalk"}}});
+  save.filters.push_back(GtkwSave::Filter{"setup_state", states.setup});
+  save.filters.push_back(GtkwSave::Filter{"walk_state", states.walk});
   // The edge lane's phase (rtl/trirast_edge_lane.sv, localparams).
   save.filters.push_back(GtkwSave::Filter{
       "lane_phase", {{0, "PhSlope"}, {1, "PhTrav"}, {2, "PhEntry"}, {3, "PhDone"}}});
@@ -87,9 +94,10 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
       std::string filter;
       const bool setup_scope = leaf.find("setup") != std::string::npos;
       const bool walk_scope = leaf.find("walk") != std::string::npos;
-      if (base == "setup_state_o" || (setup_scope && (base == "state_q" || base == "state_d")))
+      const bool state_reg = base == "state_q" || base == "state_d" || base == "state_o";
+      if (base == "setup_state_o" || base == "setup_state" || (setup_scope && state_reg))
         filter = "setup_state";
-      else if (base == "walk_state_o" || (walk_scope && (base == "state_q" || base == "state_d")))
+      else if (base == "walk_state_o" || base == "walk_state" || (walk_scope && state_reg))
         filter = "walk_state";
       else if (leaf == "u_lane" && (base == "phase_q" || base == "phase_d"))
         filter = "lane_phase";

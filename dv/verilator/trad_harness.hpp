@@ -19,6 +19,9 @@ enum TradModule : int { kTradSetup, kTradWalk, kTradLongWalker, kTradShortWalker
 
 template <class Top, class P>
 struct TradPorts {
+  // rtl/trirast_trad_setup_stage.sv, trirast_trad_walk_stage.sv.
+  static inline const UnitStates kStates = {
+      {{0, "StIdle"}, {1, "StSort"}, {2, "StLine"}, {4, "StHold"}}, kWalkStageStates};
   using PortBits = Bits<4>;  // up to 128-bit ports
   static_assert(words(3 * P::kVertexBits) <= 4, "Bits<4> holds up to 128 bits");
 

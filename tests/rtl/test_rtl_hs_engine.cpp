@@ -5,8 +5,6 @@
 // pixels and stall cycles, with the sink always ready and with stalling sinks and shallow FIFOs.
 #include <gtest/gtest.h>
 
-#include "reference/cycle_columns.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -15,9 +13,11 @@
 #include "core/fixed_point.hpp"
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
+#include "reference/cycle_columns.hpp"
 #include "reference/reference_raster.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
+#include "support/run_command.hpp"
 #include "unit/halfspace_unit.hpp"
 #include "unit/unit_widths.hpp"
 #include "verilator/rtl_builds.hpp"
@@ -266,6 +266,35 @@ TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
                        name(Built{b.stamp, b.tile, cfg.hs_walk}, sink, cfg.fifo_depth));
     }
   EXPECT_GT(narrow, 0) << "no build sees corner values wider than 2p + 2 bits";
+}
+
+// The trace's save file names the half-space unit's own states: its setup stage has no StLanes,
+// its walk stage is the tile walker (WIdle .. WDrain), in the register and the unit's nets.
+TEST(RtlHalfspace, TraceShowsTheUnitsStateNames) {
+  RasterConfig cfg;
+  const std::string dir = testing::TempDir();
+  cfg.trace_path = dir + "/hs_states.fst";
+  const SetupResult setup = setup_scene({tri(1, 1, 90, 2, 3, 80), tri(10, 40, 60, 5, 50, 44)}, cfg);
+  EngineResult r;
+  make_rtl_halfspace_engine()->run(setup, cfg, r);
+  const std::string walk = test::slurp(dir + "/hs_states.walk_state.filter");
+  const std::string setup_names = test::slurp(dir + "/hs_states.setup_state.filter");
+  EXPECT_EQ(walk, "0 WIdle\n1 WUnit\n2 WStamp\n3 WWait\n4 WDrain\n");
+  EXPECT_EQ(setup_names, "0 StIdle\n1 StBox\n2 StEdge\n4 StHold\n");
+  const std::string gtkw = test::slurp(dir + "/hs_states.gtkw");
+  for (const char* sig : {"u_dut.u_walker.state_q[2:0]", "u_dut.walk_state[2:0]",
+                          "u_dut.u_setup.state_q[2:0]", "u_dut.setup_state[2:0]"}) {
+    const size_t at = gtkw.find(std::string("_sim.") + sig + "\n");
+    ASSERT_NE(at, std::string::npos) << sig;
+    const size_t filter = gtkw.rfind(".filter\n", at);
+    ASSERT_NE(filter, std::string::npos) << sig;
+    // The filter line is the one two lines above the signal ("^N file.filter", "@2024", signal).
+    EXPECT_EQ(std::count(gtkw.begin() + long(filter), gtkw.begin() + long(at), '\n'), 2) << sig;
+    const std::string which = std::string(sig).find("walk") != std::string::npos
+                                  ? "walk_state"
+                                  : "setup_state";
+    EXPECT_EQ(gtkw.compare(filter - which.size(), which.size(), which), 0) << sig;
+  }
 }
 
 TEST(RtlHalfspace, UnbuiltConfigurationIsNamed) {
