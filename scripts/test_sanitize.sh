@@ -5,6 +5,8 @@
 #
 # Every test program runs under both sanitizers, the SystemC ones included; only the benchmark
 # programs are not built, and the libFuzzer test (sanitized itself) runs in the normal suite only.
+# The Verilated models' generated C++ is compiled without instrumentation (Verilator's code, not
+# ours; dv/verilator/CMakeLists.txt); the harnesses around them are checked.
 # SystemC switches stacks between its coroutines (QuickThreads in Debian's libsystemc, not
 # annotated for ASan), after which ASan no longer knows the main thread's stack and cannot clean
 # it up when an exception unwinds it: stack-use-after-return detection is off (ASAN_OPTIONS below)
