@@ -6,6 +6,10 @@
 #
 #   scripts/gen2_study.sh [--only REGEX] [--timeout SECONDS] [--freq MHZ] [--no-pnr] [WORKDIR]
 #   scripts/gen2_study.sh --report [WORKDIR]   (only print the table from WORKDIR's logs)
+#   scripts/gen2_study.sh --check [WORKDIR]    (only the functional cross-check: Verilator --binary
+#       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes against
+#       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
+#       against rtl/trirast_span_generator.sv; exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6), FF, CARRY4, DSP48E1;
@@ -26,6 +30,7 @@ TIMEOUT=600
 FREQ=12
 PNR=1
 REPORT=0
+CHECK=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --only) [ $# -ge 2 ] || { echo "$ME: --only needs REGEX" >&2; exit 2; }; ONLY="$2"; shift 2 ;;
@@ -35,6 +40,7 @@ while [ $# -gt 0 ]; do
             FREQ="$2"; shift 2 ;;
     --no-pnr) PNR=0; shift ;;
     --report) REPORT=1; shift ;;
+    --check) CHECK=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "$ME: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) break ;;
@@ -160,6 +166,23 @@ report() {
   echo "Default configuration (S = 8, coordinate 16, box 14), $(yosys -V 2>/dev/null | cut -d' ' -f1-2),"
   echo "nextpnr-ice40 --hx8k --package ct256 --seed 1 --freq $FREQ; wrapped LC include the wrapper's registers."
 }
+
+if [ "$CHECK" = 1 ]; then
+  command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
+  python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \
+    --endpoints 1 --fifo-depth 8 --sv "$PKG" >/dev/null ||
+    { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
+  rm -rf "$WORK/check"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
+    "$S/g2_corner_digit.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
+    --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
+  out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_check_tb:"
+  echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+  exit 0
+fi
 
 if [ "$REPORT" = 0 ]; then
   python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \

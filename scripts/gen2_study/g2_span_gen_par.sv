@@ -17,33 +17,30 @@ module g2_span_gen_par (
   localparam logic [1:0] RowOut = trirast_pkg::RowOut;
   localparam logic [1:0] RowBound = trirast_pkg::RowBound;
 
-  logic [B1-1:0] bnd [3];
-  logic [2:0] isb, ism, isn;    // bound; bound and mirrored (begin); bound, not mirrored (end)
-  logic out;
-  logic lt [3][3];
-  for (genvar k = 0; k < 3; k++) begin : g_k
-    assign bnd[k] = bound_i[k*B1 +: B1];
-    assign isb[k] = state_i[2*k +: 2] == RowBound;
-    assign ism[k] = isb[k] && mirror_i[k];
-    assign isn[k] = isb[k] && !mirror_i[k];
-  end
-  assign out = (state_i[1:0] == RowOut) || (state_i[3:2] == RowOut) || (state_i[5:4] == RowOut);
-  for (genvar i = 0; i < 3; i++) begin : g_i
-    for (genvar j = 0; j < 3; j++) begin : g_j
-      if (i != j) begin : g_lt
-        assign lt[i][j] = bnd[i] < bnd[j];
-      end else begin : g_eq
-        assign lt[i][j] = 1'b0;
+  // All in one always_comb over packed vectors: the six ordered compares b_i < b_j first (one
+  // level), then the selections and the validity from them.
+  always_comb begin
+    logic [2:0][B1-1:0] bnd;
+    logic [2:0] isb, ism, isn;   // bound; bound and mirrored (begin); bound, not mirrored (end)
+    logic [8:0] lt;              // lt[3*i + j] = b_i < b_j
+    logic out, ok, top, low;
+    logic [B1-1:0] e;
+    out = 1'b0;
+    for (int k = 0; k < 3; k++) begin
+      bnd[k] = bound_i[k*B1 +: B1];
+      isb[k] = state_i[2*k +: 2] == RowBound;
+      ism[k] = isb[k] && mirror_i[k];
+      isn[k] = isb[k] && !mirror_i[k];
+      if (state_i[2*k +: 2] == RowOut) out = 1'b1;
+    end
+    for (int i = 0; i < 3; i++) begin
+      for (int j = 0; j < 3; j++) begin
+        lt[3*i + j] = (i != j) && (bnd[i] < bnd[j]);
       end
     end
-  end
-
-  // begin: the OR of the mirrored bounds that no other mirrored bound exceeds (ties select equal
-  // values, so the OR is still that value); end: likewise the smallest non-mirrored bound, or
-  // Xmax + 1 when there is none.
-  always_comb begin
-    logic ok, top, low;
-    logic [B1-1:0] e;
+    // begin: the OR of the mirrored bounds that no other mirrored bound exceeds (ties select
+    // equal values, so the OR is still that value); end: likewise the smallest non-mirrored
+    // bound, or Xmax + 1 when there is none.
     begin_o = '0;
     e = '0;
     for (int i = 0; i < 3; i++) begin
@@ -51,8 +48,8 @@ module g2_span_gen_par (
       low = isn[i];
       for (int j = 0; j < 3; j++) begin
         if (j != i) begin
-          if (ism[j] && lt[i][j]) top = 1'b0;
-          if (isn[j] && lt[j][i]) low = 1'b0;
+          if (ism[j] && lt[3*i + j]) top = 1'b0;
+          if (isn[j] && lt[3*j + i]) low = 1'b0;
         end
       end
       if (top) begin_o = begin_o | bnd[i];
@@ -62,7 +59,7 @@ module g2_span_gen_par (
     ok = !out;
     for (int i = 0; i < 3; i++) begin
       for (int j = 0; j < 3; j++) begin
-        if (i != j && ism[i] && isn[j] && !lt[i][j]) ok = 1'b0;
+        if (i != j && ism[i] && isn[j] && !lt[3*i + j]) ok = 1'b0;
       end
     end
     valid_o = ok;
