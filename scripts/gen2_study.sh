@@ -68,6 +68,9 @@ DESIGNS=(
 "g2.corner_r4_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=1|shift-add radix 4, E_L and E_R, ceil(bits/2) cycles"
 "g2.corner_r4_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=0|shift-add radix 4, E_L only, ceil(bits/2) cycles"
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
+"g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
+"g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
+"g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
 "g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
 "g2.walker_cs|g2_walker_cs|$S/g2_walker_cs.sv||carry-select edge walker, parallel leave test, bound register"
 "g1.span_gen|trirast_span_generator|$R/trirast_span_generator.sv||gen1 span generator (serial compare-selects), combinational"
@@ -136,9 +139,13 @@ pnr_lc() {
   lc=$(grep -o "ICESTORM_LC: *[0-9]*/ *[0-9]*" "$1/nextpnr.log" 2>/dev/null | tail -1 | sed 's/ICESTORM_LC: *//; s/ //g')
   echo "${lc:--}"
 }
-pnr_fmax() {
+pnr_fmax() {  # achieved Fmax after routing, or why there is none
   local log="$1/nextpnr.log"
-  [ -f "$log" ] && grep -q "Program finished normally" "$log" || { echo "-"; return; }
+  [ -f "$log" ] || { echo "-"; return; }
+  if ! grep -q "Program finished normally" "$log"; then
+    if grep -q "Unable to place cell" "$log"; then echo "does not fit"; else echo "failed"; fi
+    return
+  fi
   grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/"
 }
 pnr_path() {  # first source -> last sink of the critical path, and its logic/routing split

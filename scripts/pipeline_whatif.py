@@ -19,7 +19,9 @@ box stage (1 cycle; an empty box retires there) and a corner-value stage of c cy
 triangle, followed by the direct test of the first --direct size or the lanes and the walk as
 above. c comes from the triangle's snapped vertices (`trirast raster --export-tris`), with the
 vertex-relative operands dxL = cx0 - vx, dy = cy0 - vy of each edge's first vertex (E_R is assumed
-to be formed during the lanes' slope division, at no cycle cost):
+to be formed during the lanes' slope division, at no cycle cost). These columns take the lanes'
+L from setup_done_cycle (a + 3 + L); the columns before them take accept-to-hand-off minus 3,
+which also counts today's wait in StHold for the walk stage (so they are more pessimistic):
   1       one cycle (all products in one cycle, as gen1's interface);
   sN      shift-add, N operand bits per cycle: c = max(1, ceil(bits / N)), bits = the largest
           bit length of |dxL|, |dy| over the three edges;
@@ -148,7 +150,9 @@ def estimate_corner(rows, direct, spec, geo, F):
         if direct and w <= direct[0] and h <= direct[1]:
             t_walk = max(t_walk, t_c) + max(1, r["spans"])
             continue
-        lanes = max(1, r["handoff_cycle"] - r["accept_cycle"] - 3)
+        # L itself (setup_done_cycle = a + 3 + L), without today's wait in StHold for the walk
+        # stage, which the walk term below already counts (estimate() uses the hand-off cycle).
+        lanes = max(1, r["setup_done_cycle"] - r["accept_cycle"] - 3)
         walk = r["walk_end_cycle"] - r["walk_start_cycle"] + 1
         t_lanes = max(t_lanes, t_c) + lanes
         t_walk = max(t_walk, t_lanes) + walk

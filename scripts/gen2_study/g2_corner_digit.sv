@@ -71,8 +71,8 @@ module g2_corner_digit #(
         ml_mc_d = dxl[DW-1] ? -ae : ae;
         mr_mc_d = dxr[DW-1] ? -ae : ae;
         my_mc_d = dy[DW-1] ? -be : be;
-        accl_d = -EB'(bias_i[k]);
-        accr_d = -EB'(bias_i[k]);
+        accl_d = {EB{bias_i[k]}};  // -bias
+        accr_d = {EB{bias_i[k]}};
       end else if (busy_k[k]) begin
         accl_d = accl_q + ppl + ppy;
         accr_d = accr_q + ppr + ppy;

@@ -20,14 +20,12 @@ module g2_span_gen_par (
   // All in one always_comb over packed vectors: the six ordered compares b_i < b_j first (one
   // level), then the selections and the validity from them.
   always_comb begin
-    logic [2:0][B1-1:0] bnd;
     logic [2:0] isb, ism, isn;   // bound; bound and mirrored (begin); bound, not mirrored (end)
     logic [8:0] lt;              // lt[3*i + j] = b_i < b_j
     logic out, ok, top, low;
     logic [B1-1:0] e;
     out = 1'b0;
     for (int k = 0; k < 3; k++) begin
-      bnd[k] = bound_i[k*B1 +: B1];
       isb[k] = state_i[2*k +: 2] == RowBound;
       ism[k] = isb[k] && mirror_i[k];
       isn[k] = isb[k] && !mirror_i[k];
@@ -35,7 +33,7 @@ module g2_span_gen_par (
     end
     for (int i = 0; i < 3; i++) begin
       for (int j = 0; j < 3; j++) begin
-        lt[3*i + j] = (i != j) && (bnd[i] < bnd[j]);
+        lt[3*i + j] = (i != j) && (bound_i[i*B1 +: B1] < bound_i[j*B1 +: B1]);
       end
     end
     // begin: the OR of the mirrored bounds that no other mirrored bound exceeds (ties select
@@ -52,8 +50,8 @@ module g2_span_gen_par (
           if (isn[j] && lt[3*j + i]) low = 1'b0;
         end
       end
-      if (top) begin_o = begin_o | bnd[i];
-      if (low) e = e | bnd[i];
+      if (top) begin_o = begin_o | bound_i[i*B1 +: B1];
+      if (low) e = e | bound_i[i*B1 +: B1];
     end
     end_o = (isn == 3'b000) ? B1'(xmax_i) + 1'b1 : e;
     ok = !out;
