@@ -7,17 +7,20 @@
 #   scripts/gen2_study.sh [--only REGEX] [--timeout SECONDS] [--freq MHZ] [--no-pnr] [WORKDIR]
 #   scripts/gen2_study.sh --report [WORKDIR]   (only print the table from WORKDIR's logs)
 #   scripts/gen2_study.sh --check [WORKDIR]    (only the functional cross-check: Verilator --binary
-#       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes against
+#       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
+#       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
 #       against rtl/trirast_span_generator.sv; exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
-#  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6), FF, CARRY4, DSP48E1;
+#  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
+#    counts them: LUT RAM such as the span FIFO's RAM32M cells is not in it), FF, CARRY4, DSP48E1;
 #  - Yosys `synth_ice40 -top TOP` of the design alone: SB_LUT4, SB_DFF*, SB_CARRY;
 #  - nextpnr-ice40 --hx8k --package ct256 --seed 1 (request --freq, default 12 MHz as
 #    scripts/synth.sh, --timing-allow-fail) of the design in a registered wrapper
 #    (scripts/synth_wrap.py around rtl/trirast_synth_shell.sv: every path register -> design ->
-#    register; its logic cells include the wrapper's flip-flops): logic cells, Fmax, critical path.
+#    register; its logic cells include the wrapper's flip-flops, InBits + 2 * OutBits, listed as
+#    "wrapper FF"): logic cells, Fmax, critical path.
 #    Each place and route is stopped after --timeout seconds (default 600).
 # WORKDIR (default build/gen2_study) gets one directory per design with the logs; the table
 # (Markdown) is printed and written to WORKDIR/table.md. --only REGEX runs the designs whose names
@@ -62,13 +65,17 @@ PKG="$WORK/trirast_pkg.sv"
 # name|top|sources (after the package)|chparam NAME=VALUE,...|description
 DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
+"g2.box_stage|g2_box_stage|$S/g2_box_stage.sv||gen2 box stage B: triangle register (no C), box, operands |dxL|, |dy| into the corner stage's register"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
 "g2.corner_r2_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=1,WithER=1|shift-add radix 2, E_L and E_R, ceil(bits/1) cycles"
 "g2.corner_r4_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=1|shift-add radix 4, E_L and E_R, ceil(bits/2) cycles"
 "g2.corner_r4_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=0|shift-add radix 4, E_L only, ceil(bits/2) cycles"
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
+"g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
+"g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
 "g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
+"g1.adder_divider|trirast_adder_divider|$R/trirast_adder_divider.sv||gen1 adder divider alone (restoring, 1 quotient bit per cycle, 50-bit numerator)"
 "g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
 "g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
 "g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
@@ -139,6 +146,13 @@ pnr_lc() {
   lc=$(grep -o "ICESTORM_LC: *[0-9]*/ *[0-9]*" "$1/nextpnr.log" 2>/dev/null | tail -1 | sed 's/ICESTORM_LC: *//; s/ //g')
   echo "${lc:--}"
 }
+wrap_ffs() {  # the shell's flip-flops: InBits + 2 * OutBits (input, output and read-back registers)
+  local w="$1/wrap.sv" i o
+  [ -f "$w" ] || { echo "-"; return; }
+  i=$(grep -o 'InBits ([0-9]*)' "$w" | grep -o '[0-9]*')
+  o=$(grep -o 'OutBits ([0-9]*)' "$w" | grep -o '[0-9]*')
+  echo $((i + 2 * o))
+}
 pnr_fmax() {  # achieved Fmax after routing, or why there is none
   local log="$1/nextpnr.log"
   [ -f "$log" ] || { echo "-"; return; }
@@ -160,14 +174,14 @@ pnr_path() {  # first source -> last sink of the critical path, and its logic/ro
 }
 
 report() {
-  echo "| design | what | xc7 LUT | xc7 FF | xc7 CARRY4 | xc7 DSP | iCE40 LUT4 | iCE40 FF | iCE40 CARRY | wrapped LC / 7680 | Fmax MHz | critical path (nextpnr) |"
-  echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  echo "| design | what | xc7 LUT | xc7 FF | xc7 CARRY4 | xc7 DSP | iCE40 LUT4 | iCE40 FF | iCE40 CARRY | wrapped LC / 7680 | wrapper FF | Fmax MHz | critical path (nextpnr) |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
   local row name top srcs params desc d
   for row in "${DESIGNS[@]}"; do
     IFS='|' read -r name top srcs params desc <<< "$row"
     d="$WORK/$name"
     [ -d "$d" ] || continue
-    echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed 's/|/\\|/g') |"
+    echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed 's/|/\\|/g') |"
   done
   echo
   echo "Default configuration (S = 8, coordinate 16, box 14), $(yosys -V 2>/dev/null | cut -d' ' -f1-2),"
@@ -182,7 +196,7 @@ if [ "$CHECK" = 1 ]; then
   rm -rf "$WORK/check"
   verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
-    "$S/g2_corner_digit.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
+    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
     --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
     { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true

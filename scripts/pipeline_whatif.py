@@ -27,6 +27,9 @@ which also counts today's wait in StHold for the walk stage (so they are more pe
           bit length of |dxL|, |dy| over the three edges;
   nW+sN   narrow W-bit signed multipliers in one cycle when |A|, |B|, |dxL|, |dy| of every edge
           fit W signed bits and Xmax < 2^(W-1-F), else the sN shift-add.
+--corner-hold adds the same columns for a unit without a hand-off buffer (the lanes hold a
+set-up triangle until the walk stage loads it, as gen1's StHold). Between the other stages the
+estimate assumes buffers that never fill (no blocking is counted).
 --corner-stats prints, per scene and SPEC, the share of non-empty boxes on the narrow path and the
 mean c.
 
@@ -137,8 +140,9 @@ def corner_cycles(spec, g, F):
     return max(1, math.ceil(op.bit_length() / digit)), False
 
 
-def estimate_corner(rows, direct, spec, geo, F):
-    """Box stage (1 cycle), corner stage (c cycles), then direct test or lanes + walk."""
+def estimate_corner(rows, direct, spec, geo, F, hold=False):
+    """Box stage (1 cycle), corner stage (c cycles), then direct test or lanes + walk.
+    hold: no hand-off buffer, the lanes keep their triangle until the walk stage loads it."""
     t_b = t_c = t_lanes = t_walk = 0
     for r in rows:
         t_b += 1
@@ -154,8 +158,10 @@ def estimate_corner(rows, direct, spec, geo, F):
         # stage, which the walk term below already counts (estimate() uses the hand-off cycle).
         lanes = max(1, r["setup_done_cycle"] - r["accept_cycle"] - 3)
         walk = r["walk_end_cycle"] - r["walk_start_cycle"] + 1
-        t_lanes = max(t_lanes, t_c) + lanes
-        t_walk = max(t_walk, t_lanes) + walk
+        done = max(t_lanes, t_c) + lanes
+        load = max(t_walk, done)
+        t_lanes = load if hold else done
+        t_walk = load + walk
     return max(t_b, t_c, t_lanes, t_walk)
 
 
@@ -166,6 +172,7 @@ def main():
     ap.add_argument("--corner", action="append", default=[], metavar="SPEC",
                     help="1, sN or nW+sN: a column with a corner-value stage of that many cycles")
     ap.add_argument("--corner-stats", action="store_true")
+    ap.add_argument("--corner-hold", action="store_true")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     trirast = os.path.join(a.build, "trirast")
@@ -185,8 +192,10 @@ def main():
             sys.exit(f"pipeline_whatif.py: --corner {c}: expected 1, sN or nW+sN (e.g. n13+s4)")
     print("| scene | triangles | improved today | trad | pipelined set-up | "
           + " | ".join(f"+ direct {w}x{h}" for w, h in directs)
-          + "".join(f" | direct {directs[0][0]}x{directs[0][1]}, corners {c}" for c in a.corner) + " |")
-    print("|---|---:|---:|---:|---:|" + "---:|" * (len(directs) + len(a.corner)))
+          + "".join(f" | direct {directs[0][0]}x{directs[0][1]}, corners {c}" for c in a.corner)
+          + "".join(f" | same, corners {c}, no hand-off buffer" for c in (a.corner if a.corner_hold else []))
+          + " |")
+    print("|---|---:|---:|---:|---:|" + "---:|" * (len(directs) + len(a.corner) * (2 if a.corner_hold else 1)))
     stats = []
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes or SCENES:
@@ -203,6 +212,8 @@ def main():
                     sys.exit(f"pipeline_whatif.py: {scene}: the box from --export-tris differs from "
                              f"the cycles file's for triangle {bad[0]} ({len(bad)} triangles)")
                 cols += [estimate_corner(imp, directs[0], c, geo, F) / n for c in a.corner]
+                if a.corner_hold:
+                    cols += [estimate_corner(imp, directs[0], c, geo, F, hold=True) / n for c in a.corner]
                 if a.corner_stats:
                     ne = [geo[r["tri"]] for r in imp if r["box_width"] > 0]
                     for c in a.corner:

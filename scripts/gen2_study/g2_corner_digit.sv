@@ -55,10 +55,21 @@ module g2_corner_digit #(
     assign ae  = EB'($signed(a_i[k*CB +: CB]));
     assign be  = EB'($signed(b_i[k*CB +: CB]));
 
-    // Partial products of this cycle's digit (radix 2: an AND; radix 4: 0, M, 2M, 3M).
-    assign ppl = ml_mc_q * $signed({1'b0, ml_q[DB-1:0]});
-    assign ppr = mr_mc_q * $signed({1'b0, mr_q[DB-1:0]});
-    assign ppy = my_mc_q * $signed({1'b0, my_q[DB-1:0]});
+    // Partial products of this cycle's digit, written as shift-and-add (a `*` would make Yosys
+    // infer a DSP on xc7 and a generic multiplier on iCE40): radix 2 an AND, radix 4
+    // 0, M, 2M, 3M (one adder), radix 16 three adders.
+    function automatic logic signed [EB-1:0] pp(input logic signed [EB-1:0] m,
+                                                input logic [DB-1:0] digit);
+      logic signed [EB-1:0] sum;
+      sum = '0;
+      for (int i = 0; i < DB; i++) begin
+        if (digit[i]) sum = sum + (m <<< i);
+      end
+      pp = sum;
+    endfunction
+    assign ppl = pp(ml_mc_q, ml_q[DB-1:0]);
+    assign ppr = pp(mr_mc_q, mr_q[DB-1:0]);
+    assign ppy = pp(my_mc_q, my_q[DB-1:0]);
 
     always_comb begin
       ml_d = ml_q;  mr_d = mr_q;  my_d = my_q;
