@@ -65,7 +65,8 @@ PKG="$WORK/trirast_pkg.sv"
 # name|top|sources (after the package)|chparam NAME=VALUE,...|description
 DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
-"g2.box_stage|g2_box_stage|$S/g2_box_stage.sv||gen2 box stage B: triangle register (no C), box, operands |dxL|, |dy| into the corner stage's register"
+"g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
 "g2.corner_r2_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=1,WithER=1|shift-add radix 2, E_L and E_R, ceil(bits/1) cycles"
@@ -75,6 +76,7 @@ DESIGNS=(
 "g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
 "g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
 "g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
+"g1.lanes|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv||gen1 3 normalizers + 3 lanes as in the setup stage (fed by the interface's outputs)"
 "g1.adder_divider|trirast_adder_divider|$R/trirast_adder_divider.sv||gen1 adder divider alone (restoring, 1 quotient bit per cycle, 50-bit numerator)"
 "g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
 "g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"

@@ -30,6 +30,8 @@ which also counts today's wait in StHold for the walk stage (so they are more pe
 --corner-hold adds the same columns for a unit without a hand-off buffer (the lanes hold a
 set-up triangle until the walk stage loads it, as gen1's StHold). Between the other stages the
 estimate assumes buffers that never fill (no blocking is counted).
+--corner-shared adds the columns of a unit whose three edges share one lane (one divider):
+L = the sum of the three edges' lane cycles instead of their maximum; no hand-off buffer.
 --corner-stats prints, per scene and SPEC, the share of non-empty boxes on the narrow path and the
 mean c.
 
@@ -140,7 +142,7 @@ def corner_cycles(spec, g, F):
     return max(1, math.ceil(op.bit_length() / digit)), False
 
 
-def estimate_corner(rows, direct, spec, geo, F, hold=False):
+def estimate_corner(rows, direct, spec, geo, F, hold=False, shared=False):
     """Box stage (1 cycle), corner stage (c cycles), then direct test or lanes + walk.
     hold: no hand-off buffer, the lanes keep their triangle until the walk stage loads it."""
     t_b = t_c = t_lanes = t_walk = 0
@@ -157,6 +159,8 @@ def estimate_corner(rows, direct, spec, geo, F, hold=False):
         # L itself (setup_done_cycle = a + 3 + L), without today's wait in StHold for the walk
         # stage, which the walk term below already counts (estimate() uses the hand-off cycle).
         lanes = max(1, r["setup_done_cycle"] - r["accept_cycle"] - 3)
+        if shared:  # one divider for the three edges: their lane work in series
+            lanes = max(1, r["divider_iterations"] + r["boundary_steps"])
         walk = r["walk_end_cycle"] - r["walk_start_cycle"] + 1
         done = max(t_lanes, t_c) + lanes
         load = max(t_walk, done)
@@ -173,6 +177,7 @@ def main():
                     help="1, sN or nW+sN: a column with a corner-value stage of that many cycles")
     ap.add_argument("--corner-stats", action="store_true")
     ap.add_argument("--corner-hold", action="store_true")
+    ap.add_argument("--corner-shared", action="store_true")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     trirast = os.path.join(a.build, "trirast")
@@ -194,8 +199,9 @@ def main():
           + " | ".join(f"+ direct {w}x{h}" for w, h in directs)
           + "".join(f" | direct {directs[0][0]}x{directs[0][1]}, corners {c}" for c in a.corner)
           + "".join(f" | same, corners {c}, no hand-off buffer" for c in (a.corner if a.corner_hold else []))
+          + "".join(f" | same, corners {c}, one shared lane, no buffer" for c in (a.corner if a.corner_shared else []))
           + " |")
-    print("|---|---:|---:|---:|---:|" + "---:|" * (len(directs) + len(a.corner) * (2 if a.corner_hold else 1)))
+    print("|---|---:|---:|---:|---:|" + "---:|" * (len(directs) + len(a.corner) * (1 + a.corner_hold + a.corner_shared)))
     stats = []
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes or SCENES:
@@ -214,6 +220,9 @@ def main():
                 cols += [estimate_corner(imp, directs[0], c, geo, F) / n for c in a.corner]
                 if a.corner_hold:
                     cols += [estimate_corner(imp, directs[0], c, geo, F, hold=True) / n for c in a.corner]
+                if a.corner_shared:
+                    cols += [estimate_corner(imp, directs[0], c, geo, F, hold=True, shared=True) / n
+                             for c in a.corner]
                 if a.corner_stats:
                     ne = [geo[r["tri"]] for r in imp if r["box_width"] > 0]
                     for c in a.corner:

@@ -4,7 +4,11 @@
 // as gen1's interface does (rtl/trirast_interface.sv), the empty flag, and the corner stage's
 // operands: per edge k the magnitudes and signs of dxL = cx0 - vx_k and dy = cy0 - vy_k, all
 // registered into the corner stage's input register when that stage takes the triangle.
-module g2_box_stage (
+// Split = 1: two pipeline cycles, B1 (the vertices' min and max, registered with the triangle)
+// and B2 (clip, empty, operands); each holds a triangle, so the stage still takes one per cycle.
+module g2_box_stage #(
+  parameter int Split = 0
+) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   input  logic [trirast_pkg::PixBits-1:0]      vp_xmax_i,
@@ -65,15 +69,42 @@ module g2_box_stage (
     max3 = m;
   endfunction
 
+  // B1 -> B2 (Split = 1): the triangle and its extent move on together.
+  logic signed [WBits-1:0] mnx, mxx, mny, mxy;
+  logic [TB-1:0] tag2;
+  logic [3*P-1:0] vx2, vy2;
+  logic [3*CB-1:0] a2, b2;
+  logic [2:0] bias2;
+  if (Split != 0) begin : g_split
+    logic signed [WBits-1:0] mnx_q, mxx_q, mny_q, mxy_q;
+    logic [TB-1:0] tag2_q;
+    logic [3*P-1:0] vx2_q, vy2_q;
+    logic [3*CB-1:0] a2_q, b2_q;
+    logic [2:0] bias2_q;
+    always_ff @(posedge clk_i) begin
+      mnx_q <= min3(vx_q);  mxx_q <= max3(vx_q);  mny_q <= min3(vy_q);  mxy_q <= max3(vy_q);
+      tag2_q <= tag_q;  vx2_q <= vx_q;  vy2_q <= vy_q;  a2_q <= a_q;  b2_q <= b_q;
+      bias2_q <= bias_q;
+    end
+    assign {mnx, mxx, mny, mxy} = {mnx_q, mxx_q, mny_q, mxy_q};
+    assign {tag2, vx2, vy2, a2, b2, bias2} = {tag2_q, vx2_q, vy2_q, a2_q, b2_q, bias2_q};
+  end else begin : g_one
+    assign mnx = min3(vx_q);
+    assign mxx = max3(vx_q);
+    assign mny = min3(vy_q);
+    assign mxy = max3(vy_q);
+    assign {tag2, vx2, vy2, a2, b2, bias2} = {tag_q, vx_q, vy_q, a_q, b_q, bias_q};
+  end
+
   logic signed [WBits-1:0] fx, lx, fy, ly, cx0, cy0;
   always_comb begin
-    fx = -((Half - min3(vx_q)) >>> F);
+    fx = -((Half - mnx) >>> F);
     if (fx < 0) fx = '0;
-    lx = (max3(vx_q) - Half) >>> F;
+    lx = (mxx - Half) >>> F;
     if (lx > $signed(WBits'(vp_xmax_i))) lx = $signed(WBits'(vp_xmax_i));
-    fy = -((Half - min3(vy_q)) >>> F);
+    fy = -((Half - mny) >>> F);
     if (fy < 0) fy = '0;
-    ly = (max3(vy_q) - Half) >>> F;
+    ly = (mxy - Half) >>> F;
     if (ly > $signed(WBits'(vp_ymax_i))) ly = $signed(WBits'(vp_ymax_i));
     empty_o = (fx > lx) || (fy > ly);
     cx0 = (fx <<< F) + Half;
@@ -84,8 +115,8 @@ module g2_box_stage (
   logic [5:0] neg;
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [WBits-1:0] dx, dy;
-    assign dx = cx0 - coord(vx_q, k);
-    assign dy = cy0 - coord(vy_q, k);
+    assign dx = cx0 - coord(vx2, k);
+    assign dy = cy0 - coord(vy2, k);
     assign neg[2*k]     = dx[WBits-1];
     assign neg[2*k+1]   = dy[WBits-1];
     assign mag[2*k*MW +: MW]     = dx[WBits-1] ? MW'(-dx) : MW'(dx);
@@ -102,14 +133,14 @@ module g2_box_stage (
       tag_q <= tag_i;  vx_q <= vx_i;  vy_q <= vy_i;  a_q <= a_i;  b_q <= b_i;  bias_q <= bias_i;
     end
     if (take_i) begin
-      c_tag_o  <= tag_q;
+      c_tag_o  <= tag2;
       c_x0_o   <= PB'(fx);
       c_y0_o   <= PB'(fy);
       c_xmax_o <= BB'(lx - fx);
       c_ymax_o <= BB'(ly - fy);
-      c_a_o    <= a_q;
-      c_b_o    <= b_q;
-      c_bias_o <= bias_q;
+      c_a_o    <= a2;
+      c_b_o    <= b2;
+      c_bias_o <= bias2;
       c_mag_o  <= mag;
       c_neg_o  <= neg;
     end
