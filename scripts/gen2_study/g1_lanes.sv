@@ -3,8 +3,11 @@
 // connected as in rtl/trirast_setup_stage.sv, fed with the interface's outputs (A, B, E_L, E_R,
 // Xmax, Ymax), so that the lanes are measured with the operand structure they see in the unit
 // (D = |A|*u and s = |B|*u have F zero low bits) and with the iteration counts of the adaptive
-// divider computed as there.
-module g1_lanes (
+// divider computed as there. TieMode = 1: the boundary mode tied to step and the divider to
+// adaptive (what a build parameter instead of the runtime inputs would give).
+module g1_lanes #(
+  parameter int TieMode = 0
+) (
   input  logic                               clk_i,
   input  logic                               rst_ni,
   input  logic                               divide_i,
@@ -47,8 +50,11 @@ module g1_lanes (
   endfunction
 
   logic [IterBits-1:0] qx, qy;
-  assign qx = adaptive_i ? bits_plus_one(xmax_i) : IterBits'(trirast_pkg::QuotBits);
-  assign qy = adaptive_i ? bits_plus_one(ymax_i) : IterBits'(trirast_pkg::QuotBits);
+  logic divide, adaptive;
+  assign divide   = (TieMode != 0) ? 1'b0 : divide_i;
+  assign adaptive = (TieMode != 0) ? 1'b1 : adaptive_i;
+  assign qx = adaptive ? bits_plus_one(xmax_i) : IterBits'(trirast_pkg::QuotBits);
+  assign qy = adaptive ? bits_plus_one(ymax_i) : IterBits'(trirast_pkg::QuotBits);
 
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic horiz, mirror, dir_down;
@@ -61,7 +67,7 @@ module g1_lanes (
       .t_o (t), .t1_o (t1), .d_o (d), .s_o (s));
     /* verilator lint_off PINCONNECTEMPTY */
     trirast_edge_lane u_lane (
-      .clk_i (clk_i), .rst_ni (rst_ni), .divide_i (divide_i), .qx_i (qx), .qy_i (qy),
+      .clk_i (clk_i), .rst_ni (rst_ni), .divide_i (divide), .qx_i (qx), .qy_i (qy),
       .load_i (load_i), .horiz_i (horiz), .mirror_i (mirror), .dir_down_i (dir_down),
       .t_i (t), .t1_i (t1), .d_i (d), .s_i (s), .xmax_i (xmax_i), .ymax_i (ymax_i),
       .busy_o (busy_o[k]), .done_next_o (done_next_o[k]), .div_o (),
