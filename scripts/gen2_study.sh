@@ -8,7 +8,7 @@
 #   scripts/gen2_study.sh --report [WORKDIR]   (only print the table from WORKDIR's logs)
 #   scripts/gen2_study.sh --check [WORKDIR]    (only the functional cross-check: Verilator --binary
 #       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
-#       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit) against
+#       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
 #       against rtl/trirast_span_generator.sv; exit 1 on a difference)
 #
@@ -67,6 +67,7 @@ DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
 "g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
 "g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.corner_mul|g2_corner_mul|$S/g2_corner_mul.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
 "g2.corner_r2_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=1,WithER=1|shift-add radix 2, E_L and E_R, ceil(bits/1) cycles"
@@ -199,7 +200,7 @@ if [ "$CHECK" = 1 ]; then
   rm -rf "$WORK/check"
   verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
-    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
+    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
     --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
     { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true

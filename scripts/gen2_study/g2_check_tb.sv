@@ -29,7 +29,9 @@ module g2_check_tb;
   logic [3*EB-1:0] n_el, n_er, r2_el, r2_er, r4_el, r4_er, r16_el, r16_er;
   logic start;
   logic busy2, busy4, busy16, busym4, busym16;
-  logic [3*EB-1:0] m4_el, m16_el;
+  logic [3*EB-1:0] m4_el, m16_el, mul_el;
+  g2_corner_mul u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .y0_i (y0), .el_o (mul_el));
   g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busym4), .el_o (m4_el));
@@ -133,7 +135,8 @@ module g2_check_tb;
       if (sx(64'(r2_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r2_er[k*EB +: EB]), EB) != ref_r[k] ||
           sx(64'(r4_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r4_er[k*EB +: EB]), EB) != ref_r[k] ||
           sx(64'(r16_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r16_er[k*EB +: EB]), EB) != ref_r[k] ||
-          sx(64'(m4_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(m16_el[k*EB +: EB]), EB) != ref_l[k]) begin
+          sx(64'(m4_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(m16_el[k*EB +: EB]), EB) != ref_l[k] ||
+          sx(64'(mul_el[k*EB +: EB]), EB) != ref_l[k]) begin
         errors++;
         if (errors < 10) $display("shift-add edge %0d: r2 %0d r4 %0d r16 %0d msb4 %0d msb16 %0d want %0d", k,
           sx(64'(r2_el[k*EB +: EB]), EB), sx(64'(r4_el[k*EB +: EB]), EB), sx(64'(r16_el[k*EB +: EB]), EB),
