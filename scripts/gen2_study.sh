@@ -10,7 +10,8 @@
 #       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
 #       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
-#       against rtl/trirast_span_generator.sv; exit 1 on a difference)
+#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; exit 1 on a
+#       difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -200,7 +201,7 @@ if [ "$CHECK" = 1 ]; then
   rm -rf "$WORK/check"
   verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
-    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_check_tb.sv" \
+    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_box2x2.sv" "$S/g2_check_tb.sv" \
     --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
     { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true

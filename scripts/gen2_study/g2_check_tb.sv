@@ -82,6 +82,64 @@ module g2_check_tb;
   g2_span_gen_par u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v2), .begin_o (b2), .end_o (e2));
 
+  // ---------------- 2x2 direct test ----------------
+  logic [3*EB-1:0] t_el, t_a, t_b;
+  logic t_xm, t_ym;
+  logic [1:0] t_valid;
+  logic [2*PB-1:0] t_y, t_xb;
+  logic [2*(PB+1)-1:0] t_xe;
+  int tiny_spans = 0;
+  g2_box2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
+    .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
+
+  task automatic box_trial();
+    longint e[3], av[3], bv[3];
+    logic [3*EB-1:0] el_v, a_v, b_v;
+    for (int k = 0; k < 3; k++) begin
+      e[k]  = longint'($urandom % 2001) - 1000;
+      av[k] = longint'($urandom % 2001) - 1000;
+      bv[k] = longint'($urandom % 2001) - 1000;
+      if ($urandom % 4 == 0) begin  // large values too
+        e[k] = e[k] <<< 30;  av[k] = av[k] <<< 30;  bv[k] = bv[k] <<< 30;
+      end
+      el_v[k*EB +: EB] = EB'(e[k]);
+      a_v[k*EB +: EB]  = EB'(av[k]);
+      b_v[k*EB +: EB]  = EB'(bv[k]);
+    end
+    t_el = el_v;
+    t_a = a_v;
+    t_b = b_v;
+    t_xm = 1'($urandom);
+    t_ym = 1'($urandom);
+    x0 = PB'($urandom % 1000);
+    y0 = PB'($urandom % 1000);
+    @(negedge clk);
+    for (int j = 0; j < 2; j++) begin
+      int first, last;
+      first = -1;  last = -1;
+      for (int i = 0; i < 2; i++) begin
+        bit cov;
+        cov = (i <= int'(t_xm)) && (j <= int'(t_ym));
+        for (int k = 0; k < 3; k++) if (e[k] + i * av[k] + j * bv[k] < 0) cov = 0;
+        if (cov) begin
+          if (first < 0) first = i;
+          last = i;
+        end
+      end
+      if ((first >= 0) != t_valid[j] ||
+          (first >= 0 && (t_y[j*PB +: PB] != PB'(32'(y0) + j) ||
+                          t_xb[j*PB +: PB] != PB'(32'(x0) + first) ||
+                          t_xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1)))) begin
+        errors++;
+        if (errors < 10) $display("2x2 row %0d (xmax %0d ymax %0d, e %0d %0d %0d, a %0d %0d %0d, b %0d %0d %0d): want %0d [%0d,%0d), got %0d [%0d,%0d)",
+          j, t_xm, t_ym, e[0], e[1], e[2], av[0], av[1], av[2], bv[0], bv[1], bv[2], first >= 0,
+          first, last + 1, t_valid[j], t_xb[j*PB +: PB] - x0, t_xe[j*(PB+1) +: PB+1] - x0);
+        if (errors < 4) $display("   dut: c00 %b c10 %b c01 %b c11 %b el0 %0d", u_box.c00, u_box.c10, u_box.c01, u_box.c11, $signed(t_el[0 +: EB]));
+      end
+      if (first >= 0) tiny_spans++;
+    end
+  endtask
+
   always #5 clk = ~clk;
 
   function automatic longint sx(input logic [63:0] v, input int w);
@@ -199,8 +257,9 @@ module g2_check_tb;
     for (int t = 0; t < Trials; t++) corner_trial((t % 3 == 0) ? 3 : ((t % 3 == 1) ? 15 : 4000));
     for (int t = 0; t < Trials; t++) walker_trial();
     for (int t = 0; t < 20 * Trials; t++) span_trial();
-    $display("g2_check_tb: %0d errors (corner trials %0d, of them narrow %0d; walker bound rows %0d; span rows %0d, of them with a span %0d)",
-             errors, Trials, narrow_checked, bound_rows, 20 * Trials, spans_valid);
+    for (int t = 0; t < 10 * Trials; t++) box_trial();
+    $display("g2_check_tb: %0d errors (corner trials %0d, of them narrow %0d; walker bound rows %0d; span rows %0d, of them with a span %0d; 2x2 boxes %0d, spans %0d)",
+             errors, Trials, narrow_checked, bound_rows, 20 * Trials, spans_valid, 10 * Trials, tiny_spans);
     if (errors != 0) $fatal(1, "g2_check_tb: FAILED");
     $finish;
   end
