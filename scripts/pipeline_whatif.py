@@ -14,15 +14,39 @@ skips lanes and walk: a direct test of its centres from the corner values, max(1
 in the walk stage's place (one span per cycle out).
 This is an estimate, not a model: it assumes the lanes' and walk's cycles stay as they are.
 
-  scripts/pipeline_whatif.py [--build DIR] [--direct WxH ...] [scene ...]
+With --corner SPEC (repeatable; docs/gen2-design.md), one more column per SPEC: F is split into a
+box stage (1 cycle; an empty box retires there) and a corner-value stage of c cycles per
+triangle, followed by the direct test of the first --direct size or the lanes and the walk as
+above. c comes from the triangle's snapped vertices (`trirast raster --export-tris`), with the
+vertex-relative operands dxL = cx0 - vx, dy = cy0 - vy of each edge's first vertex (E_R is assumed
+to be formed during the lanes' slope division, at no cycle cost). These columns take the lanes'
+L from setup_done_cycle (a + 3 + L); the columns before them take accept-to-hand-off minus 3,
+which also counts today's wait in StHold for the walk stage (so they are more pessimistic):
+  1       one cycle (all products in one cycle, as gen1's interface);
+  sN      shift-add, N operand bits per cycle: c = max(1, ceil(bits / N)), bits = the largest
+          bit length of |dxL|, |dy| over the three edges;
+  nW+sN   narrow W-bit signed multipliers in one cycle when |A|, |B|, |dxL|, |dy| of every edge
+          fit W signed bits and Xmax < 2^(W-1-F), else the sN shift-add.
+--corner-hold adds the same columns for a unit without a hand-off buffer (the lanes hold a
+set-up triangle until the walk stage loads it, as gen1's StHold). Between the other stages the
+estimate assumes buffers that never fill (no blocking is counted).
+--corner-shared adds the columns of a unit whose three edges share one lane (one divider):
+L = the sum of the three edges' lane cycles instead of their maximum; no hand-off buffer.
+--corner-stats prints, per scene and SPEC, the share of non-empty boxes on the narrow path and the
+mean c.
+
+  scripts/pipeline_whatif.py [--build DIR] [--direct WxH ...] [--corner SPEC ...] [--corner-stats] [scene ...]
 Default scenes: those of docs/cycles-improved-vs-trad.md; default --direct 2x2 and 4x4.
 """
 import argparse
 import csv
+import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
+from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SCENES = ["builtin:lowpoly-far", "builtin:lowpoly-near", "builtin:highpoly-far",
@@ -62,10 +86,98 @@ def estimate(rows, direct):
     return max(t_f, t_lanes, t_walk)
 
 
+def geometry(trirast, scene, rows, tmp):
+    """Per scene index: (empty, xmax, operand bits of |dxL|, |dy|, max |A|, |B|, |dxL|, |dy|)."""
+    path = os.path.join(tmp, "t.tri")
+    last = max((r["tri"] for r in rows), default=0)
+    env = dict(os.environ, SYSTEMC_DISABLE_COPYRIGHT_MESSAGE="1")
+    r = subprocess.run([trirast, "raster", "--engine", "golden", "--scene", scene,
+                        "--export-tris", f"0:{last}:{path}"],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
+    if r.returncode != 0:
+        sys.exit(f"pipeline_whatif.py: --export-tris on {scene}: {r.stderr.strip()}")
+    geo = {}
+    with open(path) as f:
+        head = f.readline()
+        m = re.search(r"--width (\d+) --height (\d+) --subpixel-bits (\d+)", head)
+        if not m:
+            sys.exit(f"pipeline_whatif.py: {path}: no viewport in the export's header")
+        W, H, S = (int(v) for v in m.groups())
+        F = max(S, 1)
+        u, h = 1 << F, 1 << (F - 1)
+        for line in f:
+            mt = re.search(r"# tri (\d+)", line)
+            if not mt:
+                continue
+            v = [int(Fraction(t) * (1 << S)) << (F - S) for t in line.split("#")[0].split()]
+            xs, ys = v[0::2], v[1::2]
+            def first(lo):
+                return max(0, -((h - lo) // u))
+            x0, y0 = first(min(xs)), first(min(ys))
+            x1, y1 = min(W - 1, (max(xs) - h) // u), min(H - 1, (max(ys) - h) // u)
+            if x0 > x1 or y0 > y1:
+                geo[int(mt.group(1))] = (True, 0, 0, 0)
+                continue
+            cx0, cy0 = x0 * u + h, y0 * u + h
+            ops, coefs = [], []
+            for k in range(3):
+                j = (k + 1) % 3
+                ops += [abs(cx0 - xs[k]), abs(cy0 - ys[k])]
+                coefs += [abs(ys[k] - ys[j]), abs(xs[j] - xs[k])]
+            geo[int(mt.group(1))] = (False, x1 - x0, max(ops), max(coefs))
+    return geo, F
+
+
+def corner_cycles(spec, g, F):
+    """Cycles of the corner-value stage for one non-empty triangle; (cycles, narrow path)."""
+    _, xmax, op, coef = g
+    if spec == "1":
+        return 1, True
+    m = re.fullmatch(r"(?:n(\d+)\+)?s(\d+)", spec)
+    narrow, digit = m.group(1), int(m.group(2))
+    if narrow:
+        w = int(narrow)
+        if op < (1 << (w - 1)) and coef < (1 << (w - 1)) and xmax < (1 << (w - 1 - F)):
+            return 1, True
+    return max(1, math.ceil(op.bit_length() / digit)), False
+
+
+def estimate_corner(rows, direct, spec, geo, F, hold=False, shared=False):
+    """Box stage (1 cycle), corner stage (c cycles), then direct test or lanes + walk.
+    hold: no hand-off buffer, the lanes keep their triangle until the walk stage loads it."""
+    t_b = t_c = t_lanes = t_walk = 0
+    for r in rows:
+        t_b += 1
+        w, h = r["box_width"], r["box_height"]
+        if w == 0:
+            continue
+        c, _ = corner_cycles(spec, geo[r["tri"]], F)
+        t_c = max(t_c, t_b) + c
+        if direct and w <= direct[0] and h <= direct[1]:
+            t_walk = max(t_walk, t_c) + max(1, r["spans"])
+            continue
+        # L itself (setup_done_cycle = a + 3 + L), without today's wait in StHold for the walk
+        # stage, which the walk term below already counts (estimate() uses the hand-off cycle).
+        lanes = max(1, r["setup_done_cycle"] - r["accept_cycle"] - 3)
+        if shared:  # one divider for the three edges: their lane work in series
+            lanes = max(1, r["divider_iterations"] + r["boundary_steps"])
+        walk = r["walk_end_cycle"] - r["walk_start_cycle"] + 1
+        done = max(t_lanes, t_c) + lanes
+        load = max(t_walk, done)
+        t_lanes = load if hold else done
+        t_walk = load + walk
+    return max(t_b, t_c, t_lanes, t_walk)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--build", default=os.environ.get("TRIRAST_BUILD_DIR", os.path.join(ROOT, "build")))
     ap.add_argument("--direct", action="append", default=[], metavar="WxH")
+    ap.add_argument("--corner", action="append", default=[], metavar="SPEC",
+                    help="1, sN or nW+sN: a column with a corner-value stage of that many cycles")
+    ap.add_argument("--corner-stats", action="store_true")
+    ap.add_argument("--corner-hold", action="store_true")
+    ap.add_argument("--corner-shared", action="store_true")
     ap.add_argument("scenes", nargs="*")
     a = ap.parse_args()
     trirast = os.path.join(a.build, "trirast")
@@ -79,9 +191,18 @@ def main():
         except (ValueError, AssertionError):
             sys.exit(f"pipeline_whatif.py: --direct {d}: expected WxH, e.g. 2x2")
         directs.append((w, h))
+    for c in a.corner:
+        m = re.fullmatch(r"1|(?:n(\d+)\+)?s(\d+)", c)
+        if not m or (m.group(2) and int(m.group(2)) < 1) or (m.group(1) and int(m.group(1)) < 2):
+            sys.exit(f"pipeline_whatif.py: --corner {c}: expected 1, sN or nW+sN (e.g. n13+s4)")
     print("| scene | triangles | improved today | trad | pipelined set-up | "
-          + " | ".join(f"+ direct {w}x{h}" for w, h in directs) + " |")
-    print("|---|---:|---:|---:|---:|" + "---:|" * len(directs))
+          + " | ".join(f"+ direct {w}x{h}" for w, h in directs)
+          + "".join(f" | direct {directs[0][0]}x{directs[0][1]}, corners {c}" for c in a.corner)
+          + "".join(f" | same, corners {c}, no hand-off buffer" for c in (a.corner if a.corner_hold else []))
+          + "".join(f" | same, corners {c}, one shared lane, no buffer" for c in (a.corner if a.corner_shared else []))
+          + " |")
+    print("|---|---:|---:|---:|---:|" + "---:|" * (len(directs) + len(a.corner) * (1 + a.corner_hold + a.corner_shared)))
+    stats = []
     with tempfile.TemporaryDirectory() as tmp:
         for scene in a.scenes or SCENES:
             imp = cycles(trirast, "improved-sc", scene, tmp)
@@ -89,9 +210,34 @@ def main():
             n = max(1, len(imp))
             cols = [total(imp) / n, total(trad) / n, estimate(imp, None) / n]
             cols += [estimate(imp, d) / n for d in directs]
+            if a.corner:
+                geo, F = geometry(trirast, scene, imp, tmp)
+                bad = [r["tri"] for r in imp if geo[r["tri"]][0] != (r["box_width"] == 0) or
+                       (r["box_width"] > 0 and geo[r["tri"]][1] + 1 != r["box_width"])]
+                if bad:
+                    sys.exit(f"pipeline_whatif.py: {scene}: the box from --export-tris differs from "
+                             f"the cycles file's for triangle {bad[0]} ({len(bad)} triangles)")
+                cols += [estimate_corner(imp, directs[0], c, geo, F) / n for c in a.corner]
+                if a.corner_hold:
+                    cols += [estimate_corner(imp, directs[0], c, geo, F, hold=True) / n for c in a.corner]
+                if a.corner_shared:
+                    cols += [estimate_corner(imp, directs[0], c, geo, F, hold=True, shared=True) / n
+                             for c in a.corner]
+                if a.corner_stats:
+                    ne = [geo[r["tri"]] for r in imp if r["box_width"] > 0]
+                    for c in a.corner:
+                        cc = [corner_cycles(c, g, F) for g in ne]
+                        stats.append((os.path.basename(scene) if "/" in scene else scene, c, len(ne),
+                                      sum(1 for _, nar in cc if nar) / max(1, len(ne)),
+                                      sum(x for x, _ in cc) / max(1, len(ne))))
             name = os.path.basename(scene) if "/" in scene else scene
             print(f"| {name} | {len(imp)} | " + " | ".join(f"{c:.2f}" for c in cols) + " |")
     print("\ncycles per triangle (1024x768, S = 8, N = 1, FIFO 8, sink always ready)")
+    if stats:
+        print("\n| scene | corner SPEC | non-empty boxes | on the narrow path | mean corner cycles |")
+        print("|---|---|---:|---:|---:|")
+        for name, c, ne, frac, mean in stats:
+            print(f"| {name} | {c} | {ne} | {100 * frac:.1f}% | {mean:.2f} |")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,226 @@
+#!/usr/bin/env bash
+# Measurements for the second-generation improved unit (issue 13; docs/gen2-design.md): small
+# standalone prototypes of the candidate circuits (scripts/gen2_study/*.sv, not units) and the
+# first generation's corresponding modules (rtl/), at the default configuration (S = 8, coordinate
+# 16, box 14, N = 1, FIFO 8; package from scripts/gen_params.py).
+#
+#   scripts/gen2_study.sh [--only REGEX] [--timeout SECONDS] [--freq MHZ] [--no-pnr] [WORKDIR]
+#   scripts/gen2_study.sh --report [WORKDIR]   (only print the table from WORKDIR's logs)
+#   scripts/gen2_study.sh --check [WORKDIR]    (only the functional cross-check: Verilator --binary
+#       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
+#       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
+#       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
+#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; exit 1 on a
+#       difference)
+#
+# Per design, one tool at a time (the machine is shared):
+#  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
+#    counts them: LUT RAM such as the span FIFO's RAM32M cells is not in it), FF, CARRY4, DSP48E1;
+#  - Yosys `synth_ice40 -top TOP` of the design alone: SB_LUT4, SB_DFF*, SB_CARRY;
+#  - nextpnr-ice40 --hx8k --package ct256 --seed 1 (request --freq, default 12 MHz as
+#    scripts/synth.sh, --timing-allow-fail) of the design in a registered wrapper
+#    (scripts/synth_wrap.py around rtl/trirast_synth_shell.sv: every path register -> design ->
+#    register; its logic cells include the wrapper's flip-flops, InBits + 2 * OutBits, listed as
+#    "wrapper FF"): logic cells, Fmax, critical path.
+#    Each place and route is stopped after --timeout seconds (default 600).
+# WORKDIR (default build/gen2_study) gets one directory per design with the logs; the table
+# (Markdown) is printed and written to WORKDIR/table.md. --only REGEX runs the designs whose names
+# match. Designs: see DESIGNS below (name, top, sources, parameters, description).
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+ME="gen2_study.sh"
+ONLY=""
+TIMEOUT=600
+FREQ=12
+PNR=1
+REPORT=0
+CHECK=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --only) [ $# -ge 2 ] || { echo "$ME: --only needs REGEX" >&2; exit 2; }; ONLY="$2"; shift 2 ;;
+    --timeout) [ $# -ge 2 ] && [[ "$2" =~ ^[0-9]+$ ]] || { echo "$ME: --timeout needs SECONDS (an integer)" >&2; exit 2; }
+               TIMEOUT="$2"; shift 2 ;;
+    --freq) [ $# -ge 2 ] && [[ "$2" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "$ME: --freq needs MHZ (a number)" >&2; exit 2; }
+            FREQ="$2"; shift 2 ;;
+    --no-pnr) PNR=0; shift ;;
+    --report) REPORT=1; shift ;;
+    --check) CHECK=1; shift ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -*) echo "$ME: unknown option $1 (see --help)" >&2; exit 2 ;;
+    *) break ;;
+  esac
+done
+[ $# -le 1 ] || { echo "$ME: one WORKDIR at most (got: $*)" >&2; exit 2; }
+WORK="${1:-$ROOT/build/gen2_study}"
+if [ "$REPORT" = 0 ]; then
+  for t in yosys nextpnr-ice40 python3 timeout; do
+    command -v "$t" >/dev/null || { echo "$ME: $t not found in PATH" >&2; exit 1; }
+  done
+fi
+mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
+WORK="$(cd "$WORK" && pwd)"
+R="$ROOT/rtl"
+S="$ROOT/scripts/gen2_study"
+PKG="$WORK/trirast_pkg.sv"
+
+# name|top|sources (after the package)|chparam NAME=VALUE,...|description
+DESIGNS=(
+"g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
+"g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.corner_mul|g2_corner_mul|$S/g2_corner_mul.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
+"g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
+"g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
+"g2.corner_r2_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=1,WithER=1|shift-add radix 2, E_L and E_R, ceil(bits/1) cycles"
+"g2.corner_r4_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=1|shift-add radix 4, E_L and E_R, ceil(bits/2) cycles"
+"g2.corner_r4_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=0|shift-add radix 4, E_L only, ceil(bits/2) cycles"
+"g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
+"g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
+"g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
+"g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
+"g1.lanes|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv||gen1 3 normalizers + 3 lanes as in the setup stage (fed by the interface's outputs)"
+"g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"
+"g1.adder_divider|trirast_adder_divider|$R/trirast_adder_divider.sv||gen1 adder divider alone (restoring, 1 quotient bit per cycle, 50-bit numerator)"
+"g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
+"g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
+"g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
+"g2.walker_cs|g2_walker_cs|$S/g2_walker_cs.sv||carry-select edge walker, parallel leave test, bound register"
+"g1.span_gen|trirast_span_generator|$R/trirast_span_generator.sv||gen1 span generator (serial compare-selects), combinational"
+"g2.span_gen_par|g2_span_gen_par|$S/g2_span_gen_par.sv||span generator, 6 parallel compares, combinational"
+"g1.walk_fifo|g1_walk_fifo|$R/trirast_edge_walker.sv $R/trirast_span_generator.sv $R/trirast_walk_stage.sv $R/trirast_span_fifo.sv $S/g1_walk_fifo.sv||gen1 walk stage + span FIFO (combinational push)"
+"g2.walk_fifo|g2_walk_slice|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
+"g2.box2x2_w50|g2_box2x2|$S/g2_box2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
+"g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
+)
+
+count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
+  [ -f "$2" ] || { echo "-"; return; }
+  awk -v re="$1" '/Number of cells/ {sum = 0} $1 ~ re && $2 ~ /^[0-9]+$/ {sum += $2} END {print sum + 0}' "$2"
+}
+chparams() {  # chparams "A=1,B=2" TOP: Yosys chparam commands
+  local p="$1" top="$2" out="" kv
+  [ -z "$p" ] && return 0
+  IFS=, read -ra kv <<< "$p"
+  for x in "${kv[@]}"; do out="$out chparam -set ${x%%=*} ${x#*=} $top;"; done
+  echo "$out"
+}
+wrap_params() {  # wrap_params "A=1,B=2": synth_wrap.py --param options
+  local p="$1" kv
+  [ -z "$p" ] && return 0
+  IFS=, read -ra kv <<< "$p"
+  for x in "${kv[@]}"; do printf -- '--param %s ' "$x"; done
+}
+
+run_design() {  # run_design NAME TOP SOURCES PARAMS
+  local name="$1" top="$2" srcs="$3" params="$4" d="$WORK/$1" ch t0
+  mkdir -p "$d"
+  ch="$(chparams "$params" "$top")"
+  t0=$(date +%s)
+  echo "$ME: $name: yosys xc7" >&2
+  rm -f "$d/xc7.stat" "$d/ice40.stat" "$d/pnr.stat" "$d/nextpnr.log" "$d/design.json"
+  yosys -q -l "$d/xc7.log" -p "read_verilog -sv -I $R $PKG $srcs; $ch
+    synth_xilinx -family xc7 -top $top; tee -q -o $d/xc7.stat stat" >/dev/null ||
+    echo "$ME: $name: xc7 synthesis failed ($d/xc7.log)" >&2
+  echo "$ME: $name: yosys ice40" >&2
+  yosys -q -l "$d/ice40.log" -p "read_verilog -sv -I $R $PKG $srcs; $ch
+    synth_ice40 -top $top; tee -q -o $d/ice40.stat stat" >/dev/null ||
+    echo "$ME: $name: ice40 synthesis failed ($d/ice40.log)" >&2
+  if [ "$PNR" = 1 ]; then
+    echo "$ME: $name: wrapper + nextpnr (timeout ${TIMEOUT} s)" >&2
+    if yosys -q -l "$d/ports.log" -p "read_verilog -sv -I $R $PKG $srcs; $ch hierarchy -top $top; proc;
+         write_json $d/ports.json" >/dev/null 2>&1 &&
+       # shellcheck disable=SC2046
+       python3 "$ROOT/scripts/synth_wrap.py" --json "$d/ports.json" --top "$top" --name g2_wrap \
+         --out "$d/wrap.sv" $(wrap_params "$params") &&
+       # A combinational design has no clock port: drop the wrapper's clock connection.
+       { grep -q '"clk_i"' "$d/ports.json" || sed -i '/^    \.clk_i (clk_i),$/d' "$d/wrap.sv"; } &&
+       yosys -q -l "$d/pnr_yosys.log" -p "read_verilog -sv -I $R $PKG $srcs $R/trirast_synth_shell.sv $d/wrap.sv;
+         synth_ice40 -nobram -top g2_wrap -json $d/design.json; tee -q -o $d/pnr.stat stat" >/dev/null; then
+      timeout "$TIMEOUT" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" \
+        --pcf-allow-unconstrained --freq "$FREQ" --seed 1 --timing-allow-fail \
+        --log "$d/nextpnr.log" >/dev/null 2>&1 || echo "$ME: $name: nextpnr stopped or failed ($d/nextpnr.log)" >&2
+    else
+      echo "$ME: $name: wrapper synthesis failed (logs in $d)" >&2
+    fi
+  fi
+  echo "$(($(date +%s) - t0))" > "$d/seconds"
+}
+
+pnr_lc() {
+  local lc
+  lc=$(grep -o "ICESTORM_LC: *[0-9]*/ *[0-9]*" "$1/nextpnr.log" 2>/dev/null | tail -1 | sed 's/ICESTORM_LC: *//; s/ //g')
+  echo "${lc:--}"
+}
+wrap_ffs() {  # the shell's flip-flops: InBits + 2 * OutBits (input, output and read-back registers)
+  local w="$1/wrap.sv" i o
+  [ -f "$w" ] || { echo "-"; return; }
+  i=$(grep -o 'InBits ([0-9]*)' "$w" | grep -o '[0-9]*')
+  o=$(grep -o 'OutBits ([0-9]*)' "$w" | grep -o '[0-9]*')
+  echo $((i + 2 * o))
+}
+pnr_fmax() {  # achieved Fmax after routing, or why there is none
+  local log="$1/nextpnr.log"
+  [ -f "$log" ] || { echo "-"; return; }
+  if ! grep -q "Program finished normally" "$log"; then
+    if grep -q "Unable to place cell" "$log"; then echo "does not fit"; else echo "failed"; fi
+    return
+  fi
+  grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/"
+}
+pnr_path() {  # first source -> last sink of the critical path, and its logic/routing split
+  local log="$1/nextpnr.log"
+  [ -f "$log" ] || { echo "-"; return; }
+  awk '/Critical path report for clock/ {f = 1; src = ""; next}
+       f && /Critical path report for/ {exit}
+       f && $4 == "Source" && src == "" {src = $5}
+       f && $4 == "Setup" {snk = $5}
+       f && /ns logic,/ {sub(/^Info: /, ""); lr = $0}
+       END {if (src != "") printf "%s -> %s (%s)", src, snk, lr}' "$log"
+}
+
+report() {
+  echo "| design | what | xc7 LUT | xc7 FF | xc7 CARRY4 | xc7 DSP | iCE40 LUT4 | iCE40 FF | iCE40 CARRY | wrapped LC / 7680 | wrapper FF | Fmax MHz | critical path (nextpnr) |"
+  echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  local row name top srcs params desc d
+  for row in "${DESIGNS[@]}"; do
+    IFS='|' read -r name top srcs params desc <<< "$row"
+    d="$WORK/$name"
+    [ -d "$d" ] || continue
+    echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed 's/|/\\|/g') |"
+  done
+  echo
+  echo "Default configuration (S = 8, coordinate 16, box 14), $(yosys -V 2>/dev/null | cut -d' ' -f1-2),"
+  echo "nextpnr-ice40 --hx8k --package ct256 --seed 1 --freq $FREQ; wrapped LC include the wrapper's registers."
+}
+
+if [ "$CHECK" = 1 ]; then
+  command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
+  python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \
+    --endpoints 1 --fifo-depth 8 --sv "$PKG" >/dev/null ||
+    { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
+  rm -rf "$WORK/check"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
+    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_box2x2.sv" "$S/g2_check_tb.sv" \
+    --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
+  out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_check_tb:"
+  echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+  exit 0
+fi
+
+if [ "$REPORT" = 0 ]; then
+  python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \
+    --endpoints 1 --fifo-depth 8 --sv "$PKG" >/dev/null ||
+    { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
+  ran=0
+  for row in "${DESIGNS[@]}"; do
+    IFS='|' read -r name top srcs params desc <<< "$row"
+    if [ -n "$ONLY" ] && ! [[ "$name" =~ $ONLY ]]; then continue; fi
+    run_design "$name" "$top" "$srcs" "$params"
+    ran=$((ran + 1))
+  done
+  [ "$ran" -gt 0 ] || { echo "$ME: --only '$ONLY' matches no design" >&2; exit 2; }
+fi
+report | tee "$WORK/table.md"

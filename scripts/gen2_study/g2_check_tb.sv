@@ -1,0 +1,266 @@
+// gen2 study: a random cross-check of the prototypes against the first generation's modules and
+// the formulas they compute (scripts/gen2_study.sh --check; Verilator --binary). Not part of the
+// test suite: it only says the measured circuits compute what docs/gen2-design.md says they do.
+module g2_check_tb;
+  localparam int P = trirast_pkg::VertexBits;
+  localparam int CB = trirast_pkg::CoefBits;
+  localparam int EB = trirast_pkg::EdgeBits;
+  localparam int PB = trirast_pkg::PixBits;
+  localparam int BB = trirast_pkg::BoxBits;
+  localparam int F = trirast_pkg::FracBits;
+  localparam int SB = trirast_pkg::StepBits;
+  localparam int QB = trirast_pkg::QuotBits;
+  localparam int RB = trirast_pkg::RemBits;
+  localparam int WB = trirast_pkg::RowBits;
+  localparam int XB = trirast_pkg::WalkerXBits;
+  localparam int Trials = 3000;
+
+  logic clk = 0, rst_n = 0;
+  int errors = 0;
+  int narrow_checked = 0, bound_rows = 0, spans_valid = 0;
+
+  // ---------------- corner values ----------------
+  logic [3*P-1:0] vx, vy;
+  logic [3*CB-1:0] a, b;
+  logic [2:0] bias;
+  logic [PB-1:0] x0, y0;
+  logic [BB-1:0] xmax;
+  logic fits;
+  logic [3*EB-1:0] n_el, n_er, r2_el, r2_er, r4_el, r4_er, r16_el, r16_er;
+  logic start;
+  logic busy2, busy4, busy16, busym4, busym16;
+  logic [3*EB-1:0] m4_el, m16_el, mul_el;
+  g2_corner_mul u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .y0_i (y0), .el_o (mul_el));
+  g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busym4), .el_o (m4_el));
+  g2_corner_msb #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busym16), .el_o (m16_el));
+  g2_corner_narrow #(.NarrowBits (13)) u_narrow (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b),
+    .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax), .fits_o (fits), .el_o (n_el), .er_o (n_er));
+  g2_corner_digit #(.DigitBits (1), .WithER (1)) u_r2 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax),
+    .busy_o (busy2), .el_o (r2_el), .er_o (r2_er));
+  g2_corner_digit #(.DigitBits (2), .WithER (1)) u_r4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax),
+    .busy_o (busy4), .el_o (r4_el), .er_o (r4_er));
+  g2_corner_digit #(.DigitBits (4), .WithER (1)) u_r16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax),
+    .busy_o (busy16), .el_o (r16_el), .er_o (r16_er));
+
+  // ---------------- walkers ----------------
+  logic load, adv, mirror, dir, ssat, enters;
+  logic [SB-1:0] d;
+  logic [QB-1:0] qs;
+  logic [RB-1:0] rs, ee;
+  logic [WB-1:0] je, row;
+  logic [1:0] est, st1, st2;
+  logic signed [XB-1:0] ex, x1;
+  logic [BB:0] bnd2;
+  logic m1, m2;
+  trirast_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
+    .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
+    .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
+    .xmax_i (xmax), .row_i (row), .adv_i (adv), .adv_rows_i (3'd1), .mirror_o (m1),
+    .row_state_o (st1), .row_x_o (x1));
+  g2_walker_cs u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
+    .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
+    .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee), .xmax_i (xmax),
+    .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
+
+  // ---------------- span generators ----------------
+  logic [5:0] gst;
+  logic [3*XB-1:0] gx;
+  logic [3*(BB+1)-1:0] gb;
+  logic [2:0] gm;
+  logic v1, v2;
+  logic [BB:0] b1, e1, b2, e2;
+  trirast_span_generator u_g1 (.state_i (gst), .x_i (gx), .mirror_i (gm), .xmax_i (xmax),
+    .valid_o (v1), .begin_o (b1), .end_o (e1));
+  g2_span_gen_par u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
+    .valid_o (v2), .begin_o (b2), .end_o (e2));
+
+  // ---------------- 2x2 direct test ----------------
+  logic [3*EB-1:0] t_el, t_a, t_b;
+  logic t_xm, t_ym;
+  logic [1:0] t_valid;
+  logic [2*PB-1:0] t_y, t_xb;
+  logic [2*(PB+1)-1:0] t_xe;
+  int tiny_spans = 0;
+  g2_box2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
+    .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
+
+  task automatic box_trial();
+    longint e[3], av[3], bv[3];
+    logic [3*EB-1:0] el_v, a_v, b_v;
+    for (int k = 0; k < 3; k++) begin
+      e[k]  = longint'($urandom % 2001) - 1000;
+      av[k] = longint'($urandom % 2001) - 1000;
+      bv[k] = longint'($urandom % 2001) - 1000;
+      if ($urandom % 4 == 0) begin  // large values too
+        e[k] = e[k] <<< 30;  av[k] = av[k] <<< 30;  bv[k] = bv[k] <<< 30;
+      end
+      el_v[k*EB +: EB] = EB'(e[k]);
+      a_v[k*EB +: EB]  = EB'(av[k]);
+      b_v[k*EB +: EB]  = EB'(bv[k]);
+    end
+    t_el = el_v;
+    t_a = a_v;
+    t_b = b_v;
+    t_xm = 1'($urandom);
+    t_ym = 1'($urandom);
+    x0 = PB'($urandom % 1000);
+    y0 = PB'($urandom % 1000);
+    @(negedge clk);
+    for (int j = 0; j < 2; j++) begin
+      int first, last;
+      first = -1;  last = -1;
+      for (int i = 0; i < 2; i++) begin
+        bit cov;
+        cov = (i <= int'(t_xm)) && (j <= int'(t_ym));
+        for (int k = 0; k < 3; k++) if (e[k] + i * av[k] + j * bv[k] < 0) cov = 0;
+        if (cov) begin
+          if (first < 0) first = i;
+          last = i;
+        end
+      end
+      if ((first >= 0) != t_valid[j] ||
+          (first >= 0 && (t_y[j*PB +: PB] != PB'(32'(y0) + j) ||
+                          t_xb[j*PB +: PB] != PB'(32'(x0) + first) ||
+                          t_xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1)))) begin
+        errors++;
+        if (errors < 10) $display("2x2 row %0d (xmax %0d ymax %0d, e %0d %0d %0d, a %0d %0d %0d, b %0d %0d %0d): want %0d [%0d,%0d), got %0d [%0d,%0d)",
+          j, t_xm, t_ym, e[0], e[1], e[2], av[0], av[1], av[2], bv[0], bv[1], bv[2], first >= 0,
+          first, last + 1, t_valid[j], t_xb[j*PB +: PB] - x0, t_xe[j*(PB+1) +: PB+1] - x0);
+        if (errors < 4) $display("   dut: c00 %b c10 %b c01 %b c11 %b el0 %0d", u_box.c00, u_box.c10, u_box.c01, u_box.c11, $signed(t_el[0 +: EB]));
+      end
+      if (first >= 0) tiny_spans++;
+    end
+  endtask
+
+  always #5 clk = ~clk;
+
+  function automatic longint sx(input logic [63:0] v, input int w);
+    sx = longint'(v << (64 - w)) >>> (64 - w);
+  endfunction
+
+  task automatic corner_trial(input int ext);
+    longint ref_l[3], ref_r[3], cx0, cx1, cy0;
+    int cyc;
+    int basex, basey;
+    basex = $urandom % 64;
+    basey = $urandom % 64;
+    for (int k = 0; k < 3; k++) begin
+      vx[k*P +: P] = P'(($urandom % (ext * 256)) + 256 * basex);
+      vy[k*P +: P] = P'(($urandom % (ext * 256)) + 256 * basey);
+    end
+    for (int k = 0; k < 3; k++) begin
+      longint ax, ay, bx, by;
+      ax = sx(64'(vx[k*P +: P]), P);  ay = sx(64'(vy[k*P +: P]), P);
+      bx = sx(64'(vx[((k+1)%3)*P +: P]), P);  by = sx(64'(vy[((k+1)%3)*P +: P]), P);
+      a[k*CB +: CB] = CB'(ay - by);
+      b[k*CB +: CB] = CB'(bx - ax);
+    end
+    bias = 3'($urandom);
+    // The box near the vertices (its centres inside their extent when ext is small).
+    x0 = PB'(basex + $urandom % ((ext < 64) ? ext : 64));
+    y0 = PB'(basey + $urandom % ((ext < 64) ? ext : 64));
+    xmax = BB'($urandom % ((ext < 16) ? ext : 200));
+    cx0 = longint'(x0) * 256 + 128;  cx1 = (longint'(x0) + longint'(xmax)) * 256 + 128;
+    cy0 = longint'(y0) * 256 + 128;
+    for (int k = 0; k < 3; k++) begin
+      longint A, B, vxk, vyk;
+      A = sx(64'(a[k*CB +: CB]), CB);  B = sx(64'(b[k*CB +: CB]), CB);
+      vxk = sx(64'(vx[k*P +: P]), P);  vyk = sx(64'(vy[k*P +: P]), P);
+      ref_l[k] = A * (cx0 - vxk) + B * (cy0 - vyk) - longint'(bias[k]);
+      ref_r[k] = A * (cx1 - vxk) + B * (cy0 - vyk) - longint'(bias[k]);
+    end
+    #1;
+    if (fits) narrow_checked++;
+    for (int k = 0; k < 3; k++) begin
+      if (fits && (sx(64'(n_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(n_er[k*EB +: EB]), EB) != ref_r[k])) begin
+        errors++;
+        if (errors < 10) $display("narrow edge %0d: %0d %0d want %0d %0d", k,
+          sx(64'(n_el[k*EB +: EB]), EB), sx(64'(n_er[k*EB +: EB]), EB), ref_l[k], ref_r[k]);
+      end
+    end
+    @(negedge clk); start = 1; @(negedge clk); start = 0;
+    cyc = 0;
+    while ((busy2 || busy4 || busy16 || busym4 || busym16) && cyc < 100) begin @(negedge clk); cyc++; end
+    for (int k = 0; k < 3; k++) begin
+      if (sx(64'(r2_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r2_er[k*EB +: EB]), EB) != ref_r[k] ||
+          sx(64'(r4_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r4_er[k*EB +: EB]), EB) != ref_r[k] ||
+          sx(64'(r16_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(r16_er[k*EB +: EB]), EB) != ref_r[k] ||
+          sx(64'(m4_el[k*EB +: EB]), EB) != ref_l[k] || sx(64'(m16_el[k*EB +: EB]), EB) != ref_l[k] ||
+          sx(64'(mul_el[k*EB +: EB]), EB) != ref_l[k]) begin
+        errors++;
+        if (errors < 10) $display("shift-add edge %0d: r2 %0d r4 %0d r16 %0d msb4 %0d msb16 %0d want %0d", k,
+          sx(64'(r2_el[k*EB +: EB]), EB), sx(64'(r4_el[k*EB +: EB]), EB), sx(64'(r16_el[k*EB +: EB]), EB),
+          sx(64'(m4_el[k*EB +: EB]), EB), sx(64'(m16_el[k*EB +: EB]), EB), ref_l[k]);
+      end
+    end
+  endtask
+
+  task automatic walker_trial();
+    int rows;
+    xmax = BB'($urandom % 40);
+    d = SB'(1 + $urandom % 1000);
+    qs = QB'($urandom % 6);
+    rs = RB'($urandom % d);
+    ee = RB'($urandom % d);
+    ssat = ($urandom % 16) == 0;
+    mirror = 1'($urandom);
+    dir = 1'($urandom);
+    enters = ($urandom % 8) != 0;
+    je = WB'($urandom % 6);
+    est = ($urandom % 4 == 0) ? (dir ? trirast_pkg::RowClear : trirast_pkg::RowOut) : trirast_pkg::RowBound;
+    ex = XB'($urandom % (32'(xmax) + 1));
+    rows = 2 + $urandom % 40;
+    row = '0;
+    @(negedge clk); load = 1; @(negedge clk); load = 0;
+    for (int j = 0; j < rows; j++) begin
+      logic [BB:0] want;
+      want = m1 ? (BB + 1)'(32'(xmax) - 32'(x1)) : (BB + 1)'(x1 + 1'b1);
+      if (st1 != st2 || (st1 == trirast_pkg::RowBound && want != bnd2)) begin
+        errors++;
+        if (errors < 10) $display("walker row %0d: gen1 st %0d x %0d (bound %0d), gen2 st %0d bound %0d", j, st1, x1, want, st2, bnd2);
+      end
+      if (st1 == trirast_pkg::RowBound) bound_rows++;
+      adv = 1; @(negedge clk); adv = 0; row = row + 1'b1;
+    end
+  endtask
+
+  task automatic span_trial();
+    xmax = BB'($urandom % 40);
+    for (int k = 0; k < 3; k++) begin
+      logic signed [XB-1:0] x;
+      gst[2*k +: 2] = ($urandom % 8 == 0) ? trirast_pkg::RowOut : (($urandom % 4 == 0) ? trirast_pkg::RowClear : trirast_pkg::RowBound);
+      x = XB'($urandom % (32'(xmax) + 1));
+      gm[k] = 1'($urandom);
+      gx[k*XB +: XB] = x;
+      gb[k*(BB+1) +: BB+1] = gm[k] ? (BB + 1)'(32'(xmax) - 32'(x)) : (BB + 1)'(x + 1'b1);
+    end
+    #1;
+    if (v1) spans_valid++;
+    if (v1 != v2 || (v1 && (b1 != b2 || e1 != e2))) begin
+      errors++;
+      if (errors < 10) $display("span gen: gen1 %0d [%0d,%0d) gen2 %0d [%0d,%0d)", v1, b1, e1, v2, b2, e2);
+    end
+  endtask
+
+  initial begin
+    start = 0; load = 0; adv = 0; row = '0;
+    repeat (2) @(negedge clk);
+    rst_n = 1;
+    for (int t = 0; t < Trials; t++) corner_trial((t % 3 == 0) ? 3 : ((t % 3 == 1) ? 15 : 4000));
+    for (int t = 0; t < Trials; t++) walker_trial();
+    for (int t = 0; t < 20 * Trials; t++) span_trial();
+    for (int t = 0; t < 10 * Trials; t++) box_trial();
+    $display("g2_check_tb: %0d errors (corner trials %0d, of them narrow %0d; walker bound rows %0d; span rows %0d, of them with a span %0d; 2x2 boxes %0d, spans %0d)",
+             errors, Trials, narrow_checked, bound_rows, 20 * Trials, spans_valid, 10 * Trials, tiny_spans);
+    if (errors != 0) $fatal(1, "g2_check_tb: FAILED");
+    $finish;
+  end
+endmodule

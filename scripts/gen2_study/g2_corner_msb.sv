@@ -1,0 +1,120 @@
+// gen2 study prototype (not a unit; scripts/gen2_study.sh): vertex-relative E_L by digit-serial
+// shift-add, MSB first, DigitBits operand bits per cycle (2: radix 4, 4: radix 16), for the three
+// edges at once:  E_L = A*dxL + B*dy - bias,  dxL = cx0 - vx, dy = cy0 - vy.
+// Per cycle and edge: acc = (acc << DigitBits) +- A*digit(|dxL|) +- B*digit(|dy|) (the operand's
+// sign picks add or subtract; A*digit by shift-and-add). Starts at the top non-zero digit of the
+// largest operand of the three edges, so it takes ceil(bits / DigitBits) cycles (at least one)
+// after the start cycle. Against g2_corner_digit (LSB first) it keeps no shifted multiplicands:
+// the registers are the two operand magnitudes and the accumulator per edge, and a digit counter.
+module g2_corner_msb #(
+  parameter int DigitBits = 4
+) (
+  input  logic                                 clk_i,
+  input  logic                                 rst_ni,
+  input  logic                                 start_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]   a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]   b_i,
+  input  logic [2:0]                           bias_i,
+  input  logic [trirast_pkg::PixBits-1:0]      x0_i,
+  input  logic [trirast_pkg::PixBits-1:0]      y0_i,
+  output logic                                 busy_o,
+  output logic [3*trirast_pkg::EdgeBits-1:0]   el_o
+);
+  localparam int F = trirast_pkg::FracBits;
+  localparam int P = trirast_pkg::VertexBits;
+  localparam int CB = trirast_pkg::CoefBits;
+  localparam int EB = trirast_pkg::EdgeBits;
+  localparam int DW = P + 2;                        // cx - vx, signed
+  localparam int MW = P + 1;                        // its magnitude
+  localparam int DB = DigitBits;
+  localparam int ND = (MW + DB - 1) / DB;           // digits of a magnitude
+  localparam int NB = $clog2(ND + 1);
+  localparam int PW = CB + DB + 1;                  // A * digit, signed
+
+  logic signed [DW-1:0] cx0, cy0;
+  assign cx0 = $signed(DW'({x0_i, 1'b1, (F - 1)'(0)}));
+  assign cy0 = $signed(DW'({y0_i, 1'b1, (F - 1)'(0)}));
+
+  logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
+  logic [ND*DB-1:0] any_mag;          // OR of all start magnitudes (for the top digit)
+
+  function automatic logic signed [PW-1:0] pp(input logic signed [CB-1:0] m,
+                                              input logic [DB-1:0] digit);
+    logic signed [PW-1:0] sum;
+    sum = '0;
+    for (int i = 0; i < DB; i++) begin
+      if (digit[i]) sum = sum + (PW'(m) <<< i);
+    end
+    pp = sum;
+  endfunction
+
+  logic [ND*DB-1:0] mag_k [3][2];
+  for (genvar k = 0; k < 3; k++) begin : g_edge
+    logic signed [DW-1:0] dxl, dy;
+    logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
+    logic sx_q, sx_d, sy_q, sy_d;
+    logic signed [CB-1:0] ak, bk;
+    logic signed [EB-1:0] acc_q, acc_d, tx, ty;
+    logic [DB-1:0] dgx, dgy;
+    assign dxl = cx0 - DW'($signed(vx_i[k*P +: P]));
+    assign dy  = cy0 - DW'($signed(vy_i[k*P +: P]));
+    assign ak  = $signed(a_i[k*CB +: CB]);
+    assign bk  = $signed(b_i[k*CB +: CB]);
+    logic [MW-1:0] amx, amy;
+    assign amx = dxl[DW-1] ? MW'(-dxl) : MW'(dxl);
+    assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
+    assign mag_k[k][0] = (ND * DB)'(amx);
+    assign mag_k[k][1] = (ND * DB)'(amy);
+    // The current digit of each operand: a ND-way select by the counter.
+    always_comb begin
+      dgx = '0;
+      dgy = '0;
+      for (int i = 0; i < ND; i++) begin
+        if (cnt_q == NB'(i + 1)) begin
+          dgx = mx_q[i*DB +: DB];
+          dgy = my_q[i*DB +: DB];
+        end
+      end
+    end
+    // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
+    assign tx = EB'(pp(ak, dgx));
+    assign ty = EB'(pp(bk, dgy));
+    always_comb begin
+      mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;
+      if (start_i) begin
+        mx_d = mag_k[k][0];
+        my_d = mag_k[k][1];
+        sx_d = dxl[DW-1];
+        sy_d = dy[DW-1];
+        acc_d = '0;
+      end else if (cnt_q != '0) begin
+        acc_d = (acc_q <<< DB) + (sx_q ? -tx : tx) + (sy_q ? -ty : ty)
+                - ((cnt_q == NB'(1)) ? EB'(bias_i[k]) : '0);
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;
+    end
+    assign el_o[k*EB +: EB] = acc_q;
+  end
+
+  // The number of digits of the largest operand (priority encoder).
+  always_comb begin
+    any_mag = mag_k[0][0] | mag_k[0][1] | mag_k[1][0] | mag_k[1][1] | mag_k[2][0] | mag_k[2][1];
+    cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
+    if (start_i) begin
+      cnt_d = NB'(1);
+      for (int i = 1; i < ND; i++) begin
+        if (any_mag[i*DB +: DB] != '0) cnt_d = NB'(i + 1);
+      end
+    end
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) cnt_q <= '0;
+    else cnt_q <= cnt_d;
+  end
+  assign busy_o = cnt_q != '0;
+
+endmodule
