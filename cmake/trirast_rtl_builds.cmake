@@ -93,9 +93,9 @@ function(trirast_add_rtl_builds)
     # The probes: internal signals the unit's harness counts busy cycles from.
     set(_probes "")
     if(_unit_top STREQUAL "trirast_top")
-      # The lanes' divider enables and last iterations; the walk stage's rows: the three walkers' row states (2 bits
-      # per row of the group), the group's first row and the box's last (the walkers' Bresenham
-      # steps, counted by the harness as the model counts them).
+      # The lanes' divider enables and last iterations; the walk stage's rows: the three
+      # walkers' row states (2 bits per row of the group), the group's first row and the box's
+      # last (the walkers' Bresenham steps, counted by the harness as the model counts them).
       set(_probes --probe probe_div_en_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_en, u_dut.u_setup.g_edge[1].u_lane.div_en, u_dut.u_setup.g_edge[0].u_lane.div_en}"
                   --probe probe_div_last_o 3 "{u_dut.u_setup.g_edge[2].u_lane.div_last, u_dut.u_setup.g_edge[1].u_lane.div_last, u_dut.u_setup.g_edge[0].u_lane.div_last}"
                   --probe probe_walker_state_o 6*NumEndpoints "{u_dut.u_walk.wst[2], u_dut.u_walk.wst[1], u_dut.u_walk.wst[0]}"

@@ -43,10 +43,14 @@ struct ImprovedPorts {
   }
   // The lanes' work while the triangle is set up: a busy lane does a divider iteration or a
   // boundary column step.
-  void observe_setup(const Top& top, TriangleCycles& tc) const {
+  // Lanes work only while a triangle is in the setup stage, so these are also the run's totals.
+  void observe_setup(const Top& top, TriangleCycles& tc) {
     const unsigned busy = top.lane_busy_o, div = top.lane_div_o;
-    tc.divider_iterations += ones3(busy & div);
-    tc.boundary_steps += ones3(busy & ~div & 7u);
+    const unsigned iterations = ones3(busy & div), steps = ones3(busy & ~div & 7u);
+    tc.divider_iterations += iterations;
+    tc.boundary_steps += steps;
+    work_.divider_iterations += iterations;
+    work_.boundary_steps += steps;
   }
   void observe_handoff(const Top& top, TriangleCycles& tc) const {
     tc.box_width = uint64_t(top.box_xmax_o) + 1;
@@ -75,8 +79,6 @@ struct ImprovedPorts {
     m.busy[kImpLane0 + 1] += (lanes >> 1) & 1u;
     m.busy[kImpLane0 + 2] += (lanes >> 2) & 1u;
     const unsigned dividers = top.probe_div_en_o;
-    work_.divider_iterations += ones3(lanes & top.lane_div_o);
-    work_.boundary_steps += ones3(lanes & ~top.lane_div_o & 7u);
     work_.divisions += ones3(dividers & top.probe_div_last_o);
     m.busy[kImpDivider0 + 0] += dividers & 1u;
     m.busy[kImpDivider0 + 1] += (dividers >> 1) & 1u;
