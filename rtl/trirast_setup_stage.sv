@@ -212,19 +212,17 @@ module trirast_setup_stage (
   // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
   // port, unchanged, until the handshake.
   `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
-  `ASSERT(TriDataStable_A, tri_valid_i && !tri_ready_o |=>
-          $stable(tri_tag_i) && $stable(tri_vx_i) && $stable(tri_vy_i) && $stable(tri_a_i) &&
-          $stable(tri_b_i) && $stable(tri_c_i) && $stable(tri_bias_i), clk_i, !rst_ni)
+  `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
+                 {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i,
+                 !rst_ni)
   // The hand-off (what this stage guarantees the walk stage): the set-up triangle is held in
   // StHold, unchanged, until the walk stage takes it.
   `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
-  `ASSERT(HandDataStable_A, hand_valid_o && !hand_ready_i |=>
-          $stable(hand_tag_o) && $stable(hand_x0_o) && $stable(hand_y0_o) &&
-          $stable(hand_xmax_o) && $stable(hand_ymax_o) && $stable(hand_mirror_o) &&
-          $stable(hand_dir_down_o) && $stable(hand_d_o) && $stable(hand_qs_o) &&
-          $stable(hand_rs_o) && $stable(hand_ssat_o) && $stable(hand_enters_o) &&
-          $stable(hand_j_entry_o) && $stable(hand_entry_state_o) && $stable(hand_entry_x_o) &&
-          $stable(hand_entry_e_o), clk_i, !rst_ni)
+  `ASSERT_STABLE(HandDataStable_A, hand_valid_o && !hand_ready_i,
+                 {hand_tag_o, hand_x0_o, hand_y0_o, hand_xmax_o, hand_ymax_o, hand_mirror_o,
+                  hand_dir_down_o, hand_d_o, hand_qs_o, hand_rs_o, hand_ssat_o, hand_enters_o,
+                  hand_j_entry_o, hand_entry_state_o, hand_entry_x_o, hand_entry_e_o}, clk_i,
+                 !rst_ni)
   `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
           state_q == StLanes || state_q == StHold, clk_i, !rst_ni)
 

@@ -47,7 +47,7 @@ module trirast_span_port #(
 
   // The span port's handshake: a span offered and not taken stays, unchanged, next cycle.
   `ASSERT(SpanValidHeld_A, span_valid_o && !span_ready_i |=> span_valid_o, clk_i, !rst_ni)
-  `ASSERT(SpanDataStable_A, span_valid_o && !span_ready_i |=> $stable(head), clk_i, !rst_ni)
+  `ASSERT_STABLE(SpanDataStable_A, span_valid_o && !span_ready_i, head, clk_i, !rst_ni)
   // Known values on the unit's outputs: the valid and the count always, the span when valid.
   `ASSERT_KNOWN(SpanValidKnown_A, span_valid_o, clk_i, !rst_ni)
   `ASSERT_KNOWN(FifoCountKnown_A, count_o, clk_i, !rst_ni)
