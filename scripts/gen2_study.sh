@@ -10,8 +10,10 @@
 #       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
 #       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
-#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; exit 1 on a
-#       difference)
+#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; then
+#       scripts/gen2_study/g2_walk_check_tb.sv: g2_walk_slice as a whole against rtl/'s walk stage
+#       and span port on the same random hand-offs and sink pattern (spans equal; one cycle later
+#       each with an always-ready sink); exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -207,6 +209,18 @@ if [ "$CHECK" = 1 ]; then
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
   echo "$out" | grep "g2_check_tb:"
   echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+  # The retimed walk stage as a whole against gen1's walk stage and span port.
+  rm -rf "$WORK/check_walk"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$R/trirast_span_fifo.sv" \
+    "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$S/g2_walker_cs.sv" \
+    "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv" \
+    --top-module g2_walk_check_tb -Mdir "$WORK/check_walk" >"$WORK/check_walk.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_walk_check_tb failed ($WORK/check_walk.log)" >&2; exit 1; }
+  out="$("$WORK/check_walk/Vg2_walk_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_walk_check_tb:"
+  echo "$out" | grep -q "g2_walk_check_tb: 0 errors" ||
+    { echo "$ME: g2_walk_check_tb found differences" >&2; exit 1; }
   exit 0
 fi
 

@@ -1,0 +1,203 @@
+// gen2 study: the retimed walk stage as a whole (g2_walk_slice: carry-select walkers, parallel
+// span compares, registered push with a credit admission test, span FIFO) against the first
+// generation's walk stage and span port (rtl/trirast_walk_stage.sv + rtl/trirast_span_port.sv,
+// N = 1, FIFO 8), simulated side by side on the same random hand-off bundles
+// (scripts/gen2_study.sh --check; Verilator --binary --timing). Each has its own hand-off feeder
+// and sink, the sinks driven by the same pattern by cycle index: always ready (phase 1), then
+// random stalls (phase 2). Checked: the two span sequences are equal, span for span; with an
+// always-ready sink every span leaves the gen2 slice exactly one cycle after it leaves gen1 (the
+// registered push; docs/gen2-design.md, "Cycle contract"). With stalls the lag per span is
+// reported (min / max / mean), not required: the credit test is stricter than gen1's room test.
+module g2_walk_check_tb;
+  localparam int SB = trirast_pkg::StepBits;
+  localparam int QB = trirast_pkg::QuotBits;
+  localparam int RB = trirast_pkg::RemBits;
+  localparam int WB = trirast_pkg::RowBits;
+  localparam int XB = trirast_pkg::WalkerXBits;
+  localparam int BB = trirast_pkg::BoxBits;
+  localparam int PB = trirast_pkg::PixBits;
+  localparam int TB = trirast_pkg::TagBits;
+  localparam int Depth = 8;
+  localparam int CountBits = $clog2(Depth + 1);
+  localparam int EntryBits = TB + 3 * PB + 1;
+  localparam int Bundles = 1500;  // per phase
+
+  // One hand-off bundle (the setup stage's outputs to the walk stage).
+  typedef struct packed {
+    logic [TB-1:0] tag;
+    logic [PB-1:0] x0, y0;
+    logic [BB-1:0] xmax, ymax;
+    logic [2:0] mirror, dir_down, ssat, enters;
+    logic [3*SB-1:0] d;
+    logic [3*QB-1:0] qs;
+    logic [3*RB-1:0] rs, entry_e;
+    logic [3*WB-1:0] j_entry;
+    logic [5:0] entry_state;
+    logic [3*XB-1:0] entry_x;
+  } bundle_t;
+
+  logic clk = 0, rst_n = 0;
+  always #5 clk = ~clk;
+  longint cycle = 0;
+  always @(posedge clk) cycle <= cycle + 1;
+
+  bundle_t bundles[$];
+  int next1 = 0, next2 = 0;  // the bundle each feeder offers
+  int total = 0;             // bundles in this phase
+  bit stalls = 0;            // phase 2: random sink stalls
+  logic ready_pattern;       // the sinks' ready this cycle (both)
+  bundle_t h1, h2;
+  logic v1, v2, r1, r2;
+
+  // ---- gen1: walk stage + span port ----
+  logic [CountBits-1:0] count1;
+  logic [0:0] push1;
+  logic [EntryBits-1:0] pdata1;
+  logic busy1, stall1, last1, retire1;
+  logic [TB-1:0] wtag1;
+  logic [WB-1:0] wrow1;
+  logic sv1;
+  logic [TB-1:0] stag1;
+  logic [PB-1:0] sy1, sxb1;
+  logic [PB:0] sxe1;
+  trirast_walk_stage #(.NumEndpoints (1), .CountBits (CountBits), .EntryBits (EntryBits)) u_g1 (
+    .clk_i (clk), .rst_ni (rst_n), .endpoints_i (3'd1), .fifo_depth_i (CountBits'(Depth)),
+    .hand_valid_i (v1), .hand_ready_o (r1), .hand_tag_i (h1.tag), .hand_x0_i (h1.x0),
+    .hand_y0_i (h1.y0), .hand_xmax_i (h1.xmax), .hand_ymax_i (h1.ymax),
+    .hand_mirror_i (h1.mirror), .hand_dir_down_i (h1.dir_down), .hand_d_i (h1.d),
+    .hand_qs_i (h1.qs), .hand_rs_i (h1.rs), .hand_ssat_i (h1.ssat), .hand_enters_i (h1.enters),
+    .hand_j_entry_i (h1.j_entry), .hand_entry_state_i (h1.entry_state),
+    .hand_entry_x_i (h1.entry_x), .hand_entry_e_i (h1.entry_e), .fifo_count_i (count1),
+    .push_o (push1), .push_data_o (pdata1), .busy_o (busy1), .stall_o (stall1), .last_o (last1),
+    .retire_o (retire1), .tag_o (wtag1), .row_o (wrow1));
+  trirast_span_port #(.NumEndpoints (1), .FifoDepth (Depth)) u_p1 (
+    .clk_i (clk), .rst_ni (rst_n), .push_i (push1),
+    .push_data_i (pdata1), .count_o (count1), .span_valid_o (sv1), .span_ready_i (ready_pattern),
+    .span_tag_o (stag1), .span_y_o (sy1), .span_x_begin_o (sxb1), .span_x_end_o (sxe1));
+
+  // ---- gen2: the retimed slice ----
+  logic sv2, busy2;
+  logic [EntryBits-1:0] sdata2;
+  g2_walk_slice #(.FifoDepth (Depth)) u_g2 (
+    .clk_i (clk), .rst_ni (rst_n), .hand_valid_i (v2), .hand_ready_o (r2),
+    .hand_tag_i (h2.tag), .hand_x0_i (h2.x0), .hand_y0_i (h2.y0), .hand_xmax_i (h2.xmax),
+    .hand_ymax_i (h2.ymax), .hand_mirror_i (h2.mirror), .hand_dir_down_i (h2.dir_down),
+    .hand_d_i (h2.d), .hand_qs_i (h2.qs), .hand_rs_i (h2.rs), .hand_ssat_i (h2.ssat),
+    .hand_enters_i (h2.enters), .hand_j_entry_i (h2.j_entry),
+    .hand_entry_state_i (h2.entry_state), .hand_entry_x_i (h2.entry_x),
+    .hand_entry_e_i (h2.entry_e), .span_ready_i (ready_pattern), .span_valid_o (sv2),
+    .span_o (sdata2), .busy_o (busy2));
+
+  // The feeders: bundle k on the port until taken.
+  always_comb begin
+    v1 = next1 < total;
+    v2 = next2 < total;
+    h1 = v1 ? bundles[next1] : '0;
+    h2 = v2 ? bundles[next2] : '0;
+  end
+
+  // The spans leaving each side, with their cycles.
+  logic [EntryBits-1:0] out1[$], out2[$];
+  longint at1[$], at2[$];
+  always @(posedge clk) begin
+    if (rst_n) begin
+      if (v1 && r1) next1 <= next1 + 1;
+      if (v2 && r2) next2 <= next2 + 1;
+      if (sv1 && ready_pattern) begin
+        out1.push_back({stag1, sy1, sxb1, sxe1});
+        at1.push_back(cycle);
+      end
+      if (sv2 && ready_pattern) begin
+        out2.push_back(sdata2);
+        at2.push_back(cycle);
+      end
+    end
+  end
+  always @(negedge clk) ready_pattern <= !stalls || ($urandom % 3 != 0);
+
+  function automatic bundle_t random_bundle(input int k);
+    bundle_t b;
+    b = '0;
+    b.tag = TB'(k);
+    b.x0 = PB'($urandom % 900);
+    b.y0 = PB'($urandom % 700);
+    b.xmax = BB'($urandom % 40);
+    b.ymax = BB'(($urandom % 5 == 0) ? 0 : $urandom % 24);
+    for (int e = 0; e < 3; e++) begin
+      logic [SB-1:0] d;
+      logic dir;
+      d = SB'(1 + $urandom % 1000);
+      dir = 1'($urandom);
+      b.d[e*SB +: SB] = d;
+      b.qs[e*QB +: QB] = QB'($urandom % 6);
+      b.rs[e*RB +: RB] = RB'($urandom % d);
+      b.entry_e[e*RB +: RB] = RB'($urandom % d);
+      b.ssat[e] = ($urandom % 16) == 0;
+      b.mirror[e] = 1'($urandom);
+      b.dir_down[e] = dir;
+      b.enters[e] = ($urandom % 8) != 0;
+      b.j_entry[e*WB +: WB] = WB'($urandom % 6);
+      b.entry_state[2*e +: 2] = ($urandom % 4 == 0)
+          ? (dir ? trirast_pkg::RowClear : trirast_pkg::RowOut) : trirast_pkg::RowBound;
+      b.entry_x[e*XB +: XB] = XB'($urandom % (32'(b.xmax) + 1));
+    end
+    return b;
+  endfunction
+
+  int errors = 0;
+  longint spans_total = 0;
+
+  // Runs one phase: feeds the bundles, waits until both sides are empty, compares.
+  task automatic phase(input bit with_stalls);
+    longint lag, lag_min, lag_max, lag_sum, start;
+    int n;
+    stalls = with_stalls;
+    bundles.delete();
+    out1.delete(); out2.delete(); at1.delete(); at2.delete();
+    for (int k = 0; k < Bundles; k++) bundles.push_back(random_bundle(k));
+    @(negedge clk);
+    next1 = 0;
+    next2 = 0;
+    total = Bundles;
+    start = cycle;
+    while (next1 < total || next2 < total || busy1 || busy2 || sv1 || sv2) @(negedge clk);
+    repeat (4) @(negedge clk);
+    total = 0;
+    n = out1.size();
+    if (out2.size() != n) begin
+      errors++;
+      $display("phase %0d: gen1 %0d spans, gen2 %0d", with_stalls, n, out2.size());
+      if (out2.size() < n) n = out2.size();
+    end
+    lag_min = 1 << 30; lag_max = -(1 << 30); lag_sum = 0;
+    for (int i = 0; i < n; i++) begin
+      if (out1[i] != out2[i]) begin
+        if (errors < 10) $display("phase %0d span %0d: gen1 %h gen2 %h", with_stalls, i, out1[i], out2[i]);
+        errors++;
+      end
+      lag = at2[i] - at1[i];
+      if (!with_stalls && lag != 1) begin
+        if (errors < 10) $display("phase 0 span %0d: left gen1 in cycle %0d, gen2 in %0d (want +1)", i, at1[i], at2[i]);
+        errors++;
+      end
+      if (lag < lag_min) lag_min = lag;
+      if (lag > lag_max) lag_max = lag;
+      lag_sum += lag;
+    end
+    spans_total += n;
+    $display("g2_walk_check_tb: phase %s: %0d bundles, %0d spans, last span in cycle %0d (gen1) / %0d (gen2) of the phase, gen2 lag per span min %0d max %0d mean %0.3f cycles",
+             with_stalls ? "random sink stalls (ready 2 of 3)" : "sink always ready", Bundles, n,
+             n ? at1[n-1] - start : 0, n ? at2[n-1] - start : 0,
+             lag_min, lag_max, n ? real'(lag_sum) / n : 0.0);
+  endtask
+
+  initial begin
+    repeat (3) @(negedge clk);
+    rst_n = 1;
+    phase(0);
+    phase(1);
+    $display("g2_walk_check_tb: %0d errors (%0d spans compared)", errors, spans_total);
+    if (errors != 0) $fatal(1, "g2_walk_check_tb: FAILED");
+    $finish;
+  end
+endmodule
