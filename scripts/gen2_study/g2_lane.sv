@@ -239,7 +239,7 @@ module g2_lane (
   assign entry_state_o = (horiz_q || sat_q || gt_q || eq_q) ? (dir_q ? RowClear : RowOut)
                                                             : RowBound;
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
-  assign entry_x_o  = dir_q ? XB'(qe_q) : XB'(xmax_i) + ~XB'(qe_q);
+  assign entry_x_o  = dir_q ? XB'(qe_q) : XB'(xmax_i) + ~(XB'(qe_q));
   assign entry_e_o  = dir_q ? r_q : {dh_q + ~r_q[RB-1:F], ~r_q[F-1:0]};
 
 endmodule
