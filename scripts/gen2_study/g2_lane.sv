@@ -7,8 +7,8 @@
 //  - The operation is a registered state; every next-state decision reads registers only (the
 //    column value's sign, j <= Ymax, the iteration counter, the registered saturation flag).
 //  - Each division has a set-up cycle that aligns the numerator: R = n >> m (one shifter, n
-//    muxed between s and the column value), the low numerator bits kept unshifted in a 15-bit
-//    register and picked one per iteration by the counter. The iteration is then
+//    muxed between s and the column value), the low numerator bits picked one per iteration by the
+//    counter from the registers that hold them (s, or the column value, frozen by then). The iteration is then
 //    {R, bit} - D at the divisor's width + 1 (25 bits: D's F zero low bits pass as wires), with no
 //    shifter in its path. Saturation (n >> m >= D) is a compare of the registered R (plus the
 //    bits shifted out above it) in the first iteration, registered; a saturated division stops
@@ -85,7 +85,6 @@ module g2_lane (
   logic [IB-1:0] cnt_q, cnt_d;               // bit of the quotient this iteration makes
   logic first_q, first_d;                    // first iteration of a division
   logic [RB-1:0] r_q, r_d;                   // partial remainder (< D when not saturated)
-  logic [QB-1:0] nl_q, nl_d;                 // the numerator's low Q bits, unshifted
   logic stk_q, stk_d, sat_q, sat_d;          // bits above R at the set-up; saturated
   logic [QB-1:0] qs_q, qs_d, qe_q, qe_d;     // slope and entry quotients (shifted in MSB first)
   logic [MB-1:0] rsh_q, rsh_d;               // r_s without its F zero bits
@@ -124,7 +123,10 @@ module g2_lane (
   assign shifted = num >> m_i;
   assign r_set   = shifted[RB-1:0];
   assign stk_set = |shifted[NB-1:RB];
-  assign nbit    = nl_q[cnt_q];
+  // The numerator's bit below R: s's (its F low bits are zero) or the column value's, which
+  // stays put while the entry division runs (the traversal is over).
+  assign nbit    = (op_q == OpSlope) ? ((32'(cnt_q) >= F) ? sh_q[cnt_q - IB'(F)] : 1'b0)
+                                     : u_q[cnt_q];
   assign x_hi    = r_q[RB-1:F-1];
   assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
   assign fits    = !trial[MB+1];
@@ -138,7 +140,6 @@ module g2_lane (
     cnt_d  = cnt_q - 1'b1;
     first_d = 1'b0;
     r_d    = r_q;
-    nl_d   = nl_q;
     stk_d  = stk_q;
     sat_d  = first_q ? sat_now : sat_q;
     qs_d   = qs_q;
@@ -151,7 +152,7 @@ module g2_lane (
     set_entry = 1'b0;
     unique case (op_q)
       OpSlopeSet: begin
-        r_d = r_set; nl_d = num[QB-1:0]; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
+        r_d = r_set; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
         qs_d = '0;
         op_d = OpSlope;
       end
@@ -182,7 +183,7 @@ module g2_lane (
       default: op_d = OpDone;
     endcase
     if (set_entry) begin
-      r_d = r_set; nl_d = num[QB-1:0]; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
+      r_d = r_set; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
       qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
     end
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;
@@ -213,7 +214,6 @@ module g2_lane (
     cnt_q   <= cnt_d;
     first_q <= first_d;
     r_q     <= r_d;
-    nl_q    <= nl_d;
     stk_q   <= stk_d;
     sat_q   <= sat_d;
     qs_q    <= qs_d;
@@ -239,7 +239,9 @@ module g2_lane (
   assign entry_state_o = (horiz_q || sat_q || gt_q || eq_q) ? (dir_q ? RowClear : RowOut)
                                                             : RowBound;
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
-  assign entry_x_o  = dir_q ? XB'(qe_q) : XB'(xmax_i) + ~(XB'(qe_q));
-  assign entry_e_o  = dir_q ? r_q : {dh_q + ~r_q[RB-1:F], ~r_q[F-1:0]};
+  // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
+  assign entry_x_o  = (dir_q ? XB'(0) : XB'(xmax_i)) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
+  assign entry_e_o  = {(dir_q ? MB'(0) : dh_q) + (dir_q ? r_q[RB-1:F] : ~r_q[RB-1:F]),
+                       dir_q ? r_q[F-1:0] : ~r_q[F-1:0]};
 
 endmodule
