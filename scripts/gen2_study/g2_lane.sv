@@ -23,7 +23,9 @@
 // Cycles (adaptive m = Qx; T = traversal steps; from the cycle after the load to the first
 // cycle with done_o): horizontal edge T; otherwise max(m + 1, T + 1) + m when it enters the box
 // (2 instead of m cycles for a saturated division), max(m + 1, T) when it does not.
-module g2_lane (
+module g2_lane #(
+  parameter int FixedM = 0  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
+) (
   input  logic                                    clk_i,
   input  logic                                    rst_ni,
   input  logic [$clog2(trirast_pkg::QuotBits+1)-1:0] m_i,  // iterations of an x division (2..Q),
@@ -77,6 +79,9 @@ module g2_lane (
   localparam logic [2:0] OpEntry    = 3'd3;  // entry-x iterations
   localparam logic [2:0] OpDone     = 3'd4;
 
+  logic [IB-1:0] m;
+  assign m = (FixedM != 0) ? IB'(FixedM) : m_i;
+
   logic [2:0] op_q, op_d;
   logic horiz_q, mirror_q, dir_q;
   logic [MB-1:0] dh_q, sh_q;                 // |A|, |B| (D and s without their F zero bits)
@@ -120,7 +125,7 @@ module g2_lane (
   logic [MB+1:0] trial;
   logic [RB-1:0] r_iter;
   assign num     = (op_q == OpSlopeSet) ? NB'({sh_q, {F{1'b0}}}) : NB'(u_q);
-  assign shifted = num >> m_i;
+  assign shifted = num >> m;
   assign r_set   = shifted[RB-1:0];
   assign stk_set = |shifted[NB-1:RB];
   // The numerator's bit below R: s's (its F low bits are zero) or the column value's, which
@@ -152,7 +157,7 @@ module g2_lane (
     set_entry = 1'b0;
     unique case (op_q)
       OpSlopeSet: begin
-        r_d = r_set; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
+        r_d = r_set; stk_d = stk_set; cnt_d = m - 1'b1; first_d = 1'b1;
         qs_d = '0;
         op_d = OpSlope;
       end
@@ -183,7 +188,7 @@ module g2_lane (
       default: op_d = OpDone;
     endcase
     if (set_entry) begin
-      r_d = r_set; stk_d = stk_set; cnt_d = m_i - 1'b1; first_d = 1'b1;
+      r_d = r_set; stk_d = stk_set; cnt_d = m - 1'b1; first_d = 1'b1;
       qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
     end
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;

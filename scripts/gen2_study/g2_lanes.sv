@@ -46,14 +46,19 @@ module g2_lanes #(
     bits_plus_one = n + 1'b1;
   endfunction
 
+  // Adaptive: registered at the load. Fixed: a constant (so the lanes' shifters vanish).
   logic [IterBits-1:0] m_q;
-  always_ff @(posedge clk_i) begin
-    if (load_i) m_q <= (Adaptive != 0) ? bits_plus_one(xmax_i) : IterBits'(QB);
+  if (Adaptive != 0) begin : g_adaptive
+    always_ff @(posedge clk_i) begin
+      if (load_i) m_q <= bits_plus_one(xmax_i);
+    end
+  end else begin : g_fixed
+    assign m_q = IterBits'(QB);
   end
 
   for (genvar k = 0; k < 3; k++) begin : g_edge
     /* verilator lint_off PINCONNECTEMPTY */
-    g2_lane u_lane (
+    g2_lane #(.FixedM ((Adaptive != 0) ? 0 : QB)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (load_i),
       .a_i (a_i[k*CB +: CB]), .b_i (b_i[k*CB +: CB]),
       .el_i (el_i[k*EB +: EB]), .er_i (er_i[k*EB +: EB]),
