@@ -20,9 +20,10 @@
 //    from u's q, r without a correction (two adders on the outputs). The entry test
 //    q >= Xmax (both directions) is formed bit-serially during the iterations.
 //  - D, s and r_s are held without their F constant zero low bits.
-// Cycles (adaptive m = Qx; T = traversal steps; from the cycle after the load to the first
-// cycle with done_o): horizontal edge T; otherwise max(m + 1, T + 1) + m when it enters the box
-// (2 instead of m cycles for a saturated division), max(m + 1, T) when it does not.
+// Cycles (m = Qx, or Q with FixedM; T = traversal steps; from the cycle after the load to the
+// first cycle with done_o): a horizontal edge T + 1; otherwise max(m + 1, T + 1) + m when it
+// enters the box, max(m + 1, T + 1) when it does not (a saturated division stops after 2 of its
+// m iterations). gen1: T, T + 2m, T + m.
 module g2_lane #(
   parameter int FixedM = 0  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
 ) (

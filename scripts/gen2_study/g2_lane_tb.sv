@@ -139,6 +139,23 @@ module g2_lane_tb;
       end
     end
     last1 = c1; last2 = c2;
+    // gen2's cycles as g2_lane.sv's header states them (T = the traversal's steps = j at its end;
+    // a saturated division takes 2 iterations).
+    begin
+      int tt, ms, cs, expect2;
+      tt = int'(g2_je);
+      ms = g2_ssat ? 2 : int'(m);
+      cs = (ms + 1 > tt + 1) ? ms + 1 : tt + 1;
+      if (g2_horiz) expect2 = tt + 1;
+      else if (g2_enters) expect2 = cs + (u_l2.sat_q ? 2 : int'(m));
+      else expect2 = cs;
+      if (expect2 != c2) begin
+        errors++;
+        if (errors <= 10)
+          $display("g2_lane_tb: ERROR gen2 took %0d cycles, its header says %0d (a=%0d b=%0d el=%0d er=%0d xmax=%0d ymax=%0d m=%0d)",
+                   c2, expect2, a, b, el, er, xmax, ymax, m);
+      end
+    end
     if (count) begin
       sum1 += c1; sum2 += c2; n_edges++;
       if (c1 > max1) max1 = c1;
