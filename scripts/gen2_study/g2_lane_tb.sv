@@ -140,7 +140,7 @@ module g2_lane_tb;
     end
     last1 = c1; last2 = c2;
     // gen2's cycles as g2_lane.sv's header states them (T = the traversal's steps = j at its end;
-    // a saturated division takes 2 iterations).
+    // a saturated division takes 2 iterations), and gen1's.
     begin
       int tt, ms, cs, expect2;
       tt = int'(g2_je);
@@ -149,6 +149,18 @@ module g2_lane_tb;
       if (g2_horiz) expect2 = tt + 1;
       else if (g2_enters) expect2 = cs + (u_l2.sat_q ? 2 : int'(m));
       else expect2 = cs;
+      // gen1's (docs/timing.md "Lane cycles": steps + iterations; no early stop on saturation).
+      begin
+        int t1, expect1;
+        t1 = int'(g1_je);
+        expect1 = g1_horiz_o ? t1 : t1 + int'(m) + (g1_enters ? int'(m) : 0);
+        if (expect1 != c1) begin
+          errors++;
+          if (errors <= 10)
+            $display("g2_lane_tb: ERROR gen1 took %0d cycles, expected %0d (a=%0d b=%0d xmax=%0d ymax=%0d m=%0d)",
+                     c1, expect1, a, b, xmax, ymax, m);
+        end
+      end
       if (expect2 != c2) begin
         errors++;
         if (errors <= 10)
