@@ -14,7 +14,7 @@
 #       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
 #       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
 #       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
-#       cycles per edge and per triangle of both; exit 1 on a difference)
+#       cycles per edge and per triangle of both, for g2_lane's PreIter = 0 and 1; exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -90,6 +90,7 @@ DESIGNS=(
 "g2.lane|g2_lane|$S/g2_lane.sv||redesigned lane with its normalizer (step mode; registered operation, set-up cycle, 25-bit remainder arithmetic), one per edge"
 "g2.lanes|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=1|3 redesigned lanes with normalizers as in the setup stage (step mode, adaptive divider)"
 "g2.lanes_fixed|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=0|the same with the fixed divider (m = Q: no numerator shifter)"
+"g2.lanes_pre|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=1,PreIter=1|3 lanes, adaptive, with the pre-iteration (saturation through the trial subtractor, dir - e without an output adder; one more cycle per division)"
 "g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
 "g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
 "g2.walker_cs|g2_walker_cs|$S/g2_walker_cs.sv||carry-select edge walker, parallel leave test, bound register"
@@ -217,12 +218,15 @@ if [ "$CHECK" = 1 ]; then
   echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
   # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
   # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
-  rm -rf "$WORK/check_lane"
-  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
-    "$R/trirast_adder_divider.sv" "$R/trirast_edge_lane.sv" "$R/trirast_edge_normalizer.sv" \
-    "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv" \
-    --top-module g2_lane_tb -Mdir "$WORK/check_lane" >"$WORK/check_lane.log" 2>&1 ||
-    { echo "$ME: Verilator build of g2_lane_tb failed ($WORK/check_lane.log)" >&2; exit 1; }
+  # Two builds: g2_lane as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).
+  for pre in 0 1; do
+    rm -rf "$WORK/check_lane$pre"
+    verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -GPreIter=$pre -I"$R" "$PKG" \
+      "$R/trirast_adder_divider.sv" "$R/trirast_edge_lane.sv" "$R/trirast_edge_normalizer.sv" \
+      "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv" \
+      --top-module g2_lane_tb -Mdir "$WORK/check_lane$pre" >"$WORK/check_lane$pre.log" 2>&1 ||
+      { echo "$ME: Verilator build of g2_lane_tb (PreIter=$pre) failed ($WORK/check_lane$pre.log)" >&2; exit 1; }
+  done
   runs=("")
   if [ -x "$TRIRAST" ]; then
     for sc in $LANE_SCENES; do
@@ -237,12 +241,15 @@ if [ "$CHECK" = 1 ]; then
   else
     echo "$ME: $TRIRAST not found: the lane check runs on random edges only (set TRIRAST)" >&2
   fi
-  for r in "${runs[@]}"; do
-    # shellcheck disable=SC2086
-    out="$("$WORK/check_lane/Vg2_lane_tb" $r 2>&1)" || true
-    if [ -n "$r" ]; then echo "$out" | grep "g2_lane_tb:" | grep -v "random and hard"
-    else echo "$out" | grep "g2_lane_tb:"; fi
-    echo "$out" | grep -q "g2_lane_tb: 0 errors" || { echo "$ME: g2_lane_tb found differences" >&2; exit 1; }
+  for pre in 0 1; do
+    for r in "${runs[@]}"; do
+      # shellcheck disable=SC2086
+      out="$("$WORK/check_lane$pre/Vg2_lane_tb" $r 2>&1)" || true
+      if [ -n "$r" ]; then echo "$out" | grep "g2_lane_tb:" | grep -v "random and hard" | sed "s/^g2_lane_tb:/g2_lane_tb (PreIter=$pre):/"
+      else echo "$out" | grep "g2_lane_tb:" | sed "s/^g2_lane_tb:/g2_lane_tb (PreIter=$pre):/"; fi
+      echo "$out" | grep -q "g2_lane_tb: 0 errors" ||
+        { echo "$ME: g2_lane_tb (PreIter=$pre) found differences" >&2; exit 1; }
+    done
   done
   exit 0
 fi

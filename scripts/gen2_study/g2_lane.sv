@@ -20,12 +20,17 @@
 //    from u's q, r without a correction (two adders on the outputs). The entry test
 //    q >= Xmax (both directions) is formed bit-serially during the iterations.
 //  - D, s and r_s are held without their F constant zero low bits.
-// Cycles (m = Qx, or Q with FixedM; T = traversal steps; from the cycle after the load to the
-// first cycle with done_o): a horizontal edge T + 1; otherwise max(m + 1, T + 1) + m when it
-// enters the box, max(m + 1, T + 1) when it does not (a saturated division stops after 2 of its
-// m iterations). gen1: T, T + 2m, T + m.
+// Cycles (m = Qx, or Q with FixedM; P = PreIter; T = traversal steps; from the cycle after the
+// load to the first cycle with done_o): a horizontal edge T + 1; otherwise
+// max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
+// (a saturated division stops after 2 of its m + P iterations). gen1: T, T + 2m, T + m.
 module g2_lane #(
-  parameter int FixedM = 0  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
+  parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
+  // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
+  // trial subtractor (the saturation test, no comparator) and, for a dir - entry, continues
+  // from D - 1 - R_0 with complemented numerator bits, which leaves e = D - 1 - r in R (no
+  // output adder for e); one more cycle per division.
+  parameter int PreIter = 0
 ) (
   input  logic                                    clk_i,
   input  logic                                    rst_ni,
@@ -125,8 +130,12 @@ module g2_lane #(
   logic [MB:0] x_hi;                         // {R, bit}[RB:F]
   logic [MB+1:0] trial;
   logic [RB-1:0] r_iter;
+  logic pre, cmpl, nbit_e, qbit;
+  logic [F-1:0] x_lo;
+  localparam bit Pre = PreIter != 0;
   assign num     = (op_q == OpSlopeSet) ? NB'({sh_q, {F{1'b0}}}) : NB'(u_q);
-  assign shifted = num >> m;
+  // With the pre-iteration, R = n >> (m + 1) and the pre-iteration shifts in n's bit m.
+  assign shifted = Pre ? (num >> 1) >> m : num >> m;
   assign r_set   = shifted[RB-1:0];
   assign stk_set = |shifted[NB-1:RB];
   // The numerator's bit below R: s's (its F low bits are zero) or the column value's, which
@@ -136,7 +145,23 @@ module g2_lane #(
   assign x_hi    = r_q[RB-1:F-1];
   assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
   assign fits    = !trial[MB+1];
-  assign r_iter  = {fits ? trial[MB-1:0] : x_hi[MB-1:0], r_q[F-2:0], nbit};
+  if (Pre) begin : g_pre
+    assign pre    = first_q;
+    assign cmpl   = (op_q == OpEntry) && !dir_q;  // dividing D - 1 - R (dir - entry)
+    assign nbit_e = nbit ^ (cmpl && !pre);
+    assign x_lo   = {r_q[F-2:0], nbit_e};
+    assign qbit   = fits ^ cmpl;  // the quotient bit (complemented when dividing D - 1 - R)
+    assign r_iter = (pre && cmpl) ? {~trial[MB-1:0], ~x_lo}
+                  : pre ? {x_hi[MB-1:0], x_lo}
+                  : {fits ? trial[MB-1:0] : x_hi[MB-1:0], x_lo};
+  end else begin : g_plain
+    assign pre    = 1'b0;
+    assign cmpl   = 1'b0;
+    assign nbit_e = nbit;
+    assign x_lo   = {r_q[F-2:0], nbit};
+    assign qbit   = fits;
+    assign r_iter = {fits ? trial[MB-1:0] : x_hi[MB-1:0], r_q[F-2:0], nbit};
+  end
   assign sat_now = stk_q || (r_q[RB-1:F] >= dh_q);
   assign xbit    = (32'(cnt_q) < BB) ? xmax_i[cnt_q] : 1'b0;
 
@@ -147,7 +172,7 @@ module g2_lane #(
     first_d = 1'b0;
     r_d    = r_q;
     stk_d  = stk_q;
-    sat_d  = first_q ? sat_now : sat_q;
+    sat_d  = first_q ? (Pre ? stk_q || fits : sat_now) : sat_q;
     qs_d   = qs_q;
     qe_d   = qe_q;
     rsh_d  = rsh_q;
@@ -158,13 +183,13 @@ module g2_lane #(
     set_entry = 1'b0;
     unique case (op_q)
       OpSlopeSet: begin
-        r_d = r_set; stk_d = stk_set; cnt_d = m - 1'b1; first_d = 1'b1;
+        r_d = r_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
         qs_d = '0;
         op_d = OpSlope;
       end
       OpSlope: begin
         r_d  = r_iter;
-        qs_d = {qs_q[QB-2:0], fits};
+        if (!pre) qs_d = {qs_q[QB-2:0], qbit};
         if (last) begin
           rsh_d  = r_iter[RB-1:F];
           ssat_d = sat_q;
@@ -178,18 +203,18 @@ module g2_lane #(
       end
       OpEntry: begin
         r_d  = r_iter;
-        qe_d = {qe_q[QB-2:0], fits};
+        if (!pre) qe_d = {qe_q[QB-2:0], qbit};
         // While equal so far: the first differing bit decides (gt is read only once eq is 0).
-        if (eq_q) begin
-          gt_d = fits;
-          eq_d = fits == xbit;
+        if (eq_q && !pre) begin
+          gt_d = qbit;
+          eq_d = qbit == xbit;
         end
         if (last) op_d = OpDone;
       end
       default: op_d = OpDone;
     endcase
     if (set_entry) begin
-      r_d = r_set; stk_d = stk_set; cnt_d = m - 1'b1; first_d = 1'b1;
+      r_d = r_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
       qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
     end
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;
@@ -247,7 +272,11 @@ module g2_lane #(
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
   // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
   assign entry_x_o  = (dir_q ? XB'(0) : XB'(xmax_i)) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
-  assign entry_e_o  = {(dir_q ? MB'(0) : dh_q) + (dir_q ? r_q[RB-1:F] : ~r_q[RB-1:F]),
-                       dir_q ? r_q[F-1:0] : ~r_q[F-1:0]};
+  if (Pre) begin : g_e_direct
+    assign entry_e_o = r_q;  // already D - 1 - r for dir -
+  end else begin : g_e_conv
+    assign entry_e_o = {(dir_q ? MB'(0) : dh_q) + (dir_q ? r_q[RB-1:F] : ~r_q[RB-1:F]),
+                        dir_q ? r_q[F-1:0] : ~r_q[F-1:0]};
+  end
 
 endmodule

@@ -16,7 +16,9 @@
 // state (and X' on bound rows) is compared, for boxes up to WalkRows rows.
 // Cycles per edge: from the cycle after the load to the first cycle whose registers hold the
 // results (gen1: !busy_o, gen2: done_o).
-module g2_lane_tb;
+module g2_lane_tb #(
+  parameter int PreIter = 0  // g2_lane's PreIter
+);
   localparam int CB = trirast_pkg::CoefBits;
   localparam int EB = trirast_pkg::EdgeBits;
   localparam int BB = trirast_pkg::BoxBits;
@@ -78,7 +80,7 @@ module g2_lane_tb;
   logic [WB-1:0] g2_je;
   logic [1:0] g2_est;
   logic signed [XB-1:0] g2_ex;
-  g2_lane u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
+  g2_lane #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
     .el_i (el), .er_i (er), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),
     .rs_o (g2_rs), .ssat_o (g2_ssat), .enters_o (g2_enters), .j_entry_o (g2_je),
@@ -144,10 +146,10 @@ module g2_lane_tb;
     begin
       int tt, ms, cs, expect2;
       tt = int'(g2_je);
-      ms = g2_ssat ? 2 : int'(m);
+      ms = g2_ssat ? 2 : int'(m) + PreIter;
       cs = (ms + 1 > tt + 1) ? ms + 1 : tt + 1;
       if (g2_horiz) expect2 = tt + 1;
-      else if (g2_enters) expect2 = cs + (u_l2.sat_q ? 2 : int'(m));
+      else if (g2_enters) expect2 = cs + (u_l2.sat_q ? 2 : int'(m) + PreIter);
       else expect2 = cs;
       // gen1's (docs/timing.md "Lane cycles": steps + iterations; no early stop on saturation).
       begin
