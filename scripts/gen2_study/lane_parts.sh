@@ -2,7 +2,8 @@
 # gen2 study: what the parts of the redesigned lane cost on xc7 (docs/gen2-design.md section 2).
 #   scripts/gen2_study/lane_parts.sh [WORKDIR]   (default build/gen2_study; needs its trirast_pkg.sv,
 #                                                 written by scripts/gen2_study.sh)
-# Yosys `synth_xilinx -family xc7 -top g2_lane` of scripts/gen2_study/g2_lane.sv as it is, then with
+# Yosys `synth_xilinx -family xc7 -top g2_lane` of scripts/gen2_study/g2_lane.sv as it is (default
+# parameters: adaptive, PreIter = 0), then with
 # one part at a time replaced by a stub (the sed expression below): the difference in LUT (LUT1-6)
 # is what the part costs, the lane's one module not splitting further in `stat`. Parts interact
 # through the LUT mapping, so the differences do not add up exactly to the total.
@@ -21,12 +22,12 @@ luts() {  # luts FILE: "LUT FF" of g2_lane on xc7
        END {print l, f}' "$TMP/stat"
 }
 PARTS=(
-"numerator shifter n >> m (the adaptive divider's alignment)|s/assign shifted = num >> m;/assign shifted = num >> 4;/"
+"numerator shifter n >> m (the adaptive divider's alignment)|s/assign shifted = .*/assign shifted = num >> 4;/"
 "numerator select (s or the column value) before the shifter|s/assign num     = .*/assign num = NB'(u_q);/"
 "bits above R at the set-up (sticky OR)|s/assign stk_set = .*/assign stk_set = 1'b0;/"
 "saturation compare R >= D (first iteration)|s/assign sat_now = .*/assign sat_now = stk_q;/"
 "trial subtraction {R, bit} - D (25 bits)|s/assign trial   = .*/assign trial = {1'b0, x_hi};/"
-"output conversion: dir - X' = Xmax - 1 - q, e = D - 1 - r (two adders and the dir muxes)|s/assign entry_x_o  = .*/assign entry_x_o = XB'(qe_q);/; s/assign entry_e_o  = {.*/assign entry_e_o = r_q; wire [7:0] unused_e = {/"
+"output conversion: dir - X' = Xmax - 1 - q, e = D - 1 - r (two adders and the dir muxes)|s/assign entry_x_o  = .*/assign entry_x_o = XB'(qe_q);/; s/    assign entry_e_o = {.*/    assign entry_e_o = r_q; wire [7:0] unused_e = {/"
 "traversal adder u + s|s/assign u_d        = .*/assign u_d = u_q;/"
 "column value load select (E_L, E_R, complement)|s/assign u_load   = .*/assign u_load = el_i;/"
 "row test j <= Ymax|s/assign in_box     = .*/assign in_box = 1'b1;/"
