@@ -10,7 +10,10 @@
 #       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
 #       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
-#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; exit 1 on a
+#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; then
+#       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
+#       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
+#       random triangles of the box's hard cases under random offer and stall patterns; exit 1 on a
 #       difference)
 #
 # Per design, one tool at a time (the machine is shared):
@@ -68,6 +71,8 @@ DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
 "g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
 "g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.box_stage3|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=0|gen2 box stage B in three pipelined steps with valid/ready (per-vertex first/last pixel and min/max; clip and empty beside each other; operands): triangle register, two more copies, empty registered"
+"g2.box_stage3p|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=1|the same with step 1 on the port's data before the triangle register: two copies of the triangle, the latency of g2.box_stage2"
 "g2.corner_mul|g2_corner_mul|$S/g2_corner_mul.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
@@ -207,6 +212,14 @@ if [ "$CHECK" = 1 ]; then
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
   echo "$out" | grep "g2_check_tb:"
   echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+  rm -rf "$WORK/check_box"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv" \
+    --top-module g2_box_check_tb -Mdir "$WORK/check_box" >"$WORK/check_box.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_box_check_tb failed ($WORK/check_box.log)" >&2; exit 1; }
+  out="$("$WORK/check_box/Vg2_box_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_box_check_tb:"
+  echo "$out" | grep -q "g2_box_check_tb: 0 errors" || { echo "$ME: g2_box_check_tb found differences" >&2; exit 1; }
   exit 0
 fi
 
