@@ -17,7 +17,11 @@
 #       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
 #       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
 #       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
-#       cycles per edge and per triangle of both, for g2_lane's PreIter = 0 and 1; exit 1 on a difference)
+#       cycles per edge and per triangle of both, for g2_lane's PreIter = 0 and 1; then
+#       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
+#       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
+#       random triangles of the box's hard cases under random offer and stall patterns; exit 1 on a
+#       difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -76,6 +80,8 @@ DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
 "g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
 "g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
+"g2.box_stage3|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=0|gen2 box stage B in three pipelined steps with valid/ready (per-vertex first/last pixel and min/max; clip and empty beside each other; operands): triangle register, two more copies, empty registered"
+"g2.box_stage3p|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=1|the same with step 1 on the port's data before the triangle register: two copies of the triangle, the latency of g2.box_stage2"
 "g2.corner_mul|g2_corner_mul|$S/g2_corner_mul.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
@@ -198,7 +204,7 @@ report() {
     IFS='|' read -r name top srcs params desc <<< "$row"
     d="$WORK/$name"
     [ -d "$d" ] || continue
-    echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed 's/|/\\|/g') |"
+    echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed -e "s|$ROOT/||g" -e 's/|/\\|/g') |"
   done
   echo
   echo "Default configuration (S = 8, coordinate 16, box 14), $(yosys -V 2>/dev/null | cut -d' ' -f1-2),"
@@ -266,6 +272,14 @@ if [ "$CHECK" = 1 ]; then
         { echo "$ME: g2_lane_tb (PreIter=$pre) found differences" >&2; exit 1; }
     done
   done
+  rm -rf "$WORK/check_box"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv" \
+    --top-module g2_box_check_tb -Mdir "$WORK/check_box" >"$WORK/check_box.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_box_check_tb failed ($WORK/check_box.log)" >&2; exit 1; }
+  out="$("$WORK/check_box/Vg2_box_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_box_check_tb:"
+  echo "$out" | grep -q "g2_box_check_tb: 0 errors" || { echo "$ME: g2_box_check_tb found differences" >&2; exit 1; }
   exit 0
 fi
 
