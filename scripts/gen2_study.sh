@@ -13,7 +13,11 @@
 #       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; then
 #       scripts/gen2_study/g2_walk_check_tb.sv: g2_walk_slice as a whole against rtl/'s walk stage
 #       and span port on the same random hand-offs and sink pattern (spans equal; one cycle later
-#       each with an always-ready sink); exit 1 on a difference)
+#       each with an always-ready sink); then
+#       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
+#       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
+#       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
+#       cycles per edge and per triangle of both; exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -63,6 +67,8 @@ mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
 WORK="$(cd "$WORK" && pwd)"
 R="$ROOT/rtl"
 S="$ROOT/scripts/gen2_study"
+TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
+LANE_SCENES="${LANE_SCENES:-builtin:highpoly-far builtin:mixed}"
 PKG="$WORK/trirast_pkg.sv"
 
 # name|top|sources (after the package)|chparam NAME=VALUE,...|description
@@ -84,6 +90,9 @@ DESIGNS=(
 "g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"
 "g1.adder_divider|trirast_adder_divider|$R/trirast_adder_divider.sv||gen1 adder divider alone (restoring, 1 quotient bit per cycle, 50-bit numerator)"
 "g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
+"g2.lane|g2_lane|$S/g2_lane.sv||redesigned lane with its normalizer (step mode; registered operation, set-up cycle, 25-bit remainder arithmetic), one per edge"
+"g2.lanes|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=1|3 redesigned lanes with normalizers as in the setup stage (step mode, adaptive divider)"
+"g2.lanes_fixed|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=0|the same with the fixed divider (m = Q: no numerator shifter)"
 "g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
 "g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
 "g2.walker_cs|g2_walker_cs|$S/g2_walker_cs.sv||carry-select edge walker, parallel leave test, bound register"
@@ -221,6 +230,35 @@ if [ "$CHECK" = 1 ]; then
   echo "$out" | grep "g2_walk_check_tb:"
   echo "$out" | grep -q "g2_walk_check_tb: 0 errors" ||
     { echo "$ME: g2_walk_check_tb found differences" >&2; exit 1; }
+  # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
+  # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
+  rm -rf "$WORK/check_lane"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$R/trirast_adder_divider.sv" "$R/trirast_edge_lane.sv" "$R/trirast_edge_normalizer.sv" \
+    "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv" \
+    --top-module g2_lane_tb -Mdir "$WORK/check_lane" >"$WORK/check_lane.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_lane_tb failed ($WORK/check_lane.log)" >&2; exit 1; }
+  runs=("")
+  if [ -x "$TRIRAST" ]; then
+    for sc in $LANE_SCENES; do
+      tri="$WORK/lane_${sc#builtin:}.tri"; edges="$WORK/lane_${sc#builtin:}.edges"
+      SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$sc" \
+        --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/lane_export.log" ||
+        { echo "$ME: $TRIRAST --export-tris on $sc failed ($WORK/lane_export.log)" >&2; exit 1; }
+      python3 "$S/lane_edges.py" "$tri" "$edges" 2>/dev/null ||
+        { echo "$ME: scripts/gen2_study/lane_edges.py failed on $tri" >&2; exit 1; }
+      runs+=("+edges=$edges")
+    done
+  else
+    echo "$ME: $TRIRAST not found: the lane check runs on random edges only (set TRIRAST)" >&2
+  fi
+  for r in "${runs[@]}"; do
+    # shellcheck disable=SC2086
+    out="$("$WORK/check_lane/Vg2_lane_tb" $r 2>&1)" || true
+    if [ -n "$r" ]; then echo "$out" | grep "g2_lane_tb:" | grep -v "random and hard"
+    else echo "$out" | grep "g2_lane_tb:"; fi
+    echo "$out" | grep -q "g2_lane_tb: 0 errors" || { echo "$ME: g2_lane_tb found differences" >&2; exit 1; }
+  done
   exit 0
 fi
 
