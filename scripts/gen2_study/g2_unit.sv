@@ -8,9 +8,10 @@
 //       as g2_box_stage.sv with Split = 0); an empty box retires here (box_retire_o)
 //   [C] corner-stage register (tag, box, vertices, A, B, bias); corner values E_L per edge:
 //       CornerForm 0: g2_corner_mul (DSP products, combinational: no extra cycle);
-//       CornerForm 1: g2_corner_msb (MSB-first digit-serial, DigitBits 4): 1 + ceil(bits / 4)
-//       cycles for E_L, then, for a box that goes to the lanes, as many again for E_R (the same
-//       unit started at x1 = x0 + Xmax; E_L waits in a register meanwhile).
+//       CornerForm 1: g2_corner_msb (MSB-first digit-serial, DigitBits 4), started as the
+//       triangle enters C: C holds it ceil(bits / 4) + 1 cycles for E_L (bits as the prototype's
+//       header says); a box for the lanes then runs again, 1 + ceil(bits' / 4) more cycles, for
+//       E_R (the same unit started at x1 = x0 + Xmax; E_L waits in a register meanwhile).
 //       E_R = E_L + (A * Xmax) << F (CornerForm 0: one 25 x 14 product per edge, a DSP on xc7).
 //       The 2x2 direct test (g2_box2x2, 50-bit) reads E_L, a = A << F, b = B << F.
 //   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
@@ -169,27 +170,33 @@ module g2_unit #(
     end
     assign c_ready = 1'b1;
   end else begin : g_msb
-    // Digit-serial: run 0 forms E_L at x0 (started the cycle after C loads); a box for the lanes
-    // then runs again at x1 = x0 + Xmax for E_R, with E_L held in el_q.
-    logic start_q, run_q, second_q, busy;
+    // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
+    // (its operands |cx0 - vx|, |cy0 - vy| from B's box, as g2_box_stage.sv forms them into the
+    // corner stage's register), and iterates with A, B, bias from C's register. A box for the
+    // lanes then runs again from C's register at x1 = x0 + Xmax for E_R, E_L held in el_q.
+    logic start2_q, run_q, second_q, busy, start, done;
     logic [3*EB-1:0] acc, el_q;
-    logic [PB-1:0] xs;
-    logic done;
-    assign xs = second_q ? c_x0_q + PB'(c_xmax_q) : c_x0_q;
+    logic [3*P-1:0] s_vx, s_vy;
+    logic [PB-1:0] s_x0, s_y0;
+    assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
+    assign s_vx  = start2_q ? c_vx_q : b_vx_q;
+    assign s_vy  = start2_q ? c_vy_q : b_vy_q;
+    assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
+    assign s_y0  = start2_q ? c_y0_q : PB'(fy);
     g2_corner_msb #(.DigitBits (4)) u_corner (
-      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start_q),
-      .vx_i (c_vx_q), .vy_i (c_vy_q), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
-      .x0_i (xs), .y0_i (c_y0_q), .busy_o (busy), .el_o (acc));
-    assign done = run_q && !start_q && !busy;   // the current run's result is in acc
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
+      .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
+      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc));
+    assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        start_q <= 1'b0;  run_q <= 1'b0;  second_q <= 1'b0;
+        start2_q <= 1'b0;  run_q <= 1'b0;  second_q <= 1'b0;
       end else begin
-        start_q <= 1'b0;
+        start2_q <= 1'b0;
         if (b_take) begin
-          start_q <= 1'b1;  run_q <= 1'b1;  second_q <= 1'b0;
+          run_q <= 1'b1;  second_q <= 1'b0;
         end else if (done && !second_q && !c_tiny) begin
-          start_q <= 1'b1;  second_q <= 1'b1;
+          start2_q <= 1'b1;  second_q <= 1'b1;
         end else if (c_move) begin
           run_q <= 1'b0;
         end
