@@ -102,8 +102,8 @@ DESIGNS=(
 "g2.walk_fifo|g2_walk_slice|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
 "g2.box2x2_w50|g2_box2x2|$S/g2_box2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
 "g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
-"g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv|CornerForm=0|whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
-"g2.unit_msb16|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv|CornerForm=1|the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
+"g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
+"g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
 )
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
