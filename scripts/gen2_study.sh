@@ -263,7 +263,8 @@ if [ "$CHECK" = 1 ]; then
   done
   # The whole-unit prototype g2_unit (both corner forms) against gen1's trirast_top on the scenes
   # UNIT_SCENES (default builtin:mixed builtin:highpoly-far, exported by TRIRAST; skipped when it
-  # is missing): spans equal span for span, and both units' cycles.
+  # is missing): spans equal span for span (sinks always ready, then both ready in two cycles of
+  # three), and both units' cycles.
   UNIT_SCENES="${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}"
   if [ -x "$TRIRAST" ]; then
     gen1_srcs=""
@@ -288,11 +289,13 @@ if [ "$CHECK" = 1 ]; then
           python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
             { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
         fi
-        # shellcheck disable=SC2046
-        out="$("$WORK/check_unit$form/Vg2_unit_tb" +tris="$hex" $(cat "$hex.args") 2>&1)" || true
-        echo "$out" | grep "g2_unit_tb:" | sed "s/^g2_unit_tb:/g2_unit_tb (CornerForm $form, $sc):/"
-        echo "$out" | grep -q "g2_unit_tb: 0 errors" ||
-          { echo "$ME: g2_unit_tb found differences (CornerForm $form, $sc)" >&2; exit 1; }
+        for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
+          # shellcheck disable=SC2046,SC2086
+          out="$("$WORK/check_unit$form/Vg2_unit_tb" +tris="$hex" $(cat "$hex.args") $st 2>&1)" || true
+          echo "$out" | grep "g2_unit_tb:" | sed "s/^g2_unit_tb:/g2_unit_tb (CornerForm $form, $sc):/"
+          echo "$out" | grep -q "g2_unit_tb: 0 errors" ||
+            { echo "$ME: g2_unit_tb found differences (CornerForm $form, $sc $st)" >&2; exit 1; }
+        done
       done
     done
   else

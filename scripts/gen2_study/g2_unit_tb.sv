@@ -2,8 +2,8 @@
 // generation's unit rtl/trirast_top.sv (configured as dv/verilator/cycle_loop.hpp configures it for
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
 // divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
-// +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready; the two
-// span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
+// +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready (+stall:
+// both sinks ready in two cycles of three, the same pattern); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
 // Prints "g2_unit_tb: N errors" (0 = the sequences are equal).
@@ -20,6 +20,8 @@ module g2_unit_tb;
 
   logic [TriBits-1:0] tris [MaxTris];
   int n, w, h;
+  bit stall;
+  logic sready;
   string path;
 
   logic clk = 1'b0;
@@ -29,6 +31,7 @@ module g2_unit_tb;
   logic [TriBits-1:0] t1, t2;
   assign t1 = tris[(i1 < n) ? i1 : 0];
   assign t2 = tris[(i2 < n) ? i2 : 0];
+  assign sready = !stall || (cyc % 3 != 2);
 
   // ---- gen1 ----
   logic v1, r1, sv1, retire1, walk_busy1;
@@ -48,7 +51,7 @@ module g2_unit_tb;
     .tri_vx_i (t1[0 +: 3*P]), .tri_vy_i (t1[3*P +: 3*P]),
     .tri_a_i (t1[6*P +: 3*CB]), .tri_b_i (t1[6*P+3*CB +: 3*CB]),
     .tri_c_i (t1[6*P+6*CB +: 3*EB]), .tri_bias_i (t1[6*P+6*CB+3*EB +: 3]),
-    .span_valid_o (sv1), .span_ready_i (1'b1), .span_tag_o (stag1), .span_y_o (sy1),
+    .span_valid_o (sv1), .span_ready_i (sready), .span_tag_o (stag1), .span_y_o (sy1),
     .span_x_begin_o (sxb1), .span_x_end_o (sxe1),
     .box_retire_o (retire1), .box_retire_tag_o (rtag1), .walk_busy_o (walk_busy1),
     .walk_stall_o (), .walk_last_o (), .walk_retire_o (), .walk_tag_o (),
@@ -69,7 +72,7 @@ module g2_unit_tb;
     .tri_vx_i (t2[0 +: 3*P]), .tri_vy_i (t2[3*P +: 3*P]),
     .tri_a_i (t2[6*P +: 3*CB]), .tri_b_i (t2[6*P+3*CB +: 3*CB]),
     .tri_c_i (t2[6*P+6*CB +: 3*EB]), .tri_bias_i (t2[6*P+6*CB+3*EB +: 3]),
-    .span_valid_o (sv2), .span_ready_i (1'b1), .span_tag_o (stag2), .span_y_o (sy2),
+    .span_valid_o (sv2), .span_ready_i (sready), .span_tag_o (stag2), .span_y_o (sy2),
     .span_x_begin_o (sxb2), .span_x_end_o (sxe2),
     .box_retire_o (retire2), .box_retire_tag_o (rtag2), .busy_o (busy2));
 
@@ -83,8 +86,8 @@ module g2_unit_tb;
     if (rst_n) begin
       if (v1 && r1) i1 <= i1 + 1;
       if (v2 && r2) i2 <= i2 + 1;
-      if (sv1) q1.push_back({stag1, sy1, sxb1, sxe1});
-      if (sv2) q2.push_back({stag2, sy2, sxb2, sxe2});
+      if (sv1 && sready) q1.push_back({stag1, sy1, sxb1, sxe1});
+      if (sv2 && sready) q2.push_back({stag2, sy2, sxb2, sxe2});
       if (retire1) retires1++;
       if (retire2) retires2++;
       if (idle1 && end1 < 0) end1 = cyc;
@@ -104,6 +107,7 @@ module g2_unit_tb;
       $display("g2_unit_tb: %0d triangles, more than %0d", n, MaxTris);
       $finish;
     end
+    stall = $test$plusargs("stall");
     $readmemh(path, tris, 0, n - 1);
     i1 = 0;
     i2 = 0;
@@ -139,7 +143,9 @@ module g2_unit_tb;
       $display("g2_unit_tb: empty boxes retired: gen1 %0d, gen2 %0d", retires1, retires2);
       errors++;
     end
-    $display("g2_unit_tb: %0d triangles, %0d spans, %0d empty boxes; cycles gen1 %0d (%.2f per triangle), gen2 %0d (%.2f per triangle)",
+    if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
+    else $write("g2_unit_tb: ");
+    $display("%0d triangles, %0d spans, %0d empty boxes; cycles gen1 %0d (%.2f per triangle), gen2 %0d (%.2f per triangle)",
              n, q1.size(), retires1, end1, real'(end1) / n, end2, real'(end2) / n);
     $display("g2_unit_tb: %0d errors", errors);
     $finish;
