@@ -20,8 +20,10 @@
 #       cycles per edge and per triangle of both, for g2_lane's PreIter = 0 and 1; then
 #       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
 #       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
-#       random triangles of the box's hard cases under random offer and stall patterns; exit 1 on a
-#       difference)
+#       random triangles of the box's hard cases under random offer and stall patterns; then
+#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms)
+#       against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
+#       is missing), spans equal span for span, both units' cycles; exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -109,6 +111,8 @@ DESIGNS=(
 "g2.walk_fifo|g2_walk_slice|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
 "g2.box2x2_w50|g2_box2x2|$S/g2_box2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
 "g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
+"g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
+"g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
 )
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
@@ -280,6 +284,46 @@ if [ "$CHECK" = 1 ]; then
   out="$("$WORK/check_box/Vg2_box_check_tb" 2>&1)" || true
   echo "$out" | grep "g2_box_check_tb:"
   echo "$out" | grep -q "g2_box_check_tb: 0 errors" || { echo "$ME: g2_box_check_tb found differences" >&2; exit 1; }
+  # The whole-unit prototype g2_unit (both corner forms) against gen1's trirast_top on the scenes
+  # UNIT_SCENES (default builtin:mixed builtin:highpoly-far, exported by TRIRAST; skipped when it
+  # is missing): spans equal span for span (sinks always ready, then both ready in two cycles of
+  # three), and both units' cycles.
+  UNIT_SCENES="${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}"
+  if [ -x "$TRIRAST" ]; then
+    gen1_srcs=""
+    while read -r f; do
+      case "$f" in trirast_pkg.sv) ;; trirast_*.sv) gen1_srcs="$gen1_srcs $R/$f" ;; esac
+    done < "$R/trirast_improved.f"
+    for form in 0 1; do
+      rm -rf "$WORK/check_unit$form"
+      # shellcheck disable=SC2086
+      verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" -DG2_CORNER_FORM=$form \
+        "$PKG" $gen1_srcs "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" \
+        "$S/g2_lane.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" \
+        "$S/g2_unit.sv" "$S/g2_unit_tb.sv" --top-module g2_unit_tb -Mdir "$WORK/check_unit$form" \
+        >"$WORK/check_unit$form.log" 2>&1 ||
+        { echo "$ME: Verilator build of g2_unit_tb failed ($WORK/check_unit$form.log)" >&2; exit 1; }
+      for sc in $UNIT_SCENES; do
+        tri="$WORK/unit_${sc#builtin:}.tri"; hex="$WORK/unit_${sc#builtin:}.hex"
+        if [ "$form" = 0 ]; then
+          SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$sc" \
+            --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/unit_export.log" ||
+            { echo "$ME: $TRIRAST --export-tris on $sc failed ($WORK/unit_export.log)" >&2; exit 1; }
+          python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
+            { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
+        fi
+        for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
+          # shellcheck disable=SC2046,SC2086
+          out="$("$WORK/check_unit$form/Vg2_unit_tb" +tris="$hex" $(cat "$hex.args") $st 2>&1)" || true
+          echo "$out" | grep "g2_unit_tb:" | sed "s/^g2_unit_tb:/g2_unit_tb (CornerForm $form, $sc):/"
+          echo "$out" | grep -q "g2_unit_tb: 0 errors" ||
+            { echo "$ME: g2_unit_tb found differences (CornerForm $form, $sc $st)" >&2; exit 1; }
+        done
+      done
+    done
+  else
+    echo "$ME: $TRIRAST not found: the whole-unit check is skipped (set TRIRAST)" >&2
+  fi
   exit 0
 fi
 

@@ -1,0 +1,325 @@
+// gen2 study prototype (not a unit; scripts/gen2_study.sh, docs/gen2-design.md section 1,
+// "Whole-unit prototype"): the first whole second-generation improved unit, built from the
+// study's prototypes. N = 1, boundary mode step, adaptive divider (build choices, not cfg ports).
+// Triangle port and span port as rtl/trirast_top.sv's (tri_c_i is ignored: the corner values are
+// vertex-relative, E = A*(cx - vx) + B*(cy - vy), docs/gen2-design.md section 2).
+//
+//   [B] triangle register (tag, vertices, A, B, bias); box, empty test (combinational, one cycle,
+//       as g2_box_stage.sv with Split = 0); an empty box retires here (box_retire_o)
+//   [C] corner-stage register (tag, box, vertices, A, B, bias); corner values E_L per edge:
+//       CornerForm 0: g2_corner_mul (DSP products, combinational: no extra cycle);
+//       CornerForm 1: g2_corner_msb (MSB-first digit-serial, DigitBits 4), started as the
+//       triangle enters C: C holds it ceil(bits / 4) + 1 cycles for E_L (bits as the prototype's
+//       header says); a box for the lanes then runs again, 1 + ceil(bits' / 4) more cycles, for
+//       E_R (the same unit started at x1 = x0 + Xmax; E_L waits in a register meanwhile).
+//       E_R = E_L + (A * Xmax) << F (CornerForm 0: one 25 x 14 product per edge, a DSP on xc7).
+//       The 2x2 direct test (g2_box2x2, 50-bit) reads E_L, a = A << F, b = B << F.
+//   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
+//       pixel centres loads the three redesigned lanes (g2_lane.sv, as g2_lanes.sv: step, adaptive) in
+//       the same cycle; the job is handed off when the lanes are done (tiny: at once).
+//   [W] the retimed walk stage with the registered push and the span FIFO (g2_unit_walk.sv: the
+//       walk slice plus the tiny job's rows), span FIFO -> span port.
+// Order: every job (lane or tiny) passes through L and W in acceptance order.
+module g2_unit #(
+  parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
+  parameter int CornerForm = 0   // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
+  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
+  input  logic                                  tri_valid_i,
+  output logic                                  tri_ready_o,
+  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E)
+  input  logic [2:0]                            tri_bias_i,
+  output logic                                  span_valid_o,
+  input  logic                                  span_ready_i,
+  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
+  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
+  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
+  output logic [trirast_pkg::PixBits:0]         span_x_end_o,
+  output logic                                  box_retire_o,      // an empty box retires (B)
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  output logic                                  busy_o             // a triangle is in the unit
+);
+  localparam int F  = trirast_pkg::FracBits;
+  localparam int P  = trirast_pkg::VertexBits;
+  localparam int CB = trirast_pkg::CoefBits;
+  localparam int EB = trirast_pkg::EdgeBits;
+  localparam int PB = trirast_pkg::PixBits;
+  localparam int BB = trirast_pkg::BoxBits;
+  localparam int TB = trirast_pkg::TagBits;
+  localparam int SB = trirast_pkg::StepBits;
+  localparam int QB = trirast_pkg::QuotBits;
+  localparam int RB = trirast_pkg::RemBits;
+  localparam int WB = trirast_pkg::RowBits;
+  localparam int XB = trirast_pkg::WalkerXBits;
+  localparam int WBits = P + 2;
+  localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);
+
+  // ---------------------------------------------------------------- B: triangle register, box
+  logic b_full_q;
+  logic [TB-1:0] b_tag_q;
+  logic [3*P-1:0] b_vx_q, b_vy_q;
+  logic [3*CB-1:0] b_a_q, b_b_q;
+  logic [2:0] b_bias_q;
+  logic b_empty, b_take, b_retire, c_free;
+
+  function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
+    coord = {{2{v[k*P+P-1]}}, v[k*P +: P]};
+  endfunction
+  function automatic logic signed [WBits-1:0] min3(input logic [3*P-1:0] v);
+    logic signed [WBits-1:0] m;
+    m = coord(v, 0);
+    if (coord(v, 1) < m) m = coord(v, 1);
+    if (coord(v, 2) < m) m = coord(v, 2);
+    min3 = m;
+  endfunction
+  function automatic logic signed [WBits-1:0] max3(input logic [3*P-1:0] v);
+    logic signed [WBits-1:0] m;
+    m = coord(v, 0);
+    if (coord(v, 1) > m) m = coord(v, 1);
+    if (coord(v, 2) > m) m = coord(v, 2);
+    max3 = m;
+  endfunction
+
+  logic signed [WBits-1:0] fx, lx, fy, ly;
+  always_comb begin
+    fx = -((Half - min3(b_vx_q)) >>> F);
+    if (fx < 0) fx = '0;
+    lx = (max3(b_vx_q) - Half) >>> F;
+    if (lx > $signed(WBits'(cfg_vp_xmax_i))) lx = $signed(WBits'(cfg_vp_xmax_i));
+    fy = -((Half - min3(b_vy_q)) >>> F);
+    if (fy < 0) fy = '0;
+    ly = (max3(b_vy_q) - Half) >>> F;
+    if (ly > $signed(WBits'(cfg_vp_ymax_i))) ly = $signed(WBits'(cfg_vp_ymax_i));
+    b_empty = (fx > lx) || (fy > ly);
+  end
+
+  assign b_retire = b_full_q && b_empty;
+  assign b_take   = b_full_q && !b_empty && c_free;
+  assign tri_ready_o = !b_full_q || b_retire || b_take;
+  assign box_retire_o = b_retire;
+  assign box_retire_tag_o = b_tag_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) b_full_q <= 1'b0;
+    else if (tri_valid_i && tri_ready_o) b_full_q <= 1'b1;
+    else if (b_retire || b_take) b_full_q <= 1'b0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (tri_valid_i && tri_ready_o) begin
+      b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
+      b_a_q <= tri_a_i;  b_b_q <= tri_b_i;  b_bias_q <= tri_bias_i;
+    end
+  end
+
+  // ---------------------------------------------------------------- C: corner values
+  logic c_full_q;
+  logic [TB-1:0] c_tag_q;
+  logic [PB-1:0] c_x0_q, c_y0_q;
+  logic [BB-1:0] c_xmax_q, c_ymax_q;
+  logic [3*P-1:0] c_vx_q, c_vy_q;
+  logic [3*CB-1:0] c_a_q, c_b_q;
+  logic [2:0] c_bias_q;
+  logic c_tiny, c_ready, c_move, l_free;
+  logic [3*EB-1:0] el, er;
+
+  assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
+  assign c_free = !c_full_q || c_move;
+  assign c_move = c_full_q && c_ready && l_free;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) c_full_q <= 1'b0;
+    else if (b_take) c_full_q <= 1'b1;
+    else if (c_move) c_full_q <= 1'b0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (b_take) begin
+      c_tag_q  <= b_tag_q;
+      c_x0_q   <= PB'(fx);
+      c_y0_q   <= PB'(fy);
+      c_xmax_q <= BB'(lx - fx);
+      c_ymax_q <= BB'(ly - fy);
+      c_vx_q   <= b_vx_q;
+      c_vy_q   <= b_vy_q;
+      c_a_q    <= b_a_q;
+      c_b_q    <= b_b_q;
+      c_bias_q <= b_bias_q;
+    end
+  end
+
+  if (CornerForm == 0) begin : g_mul
+    // E_L from the products in one (combinational) step; E_R = E_L + (A * Xmax) << F.
+    g2_corner_mul u_corner (
+      .vx_i (c_vx_q), .vy_i (c_vy_q), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
+      .x0_i (c_x0_q), .y0_i (c_y0_q), .el_o (el));
+    for (genvar k = 0; k < 3; k++) begin : g_er
+      logic signed [CB-1:0] ak;
+      logic signed [BB:0] xm;
+      logic signed [EB-1:0] ax;
+      assign ak = $signed(c_a_q[k*CB +: CB]);
+      assign xm = $signed({1'b0, c_xmax_q});
+      assign ax = EB'(ak * xm);
+      assign er[k*EB +: EB] = el[k*EB +: EB] + (ax <<< F);
+    end
+    assign c_ready = 1'b1;
+  end else begin : g_msb
+    // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
+    // (its operands |cx0 - vx|, |cy0 - vy| from B's box, as g2_box_stage.sv forms them into the
+    // corner stage's register), and iterates with A, B, bias from C's register. A box for the
+    // lanes then runs again from C's register at x1 = x0 + Xmax for E_R, E_L held in el_q.
+    logic start2_q, run_q, second_q, busy, start, done;
+    logic [3*EB-1:0] acc, el_q;
+    logic [3*P-1:0] s_vx, s_vy;
+    logic [PB-1:0] s_x0, s_y0;
+    assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
+    assign s_vx  = start2_q ? c_vx_q : b_vx_q;
+    assign s_vy  = start2_q ? c_vy_q : b_vy_q;
+    assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
+    assign s_y0  = start2_q ? c_y0_q : PB'(fy);
+    g2_corner_msb #(.DigitBits (4)) u_corner (
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
+      .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
+      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc));
+    assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        start2_q <= 1'b0;  run_q <= 1'b0;  second_q <= 1'b0;
+      end else begin
+        start2_q <= 1'b0;
+        if (b_take) begin
+          run_q <= 1'b1;  second_q <= 1'b0;
+        end else if (done && !second_q && !c_tiny) begin
+          start2_q <= 1'b1;  second_q <= 1'b1;
+        end else if (c_move) begin
+          run_q <= 1'b0;
+        end
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (done && !second_q) el_q <= acc;
+    end
+    assign el = second_q ? el_q : acc;
+    assign er = acc;
+    assign c_ready = done && (second_q || c_tiny);
+  end
+
+  // The direct 2x2 test (box-relative: x0 = y0 = 0).
+  logic [3*EB-1:0] a_step, b_step;
+  for (genvar k = 0; k < 3; k++) begin : g_step
+    assign a_step[k*EB +: EB] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
+    assign b_step[k*EB +: EB] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+  end
+  logic [1:0] t_valid;
+  logic [2*PB-1:0] t_xb;
+  logic [2*(PB+1)-1:0] t_xe;
+  /* verilator lint_off PINCONNECTEMPTY */
+  g2_box2x2 #(.W (EB)) u_box2x2 (
+    .el_i (el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
+    .x0_i ('0), .y0_i ('0), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
+  /* verilator lint_on PINCONNECTEMPTY */
+
+  // ---------------------------------------------------------------- L: job register, lanes
+  logic l_full_q, l_tiny_q;
+  logic [TB-1:0] l_tag_q;
+  logic [PB-1:0] l_x0_q, l_y0_q;
+  logic [BB-1:0] l_xmax_q, l_ymax_q;
+  logic [1:0] l_tvalid_q, l_tbegin_q, l_tend1_q;
+  logic lane_load, hand_valid, hand_ready;
+  logic [2:0] lane_done;
+
+  assign l_free    = !l_full_q || (hand_valid && hand_ready);
+  assign lane_load = c_move && !c_tiny;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) l_full_q <= 1'b0;
+    else if (c_move) l_full_q <= 1'b1;
+    else if (hand_valid && hand_ready) l_full_q <= 1'b0;
+  end
+  always_ff @(posedge clk_i) begin
+    if (c_move) begin
+      l_tag_q    <= c_tag_q;
+      l_x0_q     <= c_x0_q;
+      l_y0_q     <= c_y0_q;
+      l_xmax_q   <= c_xmax_q;
+      l_ymax_q   <= c_ymax_q;
+      l_tiny_q   <= c_tiny;
+      l_tvalid_q <= t_valid;
+      l_tbegin_q <= {t_xb[PB], t_xb[0]};
+      l_tend1_q  <= {t_xe[PB+2], t_xe[1]};   // x_end is 1 or 2: bit 1 says 2
+    end
+  end
+
+  logic [2:0] hand_mirror, hand_dir_down, hand_ssat, hand_enters;
+  logic [3*SB-1:0] hand_d;
+  logic [3*QB-1:0] hand_qs;
+  logic [3*RB-1:0] hand_rs, hand_entry_e;
+  logic [3*WB-1:0] hand_j_entry;
+  logic [5:0] hand_entry_state;
+  logic [3*XB-1:0] hand_entry_x;
+  // The three redesigned lanes as g2_lanes.sv connects them, except for the box: the lanes read
+  // Xmax, Ymax from the cycle after the load on, and the job register L holds them (in the load
+  // cycle L may still hold the job being handed off, whose entry X' reads its own Xmax); the
+  // iteration count m = bits(Xmax) + 1 (adaptive) is registered at the load from C.
+  localparam int IterBits = $clog2(QB + 1);
+  function automatic logic [IterBits-1:0] bits_plus_one(input logic [BB-1:0] v);
+    logic [IterBits-1:0] nb;
+    nb = IterBits'(1);
+    for (int i = 0; i < BB; i++) begin
+      if (v[i]) nb = IterBits'(i + 1);
+    end
+    bits_plus_one = nb + 1'b1;
+  endfunction
+  logic [IterBits-1:0] m_q;
+  always_ff @(posedge clk_i) begin
+    if (lane_load) m_q <= bits_plus_one(c_xmax_q);
+  end
+  for (genvar k = 0; k < 3; k++) begin : g_edge
+    /* verilator lint_off PINCONNECTEMPTY */
+    g2_lane u_lane (
+      .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
+      .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
+      .el_i (el[k*EB +: EB]), .er_i (er[k*EB +: EB]),
+      .xmax_i (l_xmax_q), .ymax_i (l_ymax_q),
+      .busy_o (), .done_o (lane_done[k]),
+      .horiz_o (), .mirror_o (hand_mirror[k]), .dir_down_o (hand_dir_down[k]),
+      .d_o (hand_d[k*SB +: SB]), .qs_o (hand_qs[k*QB +: QB]), .rs_o (hand_rs[k*RB +: RB]),
+      .ssat_o (hand_ssat[k]), .enters_o (hand_enters[k]), .j_entry_o (hand_j_entry[k*WB +: WB]),
+      .entry_state_o (hand_entry_state[2*k +: 2]), .entry_x_o (hand_entry_x[k*XB +: XB]),
+      .entry_e_o (hand_entry_e[k*RB +: RB]));
+    /* verilator lint_on PINCONNECTEMPTY */
+  end
+
+  assign hand_valid = l_full_q && (l_tiny_q || (&lane_done));
+
+  // ---------------------------------------------------------------- W: walk stage, FIFO
+  logic walk_busy;
+  logic [TB+3*PB:0] span;
+  g2_unit_walk #(.FifoDepth (FifoDepth)) u_walk (
+    .clk_i (clk_i), .rst_ni (rst_ni),
+    .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
+    .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),
+    .hand_xmax_i (l_xmax_q), .hand_ymax_i (l_ymax_q),
+    .hand_mirror_i (hand_mirror), .hand_dir_down_i (hand_dir_down),
+    .hand_d_i (hand_d), .hand_qs_i (hand_qs), .hand_rs_i (hand_rs), .hand_ssat_i (hand_ssat),
+    .hand_enters_i (hand_enters), .hand_j_entry_i (hand_j_entry),
+    .hand_entry_state_i (hand_entry_state), .hand_entry_x_i (hand_entry_x),
+    .hand_entry_e_i (hand_entry_e),
+    .hand_tiny_i (l_tiny_q), .hand_tiny_valid_i (l_tvalid_q),
+    .hand_tiny_begin_i (l_tbegin_q), .hand_tiny_end1_i (l_tend1_q),
+    .span_ready_i (span_ready_i), .span_valid_o (span_valid_o), .span_o (span),
+    .busy_o (walk_busy));
+
+  assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = span;
+  assign busy_o = b_full_q || c_full_q || l_full_q || walk_busy || span_valid_o;
+
+  logic unused;
+  assign unused = ^tri_c_i;
+
+endmodule
