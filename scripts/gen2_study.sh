@@ -11,7 +11,8 @@
 #       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
 #       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
 #       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; exit 1 on a
-#       difference)
+#       difference; then scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first units, pipelined
+#       g2_corner_msb16p included, on full-width operands with the extremes, and its cycle count)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -77,6 +78,8 @@ DESIGNS=(
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
 "g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
 "g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
+"g2.corner_msb16p|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=0|MSB-first radix 16 pipelined: +-A, 3A, -+B, 3B registered at the start, s = A*digit + B*digit registered, E_L only, 1 + ceil(bits/4) + 1 cycles"
+"g2.corner_msb16p2|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=1|the same with the digit select registered too, 1 + ceil(bits/4) + 2 cycles"
 "g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
 "g1.lanes|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv||gen1 3 normalizers + 3 lanes as in the setup stage (fed by the interface's outputs)"
 "g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"
@@ -207,6 +210,17 @@ if [ "$CHECK" = 1 ]; then
   out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
   echo "$out" | grep "g2_check_tb:"
   echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+  # The MSB-first corner units on independent full-width operands with the extremes, and
+  # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
+  rm -rf "$WORK/check_corner"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$S/g2_corner_msb.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv" \
+    --top-module g2_corner_check_tb -Mdir "$WORK/check_corner" >"$WORK/check_corner.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_corner_check_tb failed ($WORK/check_corner.log)" >&2; exit 1; }
+  out="$("$WORK/check_corner/Vg2_corner_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_corner_check_tb:"
+  echo "$out" | grep -q "g2_corner_check_tb: 0 errors" ||
+    { echo "$ME: g2_corner_check_tb found differences" >&2; exit 1; }
   exit 0
 fi
 

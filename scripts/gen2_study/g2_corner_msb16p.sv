@@ -1,0 +1,190 @@
+// gen2 study prototype (not a unit; scripts/gen2_study.sh): g2_corner_msb's MSB-first radix-16
+// E_L (E_L = A*dxL + B*dy - bias, dxL = cx0 - vx, dy = cy0 - vy, the three edges at once),
+// pipelined for the iCE40 HX's 50 MHz target:
+//  - the multiplicands are registered at the start with the operand's sign applied, and with
+//    their multiples 3x precomputed: A' = +-A, 3A' and -B', -3B' (B' = +-B; stored negated so
+//    that the bias becomes the carry-in of a subtraction below);
+//  - a radix-16 digit d = 4*d_hi + d_lo is two radix-4 digits: A'*d = (M(d_hi) << 2) + M(d_lo) with
+//    M(.) a 4-way select of 0, A', 2A', 3A' (no adder in the select);
+//  - stage 1 per edge: s = A'*dgx - (-B'*dgy) - bias_last = A'*dgx + ~(-B'*dgy) + !bias_last
+//    (two 29-bit adders in parallel, then one 30-bit adder), into a register;
+//  - stage 2 per edge: acc = (acc << 4) + s (one 46-bit adder; the low four bits are s's).
+// RegDigit = 1 adds a register after the digit select (the counter's ND-way select of the two
+// operand digits) in front of stage 1.
+// Cycles: the start cycle, ceil(bits / 4) digit cycles (at least one; bits = the largest bit length
+// of the six magnitudes |dxL|, |dy|), then the pipeline's Depth = 1 + RegDigit cycles:
+// busy_o is high for ceil(bits / 4) + Depth cycles after the start; el_o holds the result from
+// then until the next start. A start while busy_o is high is not supported (one corner
+// computation at a time).
+module g2_corner_msb16p #(
+  parameter int RegDigit = 0
+) (
+  input  logic                                 clk_i,
+  input  logic                                 rst_ni,
+  input  logic                                 start_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]   a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]   b_i,
+  input  logic [2:0]                           bias_i,
+  input  logic [trirast_pkg::PixBits-1:0]      x0_i,
+  input  logic [trirast_pkg::PixBits-1:0]      y0_i,
+  output logic                                 busy_o,
+  output logic [3*trirast_pkg::EdgeBits-1:0]   el_o
+);
+  localparam int F = trirast_pkg::FracBits;
+  localparam int P = trirast_pkg::VertexBits;
+  localparam int CB = trirast_pkg::CoefBits;
+  localparam int EB = trirast_pkg::EdgeBits;
+  localparam int DW = P + 2;                        // cx - vx, signed
+  localparam int MW = P + 1;                        // its magnitude
+  localparam int ND = (MW + 3) / 4;                 // radix-16 digits of a magnitude
+  localparam int NB = $clog2(ND + 1);
+  localparam int KW = CB + 2;                       // +-A, +-3A, signed (|3A| <= 3 * 2^(CB-1))
+  localparam int TW = CB + 4;                       // A' * digit, signed (|15 A| < 2^(CB+3))
+  localparam int SW = CB + 5;                       // s, signed
+
+  logic signed [DW-1:0] cx0, cy0;
+  assign cx0 = $signed(DW'({x0_i, 1'b1, (F - 1)'(0)}));
+  assign cy0 = $signed(DW'({y0_i, 1'b1, (F - 1)'(0)}));
+
+  logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
+  logic [ND*4-1:0] any_mag;           // OR of all start magnitudes (for the top digit)
+  logic [ND*4-1:0] mag_k [3][2];
+
+  // Stage-1 control: the digit is valid (dv) and the last one (dl, which carries the bias).
+  logic dv, dl;
+  logic sv_q;                         // stage 2: s_q holds a digit's term
+
+  // M(d): 0, m, 2m, 3m for a radix-4 digit d (m1 = m, m3 = 3m).
+  function automatic logic signed [KW-1:0] mul4(input logic signed [KW-1:0] m1,
+                                                input logic signed [KW-1:0] m3,
+                                                input logic [1:0] d);
+    unique case (d)
+      2'd0: mul4 = '0;
+      2'd1: mul4 = m1;
+      2'd2: mul4 = m1 <<< 1;
+      default: mul4 = m3;
+    endcase
+  endfunction
+  // m * d for a radix-16 digit d: (M(d_hi) << 2) + M(d_lo).
+  function automatic logic signed [TW-1:0] mul16(input logic signed [KW-1:0] m1,
+                                                 input logic signed [KW-1:0] m3,
+                                                 input logic [3:0] d);
+    mul16 = (TW'(mul4(m1, m3, d[3:2])) <<< 2) + TW'(mul4(m1, m3, d[1:0]));
+  endfunction
+
+  for (genvar k = 0; k < 3; k++) begin : g_edge
+    logic signed [DW-1:0] dxl, dy;
+    logic [ND*4-1:0] mx_q, my_q;
+    logic signed [KW-1:0] ak, bk;
+    logic signed [KW-1:0] a1_q, a3_q, nb1_q, nb3_q;   // A', 3A', -B', -3B'
+    logic [3:0] dgx, dgy;                             // the digits stage 1 uses
+    logic signed [TW-1:0] tx, uy;
+    logic signed [SW-1:0] s_q;
+    logic signed [EB-1:0] acc_q;
+    assign dxl = cx0 - DW'($signed(vx_i[k*P +: P]));
+    assign dy  = cy0 - DW'($signed(vy_i[k*P +: P]));
+    assign ak  = KW'($signed(a_i[k*CB +: CB]));
+    assign bk  = KW'($signed(b_i[k*CB +: CB]));
+    logic [MW-1:0] amx, amy;
+    assign amx = dxl[DW-1] ? MW'(-dxl) : MW'(dxl);
+    assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
+    assign mag_k[k][0] = (ND * 4)'(amx);
+    assign mag_k[k][1] = (ND * 4)'(amy);
+
+    // Start: operand magnitudes and the signed multiplicands. (3A is written inline: as a
+    // continuous assignment of its own, Verilator 5.006 --timing evaluated it only at time 0.)
+    always_ff @(posedge clk_i) begin
+      if (start_i) begin
+        mx_q  <= mag_k[k][0];
+        my_q  <= mag_k[k][1];
+        a1_q  <= dxl[DW-1] ? -ak : ak;
+        a3_q  <= dxl[DW-1] ? -(ak + (ak <<< 1)) : ak + (ak <<< 1);
+        nb1_q <= dy[DW-1] ? bk : -bk;
+        nb3_q <= dy[DW-1] ? bk + (bk <<< 1) : -(bk + (bk <<< 1));
+      end
+    end
+
+    // The current digit of each operand: a ND-way select by the counter.
+    logic [3:0] selx, sely;
+    always_comb begin
+      selx = '0;
+      sely = '0;
+      for (int i = 0; i < ND; i++) begin
+        if (cnt_q == NB'(i + 1)) begin
+          selx = mx_q[i*4 +: 4];
+          sely = my_q[i*4 +: 4];
+        end
+      end
+    end
+    if (RegDigit != 0) begin : g_regdigit
+      logic [3:0] dgx_q, dgy_q;
+      always_ff @(posedge clk_i) begin
+        dgx_q <= selx;
+        dgy_q <= sely;
+      end
+      assign dgx = dgx_q;
+      assign dgy = dgy_q;
+    end else begin : g_nodigitreg
+      assign dgx = selx;
+      assign dgy = sely;
+    end
+
+    // Stage 1: s = A'*dgx + B'*dgy - (last ? bias : 0) = tx + ~uy + cin, uy = -B'*dgy.
+    assign tx = mul16(a1_q, a3_q, dgx);
+    assign uy = mul16(nb1_q, nb3_q, dgy);
+    logic cin;
+    assign cin = !(dl && bias_i[k]);
+    always_ff @(posedge clk_i) begin
+      if (dv) s_q <= SW'(tx) + ~SW'(uy) + SW'(cin);
+    end
+
+    // Stage 2: acc = (acc << 4) + s; the low four bits are s's.
+    always_ff @(posedge clk_i) begin
+      if (start_i) acc_q <= '0;
+      else if (sv_q) acc_q <= {acc_q[EB-5:0] + (EB - 4)'(s_q >>> 4), s_q[3:0]};
+    end
+    assign el_o[k*EB +: EB] = acc_q;
+  end
+
+  // The number of digits of the largest operand (priority encoder).
+  always_comb begin
+    any_mag = mag_k[0][0] | mag_k[0][1] | mag_k[1][0] | mag_k[1][1] | mag_k[2][0] | mag_k[2][1];
+    cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
+    if (start_i) begin
+      cnt_d = NB'(1);
+      for (int i = 1; i < ND; i++) begin
+        if (any_mag[i*4 +: 4] != '0) cnt_d = NB'(i + 1);
+      end
+    end
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) cnt_q <= '0;
+    else cnt_q <= cnt_d;
+  end
+
+  if (RegDigit != 0) begin : g_regctl
+    logic dv_q, dl_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        dv_q <= 1'b0;
+        dl_q <= 1'b0;
+      end else begin
+        dv_q <= cnt_q != '0;
+        dl_q <= cnt_q == NB'(1);
+      end
+    end
+    assign dv = dv_q;
+    assign dl = dl_q;
+  end else begin : g_ctl
+    assign dv = cnt_q != '0;
+    assign dl = cnt_q == NB'(1);
+  end
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) sv_q <= 1'b0;
+    else sv_q <= dv;
+  end
+  assign busy_o = (cnt_q != '0) || dv || sv_q;
+
+endmodule
