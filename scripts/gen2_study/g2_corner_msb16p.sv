@@ -135,9 +135,12 @@ module g2_corner_msb16p #(
     assign tx = mul16(a1_q, a3_q, dgx);
     assign uy = mul16(nb1_q, nb3_q, dgy);
     logic cin;
+    logic signed [SW-1:0] txw, uyn;
     assign cin = !(dl && bias_i[k]);
+    assign txw = tx;
+    assign uyn = ~{{(SW - TW){uy[TW-1]}}, uy};
     always_ff @(posedge clk_i) begin
-      if (dv) s_q <= SW'(tx) + ~SW'(uy) + SW'(cin);
+      if (dv) s_q <= txw + uyn + {{(SW - 1){1'b0}}, cin};
     end
 
     // Stage 2: acc = (acc << 4) + s; the low four bits are s's.
