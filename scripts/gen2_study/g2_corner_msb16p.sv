@@ -3,11 +3,11 @@
 // pipelined for the iCE40 HX's 50 MHz target:
 //  - the multiplicands are registered at the start with the operand's sign applied, and with
 //    their multiples 3x precomputed: A' = +-A, 3A' and -B', -3B' (B' = +-B; stored negated so
-//    that the bias becomes the carry-in of a subtraction below);
+//    that the bias joins B's term, subtracted below);
 //  - a radix-16 digit d = 4*d_hi + d_lo is two radix-4 digits: A'*d = (M(d_hi) << 2) + M(d_lo) with
 //    M(.) a 4-way select of 0, A', 2A', 3A' (no adder in the select);
-//  - stage 1 per edge: s = A'*dgx - (-B'*dgy) - bias_last = A'*dgx + ~(-B'*dgy) + !bias_last
-//    (two 29-bit adders in parallel, then one 30-bit adder), into a register;
+//  - stage 1 per edge: s = A'*dgx - (-B'*dgy + bias_last), the bias in the free low bit of
+//    (M(d_hi) << 2) (two 29-bit adders in parallel, then one 30-bit subtraction), into a register;
 //  - stage 2 per edge: acc = (acc << 4) + s (one 46-bit adder; the low four bits are s's).
 // RegDigit = 1 adds a register after the digit select (the counter's ND-way select of the two
 // operand digits) in front of stage 1.
@@ -54,7 +54,8 @@ module g2_corner_msb16p #(
 
   // Stage-1 control: the digit is valid (dv) and the last one (dl, which carries the bias).
   logic dv, dl;
-  logic sv_q;                         // stage 2: s_q holds a digit's term
+  logic sv_q, sf_q;                   // stage 2: s_q holds a digit's term, the first one
+  logic df;                           // stage 1's digit is the first one
 
   // M(d): 0, m, 2m, 3m for a radix-4 digit d (m1 = m, m3 = 3m).
   function automatic logic signed [KW-1:0] mul4(input logic signed [KW-1:0] m1,
@@ -67,11 +68,21 @@ module g2_corner_msb16p #(
       default: mul4 = m3;
     endcase
   endfunction
-  // m * d for a radix-16 digit d: (M(d_hi) << 2) + M(d_lo).
+  // 3x in CB + 2 bits, without an adder whose two inputs are the same net (x's sign bit twice,
+  // as in x + (x <<< 1): nextpnr-ice40 0.4's router did not finish with such a LUT): 3 * x's low
+  // CB - 1 bits unsigned, then the sign's -3 * 2^(CB-1) in a 3-bit subtraction at the top.
+  function automatic logic signed [KW-1:0] times3(input logic [CB-1:0] x);
+    logic [CB:0] lo3;
+    logic [2:0] hi;
+    lo3 = (CB + 1)'(x[CB-2:0]) + ((CB + 1)'(x[CB-2:0]) << 1);
+    hi = {1'b0, lo3[CB:CB-1]} - {1'b0, x[CB-1], x[CB-1]};
+    times3 = {hi, lo3[CB-2:0]};
+  endfunction
+  // m * d + c for a radix-16 digit d and c in {0, 1}: ((M(d_hi) << 2) | c) + M(d_lo).
   function automatic logic signed [TW-1:0] mul16(input logic signed [KW-1:0] m1,
                                                  input logic signed [KW-1:0] m3,
-                                                 input logic [3:0] d);
-    mul16 = (TW'(mul4(m1, m3, d[3:2])) <<< 2) + TW'(mul4(m1, m3, d[1:0]));
+                                                 input logic [3:0] d, input logic c);
+    mul16 = ((TW'(mul4(m1, m3, d[3:2])) <<< 2) | TW'(c)) + TW'(mul4(m1, m3, d[1:0]));
   endfunction
 
   for (genvar k = 0; k < 3; k++) begin : g_edge
@@ -100,9 +111,9 @@ module g2_corner_msb16p #(
         mx_q  <= mag_k[k][0];
         my_q  <= mag_k[k][1];
         a1_q  <= dxl[DW-1] ? -ak : ak;
-        a3_q  <= dxl[DW-1] ? -(ak + (ak <<< 1)) : ak + (ak <<< 1);
+        a3_q  <= dxl[DW-1] ? -times3(a_i[k*CB +: CB]) : times3(a_i[k*CB +: CB]);
         nb1_q <= dy[DW-1] ? bk : -bk;
-        nb3_q <= dy[DW-1] ? bk + (bk <<< 1) : -(bk + (bk <<< 1));
+        nb3_q <= dy[DW-1] ? times3(b_i[k*CB +: CB]) : -times3(b_i[k*CB +: CB]);
       end
     end
 
@@ -131,22 +142,24 @@ module g2_corner_msb16p #(
       assign dgy = sely;
     end
 
-    // Stage 1: s = A'*dgx + B'*dgy - (last ? bias : 0) = tx + ~uy + cin, uy = -B'*dgy.
-    assign tx = mul16(a1_q, a3_q, dgx);
-    assign uy = mul16(nb1_q, nb3_q, dgy);
-    logic cin;
-    logic signed [SW-1:0] txw, uyn;
-    assign cin = !(dl && bias_i[k]);
+    // Stage 1: s = A'*dgx + B'*dgy - (last ? bias : 0) = tx - uy, uy = -B'*dgy + bias_last
+    // (the bias in the free low bit of uy's shifted term: no carry-in from the fabric).
+    logic signed [SW-1:0] txw, uyw;
+    assign tx = mul16(a1_q, a3_q, dgx, 1'b0);
+    assign uy = mul16(nb1_q, nb3_q, dgy, dl && bias_i[k]);
     assign txw = tx;
-    assign uyn = ~{{(SW - TW){uy[TW-1]}}, uy};
+    assign uyw = uy;
     always_ff @(posedge clk_i) begin
-      if (dv) s_q <= txw + uyn + {{(SW - 1){1'b0}}, cin};
+      if (dv) s_q <= txw - uyw;
     end
 
-    // Stage 2: acc = (acc << 4) + s; the low four bits are s's.
+    // Stage 2: acc = (acc << 4) + s, acc = s for the first digit; the low four bits are s's.
+    // (No reset of acc by start_i: a start that is also a synchronous reset became a global net
+    // with fabric loads, and nextpnr's router did not finish.)
+    logic [EB-5:0] acc_hi;
+    assign acc_hi = sf_q ? '0 : acc_q[EB-5:0];
     always_ff @(posedge clk_i) begin
-      if (start_i) acc_q <= '0;
-      else if (sv_q) acc_q <= {acc_q[EB-5:0] + (EB - 4)'(s_q >>> 4), s_q[3:0]};
+      if (sv_q) acc_q <= {acc_hi + (EB - 4)'(s_q >>> 4), s_q[3:0]};
     end
     assign el_o[k*EB +: EB] = acc_q;
   end
@@ -168,25 +181,39 @@ module g2_corner_msb16p #(
   end
 
   if (RegDigit != 0) begin : g_regctl
-    logic dv_q, dl_q;
+    logic dv_q, dl_q, df_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         dv_q <= 1'b0;
         dl_q <= 1'b0;
+        df_q <= 1'b0;
       end else begin
         dv_q <= cnt_q != '0;
         dl_q <= cnt_q == NB'(1);
+        df_q <= first_q;
       end
     end
     assign dv = dv_q;
     assign dl = dl_q;
+    assign df = df_q;
   end else begin : g_ctl
     assign dv = cnt_q != '0;
     assign dl = cnt_q == NB'(1);
+    assign df = first_q;
+  end
+  logic first_q;                      // the pointer is at the top digit
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) first_q <= 1'b0;
+    else first_q <= start_i;
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) sv_q <= 1'b0;
-    else sv_q <= dv;
+    if (!rst_ni) begin
+      sv_q <= 1'b0;
+      sf_q <= 1'b0;
+    end else begin
+      sv_q <= dv;
+      sf_q <= df;
+    end
   end
   assign busy_o = (cnt_q != '0) || dv || sv_q;
 
