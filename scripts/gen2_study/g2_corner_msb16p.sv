@@ -8,14 +8,17 @@
 //    M(.) a 4-way select of 0, A', 2A', 3A' (no adder in the select);
 //  - stage 1 per edge: s = A'*dgx - (-B'*dgy + bias_last), the bias in the free low bit of
 //    (M(d_hi) << 2) (two 29-bit adders in parallel, then one 30-bit subtraction), into a register;
-//  - stage 2 per edge: acc = (acc << 4) + s (one 46-bit adder; the low four bits are s's).
+//  - stage 2 per edge: acc = (acc << 4) + s, or acc = s for the first digit (a flag that travels
+//    with the digit; one 46-bit adder, the low four bits are s's).
 // RegDigit = 1 adds a register after the digit select (the counter's ND-way select of the two
-// operand digits) in front of stage 1.
+// operand digits) in front of stage 1. On the HX8K both reach about 61 MHz, limited by the start
+// path (operand subtract, absolute value, digit count), which the unit's box stage B2 would
+// register (docs/gen2-design.md section 1 c2).
 // Cycles: the start cycle, ceil(bits / 4) digit cycles (at least one; bits = the largest bit length
 // of the six magnitudes |dxL|, |dy|), then the pipeline's Depth = 1 + RegDigit cycles:
 // busy_o is high for ceil(bits / 4) + Depth cycles after the start; el_o holds the result from
-// then until the next start. A start while busy_o is high is not supported (one corner
-// computation at a time).
+// then until stage 2 takes the next start's first digit (Depth + 1 cycles after that start). A
+// start while busy_o is high is not supported (one corner computation at a time).
 module g2_corner_msb16p #(
   parameter int RegDigit = 0
 ) (
