@@ -80,6 +80,7 @@ DESIGNS=(
 "g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
 "g2.corner_msb16p|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=0|MSB-first radix 16 pipelined: +-A, 3A, -+B, 3B registered at the start, s = A*digit + B*digit registered, E_L only, 1 + ceil(bits/4) + 1 cycles"
 "g2.corner_msb16p2|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=1|the same with the digit select registered too, 1 + ceil(bits/4) + 2 cycles"
+"g2.corner_msb16ps|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegStart=1|g2.corner_msb16p with the operand magnitudes, signs, A, B registered first (B2's registers in the unit), 1 + 1 + ceil(bits/4) + 1 cycles"
 "g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
 "g1.lanes|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv||gen1 3 normalizers + 3 lanes as in the setup stage (fed by the interface's outputs)"
 "g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"

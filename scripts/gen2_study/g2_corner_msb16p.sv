@@ -10,6 +10,8 @@
 //    (M(d_hi) << 2) (two 29-bit adders in parallel, then one 30-bit subtraction), into a register;
 //  - stage 2 per edge: acc = (acc << 4) + s, or acc = s for the first digit (a flag that travels
 //    with the digit; one 46-bit adder, the low four bits are s's).
+// RegStart = 1 registers the operand magnitudes, signs and A, B at the start and starts the
+// digit stages one cycle later (the box stage B2's registers in the unit; one more cycle here).
 // RegDigit = 1 adds a register after the digit select (the counter's ND-way select of the two
 // operand digits) in front of stage 1. On the HX8K both reach about 61 MHz, limited by the start
 // path (operand subtract, absolute value, digit count), which the unit's box stage B2 would
@@ -20,7 +22,8 @@
 // then until stage 2 takes the next start's first digit (Depth + 1 cycles after that start). A
 // start while busy_o is high is not supported (one corner computation at a time).
 module g2_corner_msb16p #(
-  parameter int RegDigit = 0
+  parameter int RegDigit = 0,
+  parameter int RegStart = 0
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -54,6 +57,8 @@ module g2_corner_msb16p #(
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
   logic [ND*4-1:0] any_mag;           // OR of all start magnitudes (for the top digit)
   logic [ND*4-1:0] mag_k [3][2];
+  logic [ND*4-1:0] magc [3][2];       // the magnitudes the start loads (RegStart: registered)
+  logic startc;                       // the start of the digit stages (RegStart: one cycle later)
 
   // Stage-1 control: the digit is valid (dv) and the last one (dl, which carries the bias).
   logic dv, dl;
@@ -99,24 +104,56 @@ module g2_corner_msb16p #(
     logic signed [EB-1:0] acc_q;
     assign dxl = cx0 - DW'($signed(vx_i[k*P +: P]));
     assign dy  = cy0 - DW'($signed(vy_i[k*P +: P]));
-    assign ak  = KW'($signed(a_i[k*CB +: CB]));
-    assign bk  = KW'($signed(b_i[k*CB +: CB]));
+    logic [CB-1:0] ac, bc;
+    logic sxc, syc;
+    assign ak  = KW'($signed(ac));
+    assign bk  = KW'($signed(bc));
     logic [MW-1:0] amx, amy;
     assign amx = dxl[DW-1] ? MW'(-dxl) : MW'(dxl);
     assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
     assign mag_k[k][0] = (ND * 4)'(amx);
     assign mag_k[k][1] = (ND * 4)'(amy);
+    // RegStart = 1: the operand magnitudes, signs and A, B registered first (the box stage B2's
+    // registers in the unit, docs/gen2-design.md section 2), the digit stages start a cycle later.
+    if (RegStart != 0) begin : g_regstart
+      logic [ND*4-1:0] mx0_q, my0_q;
+      logic [CB-1:0] a0_q, b0_q;
+      logic sx0_q, sy0_q;
+      always_ff @(posedge clk_i) begin
+        if (start_i) begin
+          mx0_q <= mag_k[k][0];
+          my0_q <= mag_k[k][1];
+          a0_q  <= a_i[k*CB +: CB];
+          b0_q  <= b_i[k*CB +: CB];
+          sx0_q <= dxl[DW-1];
+          sy0_q <= dy[DW-1];
+        end
+      end
+      assign magc[k][0] = mx0_q;
+      assign magc[k][1] = my0_q;
+      assign ac = a0_q;
+      assign bc = b0_q;
+      assign sxc = sx0_q;
+      assign syc = sy0_q;
+    end else begin : g_startcomb
+      assign magc[k][0] = mag_k[k][0];
+      assign magc[k][1] = mag_k[k][1];
+      assign ac = a_i[k*CB +: CB];
+      assign bc = b_i[k*CB +: CB];
+      assign sxc = dxl[DW-1];
+      assign syc = dy[DW-1];
+    end
 
     // Start: operand magnitudes and the signed multiplicands. (3A is written inline: as a
     // continuous assignment of its own, Verilator 5.006 --timing evaluated it only at time 0.)
     always_ff @(posedge clk_i) begin
-      if (start_i) begin
-        mx_q  <= mag_k[k][0];
-        my_q  <= mag_k[k][1];
-        a1_q  <= dxl[DW-1] ? -ak : ak;
-        a3_q  <= dxl[DW-1] ? -times3(a_i[k*CB +: CB]) : times3(a_i[k*CB +: CB]);
-        nb1_q <= dy[DW-1] ? bk : -bk;
-        nb3_q <= dy[DW-1] ? times3(b_i[k*CB +: CB]) : -times3(b_i[k*CB +: CB]);
+      if (startc) begin
+        mx_q  <= magc[k][0];
+        my_q  <= magc[k][1];
+        a1_q  <= sxc ? -ak : ak;
+        a3_q  <= sxc ? -times3(ac) : times3(ac);
+        nb1_q <= syc ? bk : -bk;
+        nb3_q <= syc ? times3(bc) : -times3(bc);
       end
     end
 
@@ -169,9 +206,9 @@ module g2_corner_msb16p #(
 
   // The number of digits of the largest operand (priority encoder).
   always_comb begin
-    any_mag = mag_k[0][0] | mag_k[0][1] | mag_k[1][0] | mag_k[1][1] | mag_k[2][0] | mag_k[2][1];
+    any_mag = magc[0][0] | magc[0][1] | magc[1][0] | magc[1][1] | magc[2][0] | magc[2][1];
     cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
-    if (start_i) begin
+    if (startc) begin
       cnt_d = NB'(1);
       for (int i = 1; i < ND; i++) begin
         if (any_mag[i*4 +: 4] != '0) cnt_d = NB'(i + 1);
@@ -181,6 +218,16 @@ module g2_corner_msb16p #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) cnt_q <= '0;
     else cnt_q <= cnt_d;
+  end
+  if (RegStart != 0) begin : g_regstartctl
+    logic start_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) start_q <= 1'b0;
+      else start_q <= start_i;
+    end
+    assign startc = start_q;
+  end else begin : g_startctl
+    assign startc = start_i;
   end
 
   if (RegDigit != 0) begin : g_regctl
@@ -207,7 +254,7 @@ module g2_corner_msb16p #(
   logic first_q;                      // the pointer is at the top digit
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) first_q <= 1'b0;
-    else first_q <= start_i;
+    else first_q <= startc;
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -218,6 +265,6 @@ module g2_corner_msb16p #(
       sf_q <= df;
     end
   end
-  assign busy_o = (cnt_q != '0) || dv || sv_q;
+  assign busy_o = (RegStart != 0 && startc) || (cnt_q != '0) || dv || sv_q;
 
 endmodule
