@@ -23,7 +23,10 @@
 #       random triangles of the box's hard cases under random offer and stall patterns; then
 #       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms)
 #       against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
-#       is missing), spans equal span for span, both units' cycles; exit 1 on a difference)
+#       is missing), spans equal span for span, both units' cycles; then
+#       scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first corner units, pipelined
+#       g2_corner_msb16p included, on full-width operands with the extremes, and its cycle count;
+#       exit 1 on a difference)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -93,6 +96,9 @@ DESIGNS=(
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
 "g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
 "g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
+"g2.corner_msb16p|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=0|MSB-first radix 16 pipelined: +-A, 3A, -+B, 3B registered at the start, s = A*digit + B*digit registered, E_L only, 1 + ceil(bits/4) + 1 cycles"
+"g2.corner_msb16p2|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=1|the same with the digit select registered too, 1 + ceil(bits/4) + 2 cycles"
+"g2.corner_msb16ps|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegStart=1|g2.corner_msb16p with the operand magnitudes, signs, A, B registered first (B2's registers in the unit), 1 + 1 + ceil(bits/4) + 1 cycles"
 "g1.edge_lane|trirast_edge_lane|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv||gen1 edge lane: FSM + adder divider (50-bit numerator), one per edge"
 "g1.lanes|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv||gen1 3 normalizers + 3 lanes as in the setup stage (fed by the interface's outputs)"
 "g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"

@@ -26,7 +26,10 @@ which also counts today's wait in StHold for the walk stage (so they are more pe
   sN      shift-add, N operand bits per cycle: c = max(1, ceil(bits / N)), bits = the largest
           bit length of |dxL|, |dy| over the three edges;
   nW+sN   narrow W-bit signed multipliers in one cycle when |A|, |B|, |dxL|, |dy| of every edge
-          fit W signed bits and Xmax < 2^(W-1-F), else the sN shift-add.
+          fit W signed bits and Xmax < 2^(W-1-F), else the sN shift-add;
+  sNpD, nW+sNpD  the same with D pipeline registers in the shift-add (scripts/gen2_study/
+          g2_corner_msb16p: D = 1 or 2): c = max(1, ceil(bits / N)) + D; the stage takes its next
+          triangle only after the D cycles (no overlap of two triangles).
 --corner-hold adds the same columns for a unit without a hand-off buffer (the lanes hold a
 set-up triangle until the walk stage loads it, as gen1's StHold). Between the other stages the
 estimate assumes buffers that never fill (no blocking is counted).
@@ -133,13 +136,13 @@ def corner_cycles(spec, g, F):
     _, xmax, op, coef = g
     if spec == "1":
         return 1, True
-    m = re.fullmatch(r"(?:n(\d+)\+)?s(\d+)", spec)
-    narrow, digit = m.group(1), int(m.group(2))
+    m = re.fullmatch(r"(?:n(\d+)\+)?s(\d+)(?:p(\d+))?", spec)
+    narrow, digit, depth = m.group(1), int(m.group(2)), int(m.group(3) or 0)
     if narrow:
         w = int(narrow)
         if op < (1 << (w - 1)) and coef < (1 << (w - 1)) and xmax < (1 << (w - 1 - F)):
             return 1, True
-    return max(1, math.ceil(op.bit_length() / digit)), False
+    return max(1, math.ceil(op.bit_length() / digit)) + depth, False
 
 
 def estimate_corner(rows, direct, spec, geo, F, hold=False, shared=False):
@@ -174,7 +177,9 @@ def main():
     ap.add_argument("--build", default=os.environ.get("TRIRAST_BUILD_DIR", os.path.join(ROOT, "build")))
     ap.add_argument("--direct", action="append", default=[], metavar="WxH")
     ap.add_argument("--corner", action="append", default=[], metavar="SPEC",
-                    help="1, sN or nW+sN: a column with a corner-value stage of that many cycles")
+                    help="1, sN, nW+sN, sNpD or nW+sNpD: a column with a corner-value stage of "
+                         "that many cycles (pD: D pipeline registers in the shift-add, D more "
+                         "cycles per triangle)")
     ap.add_argument("--corner-stats", action="store_true")
     ap.add_argument("--corner-hold", action="store_true")
     ap.add_argument("--corner-shared", action="store_true")
@@ -192,9 +197,10 @@ def main():
             sys.exit(f"pipeline_whatif.py: --direct {d}: expected WxH, e.g. 2x2")
         directs.append((w, h))
     for c in a.corner:
-        m = re.fullmatch(r"1|(?:n(\d+)\+)?s(\d+)", c)
+        m = re.fullmatch(r"1|(?:n(\d+)\+)?s(\d+)(?:p\d+)?", c)
         if not m or (m.group(2) and int(m.group(2)) < 1) or (m.group(1) and int(m.group(1)) < 2):
-            sys.exit(f"pipeline_whatif.py: --corner {c}: expected 1, sN or nW+sN (e.g. n13+s4)")
+            sys.exit(f"pipeline_whatif.py: --corner {c}: expected 1, sN, nW+sN or sNpD "
+                     "(e.g. n13+s4, s4p1)")
     print("| scene | triangles | improved today | trad | pipelined set-up | "
           + " | ".join(f"+ direct {w}x{h}" for w, h in directs)
           + "".join(f" | direct {directs[0][0]}x{directs[0][1]}, corners {c}" for c in a.corner)

@@ -1,0 +1,167 @@
+// gen2 study: a random cross-check of the MSB-first corner-value prototypes (g2_corner_msb radix
+// 4 and 16, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
+// E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
+// (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
+// of a triangle near the box), the operands here are independent and include the extremes:
+// A, B in {-2^(CB-1), -1, 0, 1, 2^(CB-1) - 1}, vertices in {-2^(P-1), 2^(P-1) - 1, cx0, cy0 (a zero
+// operand)}, box corners 0 and 2^PB - 1. It also checks g2_corner_msb16p's cycle count: busy for
+// max(1, ceil(bits / 4)) + Depth cycles after the start, bits = the largest bit length of the six
+// magnitudes |cx0 - vx|, |cy0 - vy|. Not part of the test suite.
+module g2_corner_check_tb;
+  localparam int P = trirast_pkg::VertexBits;
+  localparam int CB = trirast_pkg::CoefBits;
+  localparam int EB = trirast_pkg::EdgeBits;
+  localparam int PB = trirast_pkg::PixBits;
+  localparam int F = trirast_pkg::FracBits;
+  localparam int Trials = 20000;
+
+  logic clk = 0, rst_n = 0;
+  int errors = 0, extremes = 0, zeros = 0;
+  longint max_abs = 0;
+
+  logic [3*P-1:0] vx, vy;
+  logic [3*CB-1:0] a, b;
+  logic [2:0] bias;
+  logic [PB-1:0] x0, y0;
+  logic start;
+  logic busy_m4, busy_m16, busy_p0, busy_p1, busy_ps;
+  logic [3*EB-1:0] el_m4, el_m16, el_p0, el_p1, el_ps;
+
+  g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busy_m4), .el_o (el_m4));
+  g2_corner_msb #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busy_m16), .el_o (el_m16));
+  g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busy_p0), .el_o (el_p0));
+  g2_corner_msb16p #(.RegDigit (1)) u_p1 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busy_p1), .el_o (el_p1));
+  g2_corner_msb16p #(.RegDigit (0), .RegStart (1)) u_ps (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .busy_o (busy_ps), .el_o (el_ps));
+
+  always #5 clk = ~clk;
+
+  function automatic longint sx(input logic [63:0] v, input int w);
+    sx = longint'(v << (64 - w)) >>> (64 - w);
+  endfunction
+  function automatic int bitlen(input longint v);  // v >= 0
+    bitlen = 0;
+    while (v != 0) begin
+      bitlen++;
+      v = v >> 1;
+    end
+  endfunction
+
+  // A coefficient: uniform over CB bits, or (one in three) an extreme.
+  function automatic logic [CB-1:0] coef();
+    unique case ($urandom % 9)
+      0: coef = {1'b1, {(CB - 1){1'b0}}};  // -2^(CB-1): the largest |A|
+      1: coef = {1'b0, {(CB - 1){1'b1}}};  // 2^(CB-1) - 1
+      2: coef = '0;
+      default: coef = CB'({$urandom, $urandom});
+    endcase
+    if ($urandom % 9 == 0) coef = ($urandom % 2) ? CB'(1) : '1;  // +-1
+  endfunction
+  // A vertex coordinate against the box corner c (c = cx0 or cy0): uniform over P bits, near c,
+  // or an extreme, or c itself (a zero operand).
+  function automatic logic [P-1:0] vert(input longint c);
+    unique case ($urandom % 8)
+      0: vert = {1'b1, {(P - 1){1'b0}}};   // -2^(P-1): the largest c - v
+      1: vert = {1'b0, {(P - 1){1'b1}}};   // 2^(P-1) - 1: the most negative c - v
+      2: vert = P'(c);                     // c - v = 0
+      3: vert = P'(c + longint'($urandom % 4096) - 2048);
+      default: vert = P'({$urandom, $urandom});
+    endcase
+  endfunction
+
+  task automatic trial();
+    longint cx0, cy0, want, mag, got;
+    int bits, digits, cyc, depth_seen0, depth_seen1, depth_seens;
+    bit ext;
+    unique case ($urandom % 4)
+      0: x0 = '0;
+      1: x0 = '1;
+      default: x0 = PB'($urandom);
+    endcase
+    unique case ($urandom % 4)
+      0: y0 = '0;
+      1: y0 = '1;
+      default: y0 = PB'($urandom);
+    endcase
+    cx0 = longint'(x0) * (1 << F) + (1 << (F - 1));
+    cy0 = longint'(y0) * (1 << F) + (1 << (F - 1));
+    bits = 0;
+    ext = 0;
+    for (int k = 0; k < 3; k++) begin
+      a[k*CB +: CB] = coef();
+      b[k*CB +: CB] = coef();
+      vx[k*P +: P] = vert(cx0);
+      vy[k*P +: P] = vert(cy0);
+      if (a[k*CB +: CB] == {1'b1, {(CB - 1){1'b0}}} || b[k*CB +: CB] == {1'b1, {(CB - 1){1'b0}}} ||
+          vx[k*P +: P] == {1'b1, {(P - 1){1'b0}}} || vy[k*P +: P] == {1'b1, {(P - 1){1'b0}}}) ext = 1;
+      mag = cx0 - sx(64'(vx[k*P +: P]), P);
+      if (mag < 0) mag = -mag;
+      if (bitlen(mag) > bits) bits = bitlen(mag);
+      mag = cy0 - sx(64'(vy[k*P +: P]), P);
+      if (mag < 0) mag = -mag;
+      if (bitlen(mag) > bits) bits = bitlen(mag);
+    end
+    if (ext) extremes++;
+    bias = 3'($urandom);
+    digits = (bits + 3) / 4;
+    if (digits < 1) digits = 1;
+    @(negedge clk); start = 1; @(negedge clk); start = 0;
+    cyc = 0;
+    depth_seen0 = -1;
+    depth_seen1 = -1;
+    depth_seens = -1;
+    while ((busy_m4 || busy_m16 || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
+      @(negedge clk);
+      cyc++;
+      if (!busy_p0 && depth_seen0 < 0) depth_seen0 = cyc;
+      if (!busy_p1 && depth_seen1 < 0) depth_seen1 = cyc;
+      if (!busy_ps && depth_seens < 0) depth_seens = cyc;
+    end
+    if (depth_seens < 0) depth_seens = cyc;
+    if (depth_seen0 < 0) depth_seen0 = cyc;
+    if (depth_seen1 < 0) depth_seen1 = cyc;
+    // busy_o was high for depth_seen cycles after the start cycle.
+    if (depth_seen0 != digits + 1 || depth_seen1 != digits + 2 || depth_seens != digits + 2) begin
+      errors++;
+      if (errors < 10) $display("cycles: bits %0d: msb16p busy %0d / %0d / %0d cycles, want %0d / %0d / %0d",
+                                bits, depth_seen0, depth_seen1, depth_seens, digits + 1, digits + 2, digits + 2);
+    end
+    for (int k = 0; k < 3; k++) begin
+      longint A, B, vxk, vyk;
+      A = sx(64'(a[k*CB +: CB]), CB);  B = sx(64'(b[k*CB +: CB]), CB);
+      vxk = sx(64'(vx[k*P +: P]), P);  vyk = sx(64'(vy[k*P +: P]), P);
+      if (A == 0 || B == 0 || vxk == cx0 || vyk == cy0) zeros++;
+      want = A * (cx0 - vxk) + B * (cy0 - vyk) - longint'(bias[k]);
+      if ((want < 0 ? -want : want) > max_abs) max_abs = want < 0 ? -want : want;
+      if (sx(64'(el_m4[k*EB +: EB]), EB) != want || sx(64'(el_m16[k*EB +: EB]), EB) != want ||
+          sx(64'(el_p0[k*EB +: EB]), EB) != want || sx(64'(el_p1[k*EB +: EB]), EB) != want ||
+          sx(64'(el_ps[k*EB +: EB]), EB) != want) begin
+        errors++;
+        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
+          k, A, B, cx0 - vxk, cy0 - vyk, bias[k], sx(64'(el_m4[k*EB +: EB]), EB),
+          sx(64'(el_m16[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
+          sx(64'(el_p1[k*EB +: EB]), EB), sx(64'(el_ps[k*EB +: EB]), EB), want);
+      end
+    end
+  endtask
+
+  initial begin
+    start = 0;
+    repeat (2) @(negedge clk);
+    rst_n = 1;
+    for (int t = 0; t < Trials; t++) trial();
+    $display("g2_corner_check_tb: %0d errors (%0d trials of 3 edges, %0d with an extreme operand, %0d edges with a zero operand, largest |E_L| %0d = 2^%0d)",
+             errors, Trials, extremes, zeros, max_abs, bitlen(max_abs) - 1);
+    if (errors != 0) $fatal(1, "g2_corner_check_tb: FAILED");
+    $finish;
+  end
+endmodule
