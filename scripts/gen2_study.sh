@@ -330,6 +330,17 @@ if [ "$CHECK" = 1 ]; then
   else
     echo "$ME: $TRIRAST not found: the whole-unit check is skipped (set TRIRAST)" >&2
   fi
+  # The MSB-first corner units on independent full-width operands with the extremes, and
+  # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
+  rm -rf "$WORK/check_corner"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+    "$S/g2_corner_msb.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv" \
+    --top-module g2_corner_check_tb -Mdir "$WORK/check_corner" >"$WORK/check_corner.log" 2>&1 ||
+    { echo "$ME: Verilator build of g2_corner_check_tb failed ($WORK/check_corner.log)" >&2; exit 1; }
+  out="$("$WORK/check_corner/Vg2_corner_check_tb" 2>&1)" || true
+  echo "$out" | grep "g2_corner_check_tb:"
+  echo "$out" | grep -q "g2_corner_check_tb: 0 errors" ||
+    { echo "$ME: g2_corner_check_tb found differences" >&2; exit 1; }
   exit 0
 fi
 
