@@ -36,9 +36,10 @@
 
 // Wait |=> $stable(Data) written for simulation speed: a concurrent $stable keeps a sampled copy
 // of every bit of Data at every evaluation of the Verilated model (the improved unit's triangle,
-// hand-off and span data cost about 590 more instructions per simulated cycle that way, an eighth
-// of its simulation; docs/rtl.md), so here a copy is taken in the cycle a wait begins and an immediate
-// assertion compares Data with it while the wait lasts. The copy is simulation-only logic.
+// hand-off and span data cost about 590 more instructions per simulated cycle that way, an
+// eighth of its simulation; docs/rtl.md), so here a copy is taken in the cycle a wait begins and
+// an immediate assertion compares Data with it while the wait lasts. The copy is simulation-only
+// logic.
 `define ASSERT_STABLE(__name, __wait, __data, __clk, __rst)                      \
   logic __name``_wait_q;                                                          \
   logic [$bits(__data)-1:0] __name``_data_q;                                      \
