@@ -221,50 +221,67 @@ report() {
   echo "nextpnr-ice40 --hx8k --package ct256 --seed 1 --freq $FREQ; wrapped LC include the wrapper's registers."
 }
 
+# tb_build TOP DIR [VERILATOR ARGS/SOURCES ...]: Verilator --binary of testbench TOP (the package
+# first) into WORKDIR/DIR, its log in WORKDIR/DIR.log.
+tb_build() {
+  local top="$1" dir="$2"
+  shift 2
+  rm -rf "${WORK:?}/$dir"
+  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" "$@" \
+    --top-module "$top" -Mdir "$WORK/$dir" >"$WORK/$dir.log" 2>&1 ||
+    { echo "$ME: Verilator build of $top failed ($WORK/$dir.log)" >&2; exit 1; }
+}
+# tb_run TOP DIR LABEL SKIP [PLUSARGS ...]: runs the testbench built in WORKDIR/DIR, prints its
+# "TOP:" lines as "LABEL:" (but those matching the regex SKIP, when not empty) and exits 1 unless
+# it printed "TOP: 0 errors".
+tb_run() {
+  local top="$1" dir="$2" label="$3" skip="$4" out
+  shift 4
+  out="$("$WORK/$dir/V$top" "$@" 2>&1)" || true
+  echo "$out" | grep "^$top:" | { if [ -n "$skip" ]; then grep -v -- "$skip"; else cat; fi; } |
+    sed "s/^$top:/$label:/" || true
+  echo "$out" | grep -q "^$top: 0 errors" || { echo "$ME: $label found differences" >&2; exit 1; }
+}
+# scene_tris SCENE: WORKDIR/scene_NAME.tri, the scene's triangles exported by TRIRAST (once).
+scene_tris() {
+  local tri="$WORK/scene_${1#builtin:}.tri"
+  if [ ! -s "$tri" ]; then
+    SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$1" \
+      --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/scene_export.log" ||
+      { echo "$ME: $TRIRAST --export-tris on $1 failed ($WORK/scene_export.log)" >&2; exit 1; }
+  fi
+  echo "$tri"
+}
+
 if [ "$CHECK" = 1 ]; then
   command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
   python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \
     --endpoints 1 --fifo-depth 8 --sv "$PKG" >/dev/null ||
     { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
-  rm -rf "$WORK/check"
-  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+  rm -f "$WORK"/scene_*.tri
+  tb_build g2_check_tb check \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
-    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_box2x2.sv" "$S/g2_check_tb.sv" \
-    --top-module g2_check_tb -Mdir "$WORK/check" >"$WORK/check.log" 2>&1 ||
-    { echo "$ME: Verilator build of g2_check_tb failed ($WORK/check.log)" >&2; exit 1; }
-  out="$("$WORK/check/Vg2_check_tb" 2>&1)" || true
-  echo "$out" | grep "g2_check_tb:"
-  echo "$out" | grep -q "g2_check_tb: 0 errors" || { echo "$ME: g2_check_tb found differences" >&2; exit 1; }
+    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" \
+    "$S/g2_span_gen_par.sv" "$S/g2_box2x2.sv" "$S/g2_check_tb.sv"
+  tb_run g2_check_tb check g2_check_tb ""
   # The retimed walk stage as a whole against gen1's walk stage and span port.
-  rm -rf "$WORK/check_walk"
-  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
+  tb_build g2_walk_check_tb check_walk \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$R/trirast_span_fifo.sv" \
     "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$S/g2_walker_cs.sv" \
-    "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv" \
-    --top-module g2_walk_check_tb -Mdir "$WORK/check_walk" >"$WORK/check_walk.log" 2>&1 ||
-    { echo "$ME: Verilator build of g2_walk_check_tb failed ($WORK/check_walk.log)" >&2; exit 1; }
-  out="$("$WORK/check_walk/Vg2_walk_check_tb" 2>&1)" || true
-  echo "$out" | grep "g2_walk_check_tb:"
-  echo "$out" | grep -q "g2_walk_check_tb: 0 errors" ||
-    { echo "$ME: g2_walk_check_tb found differences" >&2; exit 1; }
+    "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
+  tb_run g2_walk_check_tb check_walk g2_walk_check_tb ""
   # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
   # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
   # Two builds: g2_lane as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).
   for pre in 0 1; do
-    rm -rf "$WORK/check_lane$pre"
-    verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -GPreIter=$pre -I"$R" "$PKG" \
+    tb_build g2_lane_tb "check_lane$pre" -GPreIter=$pre \
       "$R/trirast_adder_divider.sv" "$R/trirast_edge_lane.sv" "$R/trirast_edge_normalizer.sv" \
-      "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv" \
-      --top-module g2_lane_tb -Mdir "$WORK/check_lane$pre" >"$WORK/check_lane$pre.log" 2>&1 ||
-      { echo "$ME: Verilator build of g2_lane_tb (PreIter=$pre) failed ($WORK/check_lane$pre.log)" >&2; exit 1; }
+      "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv"
   done
   runs=("")
   if [ -x "$TRIRAST" ]; then
     for sc in $LANE_SCENES; do
-      tri="$WORK/lane_${sc#builtin:}.tri"; edges="$WORK/lane_${sc#builtin:}.edges"
-      SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$sc" \
-        --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/lane_export.log" ||
-        { echo "$ME: $TRIRAST --export-tris on $sc failed ($WORK/lane_export.log)" >&2; exit 1; }
+      tri="$(scene_tris "$sc")"; edges="$WORK/lane_${sc#builtin:}.edges"
       python3 "$S/lane_edges.py" "$tri" "$edges" 2>/dev/null ||
         { echo "$ME: scripts/gen2_study/lane_edges.py failed on $tri" >&2; exit 1; }
       runs+=("+edges=$edges")
@@ -274,56 +291,40 @@ if [ "$CHECK" = 1 ]; then
   fi
   for pre in 0 1; do
     for r in "${runs[@]}"; do
+      # A scene's run repeats the random and hard edges' line: printed once, by the first run.
       # shellcheck disable=SC2086
-      out="$("$WORK/check_lane$pre/Vg2_lane_tb" $r 2>&1)" || true
-      if [ -n "$r" ]; then echo "$out" | grep "g2_lane_tb:" | grep -v "random and hard" | sed "s/^g2_lane_tb:/g2_lane_tb (PreIter=$pre):/"
-      else echo "$out" | grep "g2_lane_tb:" | sed "s/^g2_lane_tb:/g2_lane_tb (PreIter=$pre):/"; fi
-      echo "$out" | grep -q "g2_lane_tb: 0 errors" ||
-        { echo "$ME: g2_lane_tb (PreIter=$pre) found differences" >&2; exit 1; }
+      tb_run g2_lane_tb "check_lane$pre" "g2_lane_tb (PreIter=$pre)" "${r:+random and hard}" $r
     done
   done
-  rm -rf "$WORK/check_box"
-  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
-    "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv" \
-    --top-module g2_box_check_tb -Mdir "$WORK/check_box" >"$WORK/check_box.log" 2>&1 ||
-    { echo "$ME: Verilator build of g2_box_check_tb failed ($WORK/check_box.log)" >&2; exit 1; }
-  out="$("$WORK/check_box/Vg2_box_check_tb" 2>&1)" || true
-  echo "$out" | grep "g2_box_check_tb:"
-  echo "$out" | grep -q "g2_box_check_tb: 0 errors" || { echo "$ME: g2_box_check_tb found differences" >&2; exit 1; }
+  tb_build g2_box_check_tb check_box \
+    "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv"
+  tb_run g2_box_check_tb check_box g2_box_check_tb ""
   # The whole-unit prototype g2_unit (both corner forms) against gen1's trirast_top on the scenes
   # UNIT_SCENES (default builtin:mixed builtin:highpoly-far, exported by TRIRAST; skipped when it
   # is missing): spans equal span for span (sinks always ready, then both ready in two cycles of
   # three), and both units' cycles.
   UNIT_SCENES="${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}"
   if [ -x "$TRIRAST" ]; then
-    gen1_srcs=""
+    gen1_srcs=()
     while read -r f; do
-      case "$f" in trirast_pkg.sv) ;; trirast_*.sv) gen1_srcs="$gen1_srcs $R/$f" ;; esac
+      case "$f" in trirast_pkg.sv) ;; trirast_*.sv) gen1_srcs+=("$R/$f") ;; esac
     done < "$R/trirast_improved.f"
+    for sc in $UNIT_SCENES; do
+      tri="$(scene_tris "$sc")"; hex="$WORK/unit_${sc#builtin:}.hex"
+      python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
+        { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
+    done
     for form in 0 1; do
-      rm -rf "$WORK/check_unit$form"
-      # shellcheck disable=SC2086
-      verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" -DG2_CORNER_FORM=$form \
-        "$PKG" $gen1_srcs "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" \
-        "$S/g2_lane.sv" "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" \
-        "$S/g2_unit.sv" "$S/g2_unit_tb.sv" --top-module g2_unit_tb -Mdir "$WORK/check_unit$form" \
-        >"$WORK/check_unit$form.log" 2>&1 ||
-        { echo "$ME: Verilator build of g2_unit_tb failed ($WORK/check_unit$form.log)" >&2; exit 1; }
+      tb_build g2_unit_tb "check_unit$form" -DG2_CORNER_FORM=$form "${gen1_srcs[@]}" \
+        "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
+        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" "$S/g2_unit.sv" \
+        "$S/g2_unit_tb.sv"
       for sc in $UNIT_SCENES; do
-        tri="$WORK/unit_${sc#builtin:}.tri"; hex="$WORK/unit_${sc#builtin:}.hex"
-        if [ "$form" = 0 ]; then
-          SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$sc" \
-            --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/unit_export.log" ||
-            { echo "$ME: $TRIRAST --export-tris on $sc failed ($WORK/unit_export.log)" >&2; exit 1; }
-          python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
-            { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
-        fi
+        hex="$WORK/unit_${sc#builtin:}.hex"
         for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
           # shellcheck disable=SC2046,SC2086
-          out="$("$WORK/check_unit$form/Vg2_unit_tb" +tris="$hex" $(cat "$hex.args") $st 2>&1)" || true
-          echo "$out" | grep "g2_unit_tb:" | sed "s/^g2_unit_tb:/g2_unit_tb (CornerForm $form, $sc):/"
-          echo "$out" | grep -q "g2_unit_tb: 0 errors" ||
-            { echo "$ME: g2_unit_tb found differences (CornerForm $form, $sc $st)" >&2; exit 1; }
+          tb_run g2_unit_tb "check_unit$form" "g2_unit_tb (CornerForm $form, $sc${st:+, $st})" "" \
+            +tris="$hex" $(cat "$hex.args") $st
         done
       done
     done
@@ -332,15 +333,9 @@ if [ "$CHECK" = 1 ]; then
   fi
   # The MSB-first corner units on independent full-width operands with the extremes, and
   # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
-  rm -rf "$WORK/check_corner"
-  verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
-    "$S/g2_corner_msb.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv" \
-    --top-module g2_corner_check_tb -Mdir "$WORK/check_corner" >"$WORK/check_corner.log" 2>&1 ||
-    { echo "$ME: Verilator build of g2_corner_check_tb failed ($WORK/check_corner.log)" >&2; exit 1; }
-  out="$("$WORK/check_corner/Vg2_corner_check_tb" 2>&1)" || true
-  echo "$out" | grep "g2_corner_check_tb:"
-  echo "$out" | grep -q "g2_corner_check_tb: 0 errors" ||
-    { echo "$ME: g2_corner_check_tb found differences" >&2; exit 1; }
+  tb_build g2_corner_check_tb check_corner \
+    "$S/g2_corner_msb.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv"
+  tb_run g2_corner_check_tb check_corner g2_corner_check_tb ""
   exit 0
 fi
 
