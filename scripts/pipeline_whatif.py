@@ -42,6 +42,7 @@ mean c.
 Default scenes: those of docs/cycles-improved-vs-trad.md; default --direct 2x2 and 4x4.
 """
 import argparse
+import collections
 import csv
 import math
 import os
@@ -49,9 +50,10 @@ import re
 import subprocess
 import sys
 import tempfile
-from fractions import Fraction
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "scripts", "gen2_study"))
+from tri_setup import read_export  # noqa: E402  (the .tri reader shared with the gen2 study)
 SCENES = ["builtin:lowpoly-far", "builtin:lowpoly-near", "builtin:highpoly-far",
           "builtin:highpoly-near", "builtin:mixed", "builtin:sphere", "builtin:torus",
           "builtin:surface", os.path.join(ROOT, "tests/data/cube.obj")]
@@ -90,7 +92,8 @@ def estimate(rows, direct):
 
 
 def geometry(trirast, scene, rows, tmp):
-    """Per scene index: (empty, xmax, operand bits of |dxL|, |dy|, max |A|, |B|, |dxL|, |dy|)."""
+    """Per scene index: (empty, xmax, operand bits of |dxL|, |dy|, max |A|, |B|, |dxL|, |dy|).
+    Degenerate triangles (left out by tri_setup.read_export) count as empty boxes."""
     path = os.path.join(tmp, "t.tri")
     last = max((r["tri"] for r in rows), default=0)
     env = dict(os.environ, SYSTEMC_DISABLE_COPYRIGHT_MESSAGE="1")
@@ -99,35 +102,19 @@ def geometry(trirast, scene, rows, tmp):
                        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=env)
     if r.returncode != 0:
         sys.exit(f"pipeline_whatif.py: --export-tris on {scene}: {r.stderr.strip()}")
-    geo = {}
-    with open(path) as f:
-        head = f.readline()
-        m = re.search(r"--width (\d+) --height (\d+) --subpixel-bits (\d+)", head)
-        if not m:
-            sys.exit(f"pipeline_whatif.py: {path}: no viewport in the export's header")
-        W, H, S = (int(v) for v in m.groups())
-        F = max(S, 1)
-        u, h = 1 << F, 1 << (F - 1)
-        for line in f:
-            mt = re.search(r"# tri (\d+)", line)
-            if not mt:
-                continue
-            v = [int(Fraction(t) * (1 << S)) << (F - S) for t in line.split("#")[0].split()]
-            xs, ys = v[0::2], v[1::2]
-            def first(lo):
-                return max(0, -((h - lo) // u))
-            x0, y0 = first(min(xs)), first(min(ys))
-            x1, y1 = min(W - 1, (max(xs) - h) // u), min(H - 1, (max(ys) - h) // u)
-            if x0 > x1 or y0 > y1:
-                geo[int(mt.group(1))] = (True, 0, 0, 0)
-                continue
-            cx0, cy0 = x0 * u + h, y0 * u + h
-            ops, coefs = [], []
-            for k in range(3):
-                j = (k + 1) % 3
-                ops += [abs(cx0 - xs[k]), abs(cy0 - ys[k])]
-                coefs += [abs(ys[k] - ys[j]), abs(xs[j] - xs[k])]
-            geo[int(mt.group(1))] = (False, x1 - x0, max(ops), max(coefs))
+    W, H, F, tris = read_export(path, "pipeline_whatif.py", indexed=True)
+    u, h = 1 << F, 1 << (F - 1)
+    geo = collections.defaultdict(lambda: (True, 0, 0, 0))
+    for index, v, edges in tris:
+        xs, ys = [p[0] for p in v], [p[1] for p in v]
+        x0, y0 = max(0, -((h - min(xs)) // u)), max(0, -((h - min(ys)) // u))
+        x1, y1 = min(W - 1, (max(xs) - h) // u), min(H - 1, (max(ys) - h) // u)
+        if x0 > x1 or y0 > y1:
+            continue
+        cx0, cy0 = x0 * u + h, y0 * u + h
+        ops = [abs(cx0 - p[0]) for p in v] + [abs(cy0 - p[1]) for p in v]
+        coefs = [abs(e[0]) for e in edges] + [abs(e[1]) for e in edges]
+        geo[index] = (False, x1 - x0, max(ops), max(coefs))
     return geo, F
 
 
