@@ -125,6 +125,12 @@ count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's las
   [ -f "$2" ] || { echo ""; return; }
   awk -v re="$1" '/Number of cells/ {sum = 0} $1 ~ re && $2 ~ /^[0-9]+$/ {sum += $2} END {print sum + 0}' "$2"
 }
+ice40_cells() {  # ice40_cells STATFILE: "LUT4,FF,CARRY,BRAM,MAC16" as synth.csv's columns
+  echo "$(count '^SB_LUT4$' "$1"),$(count '^SB_DFF' "$1"),$(count '^SB_CARRY$' "$1"),$(count '^SB_RAM40' "$1"),$(count '^SB_MAC16$' "$1")"
+}
+xc7_cells() {  # xc7_cells STATFILE: "LUT,FF,CARRY4,RAMB,DSP48" as synth.csv's columns
+  echo "$(count '^LUT[1-6]$' "$1"),$(count '^FD[RSCPE]*$' "$1"),$(count '^CARRY4$' "$1"),$(count '^RAMB' "$1"),$(count '^DSP48' "$1")"
+}
 
 # ---- a small job pool: at most JOBS jobs at once; a job's failure is recorded, not fatal ----
 run_job() {  # run_job NAME COMMAND...
@@ -205,7 +211,7 @@ if [ -n "$ONE" ]; then
   {
     echo "# trirast-synth-result 1"
     echo "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,box_bits,endpoints,seconds"
-    echo "$unit,$name,xilinx7,$(count '^LUT[1-6]$' "$f"),$(count '^FD[RSCPE]*$' "$f"),$(count '^CARRY4$' "$f"),$(count '^RAMB' "$f"),$(count '^DSP48' "$f"),,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    echo "$unit,$name,xilinx7,$(xc7_cells "$f"),,$s,$c,$b,$n,$(($(date +%s) - t0))"
     if [ -n "$fm" ]; then
       p="$WORK/pnr/trad.$name/design.stat"
       echo "$unit,$name,ice40-pnr,$(count '^SB_LUT4$' "$p"),$(count '^SB_DFF' "$p"),$(count '^SB_CARRY$' "$p"),0,0,$fm,$s,$c,$b,$n,$(($(date +%s) - t0))"
@@ -422,58 +428,34 @@ pnr_logic_route() {  # "x ns logic, y ns routing" of the critical path
 }
 
 # ---- docs/synth.csv ----
+csv_unit_rows() {  # csv_unit_rows UNIT CONFIG: its ice40 and xilinx7 rows (empty when not synthesized)
+  local f="$WORK/$2/$1.ice40.stat" fm=""
+  [ -d "$WORK/pnr/$1.$2" ] && fm=$(pnr_fmax "$1.$2")
+  if [ -f "$f" ]; then echo "$1,$2,ice40,$(ice40_cells "$f"),$fm"; else echo "$1,$2,ice40,,,,,,"; fi
+  f="$WORK/$2/$1.xilinx.stat"
+  if [ -f "$f" ]; then echo "$1,$2,xilinx7,$(xc7_cells "$f"),"; else echo "$1,$2,xilinx7,,,,,,"; fi
+}
+csv_wrapped_row() {  # csv_wrapped_row NAME CONFIG PNR_JOB: a placed design's row, if it was placed
+  local f="$WORK/pnr/$3/design.stat"
+  if [ -f "$f" ]; then echo "$1,$2,ice40-wrapped,$(ice40_cells "$f"),$(pnr_fmax "$3")"; fi
+}
 CSV="$ROOT/docs/synth.csv"
 {
   echo "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz"
   for cfg in $CONFIGS; do
-    name="${cfg%%:*}"
-    for unit in $UNITS; do
-      f="$WORK/$name/$unit.ice40.stat"
-      fm=""
-      [ -d "$WORK/pnr/$unit.$name" ] && fm=$(pnr_fmax "$unit.$name")
-      if [ -f "$f" ]; then
-        echo "$unit,$name,ice40,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$fm"
-      else
-        echo "$unit,$name,ice40,,,,,,"
-      fi
-      f="$WORK/$name/$unit.xilinx.stat"
-      if [ -f "$f" ]; then
-        echo "$unit,$name,xilinx7,$(count '^LUT[1-6]$' "$f"),$(count '^FD[RSCPE]*$' "$f"),$(count '^CARRY4$' "$f"),$(count '^RAMB' "$f"),$(count '^DSP48' "$f"),"
-      else
-        echo "$unit,$name,xilinx7,,,,,,"
-      fi
-    done
+    for unit in $UNITS; do csv_unit_rows "$unit" "${cfg%%:*}"; done
   done
   # The half-space unit at the default configuration, one unit name per stamp size.
-  for unit in $HS_UNITS; do
-    f="$WORK/default/$unit.ice40.stat"
-    fm=""
-    [ -d "$WORK/pnr/$unit.default" ] && fm=$(pnr_fmax "$unit.default")
-    if [ -f "$f" ]; then
-      echo "$unit,default,ice40,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$fm"
-    else
-      echo "$unit,default,ice40,,,,,,"
-    fi
-    f="$WORK/default/$unit.xilinx.stat"
-    if [ -f "$f" ]; then
-      echo "$unit,default,xilinx7,$(count '^LUT[1-6]$' "$f"),$(count '^FD[RSCPE]*$' "$f"),$(count '^CARRY4$' "$f"),$(count '^RAMB' "$f"),$(count '^DSP48' "$f"),"
-    else
-      echo "$unit,default,xilinx7,,,,,,"
-    fi
-  done
-  # The stages of the improved unit in their wrappers (iCE40, wrapper flip-flops included).
-  for st in setup walk walk_fifo fifo; do
-    f="$WORK/pnr/improved.$st/design.stat"
-    [ -f "$f" ] && echo "improved.$st,default,ice40-wrapped,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$(pnr_fmax "improved.$st")"
-  done
-  for st in halfspace.setup $(for u in $HS_UNITS; do echo "$u.walker"; done); do
-    f="$WORK/pnr/$st/design.stat"
-    [ -f "$f" ] && echo "$st,default,ice40-wrapped,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$(pnr_fmax "$st")"
+  for unit in $HS_UNITS; do csv_unit_rows "$unit" default; done
+  # Stages in their wrappers (iCE40, wrapper flip-flops included): the improved unit's, the
+  # half-space unit's set-up and walkers.
+  for st in improved.setup improved.walk improved.walk_fifo improved.fifo halfspace.setup \
+            $(for u in $HS_UNITS; do echo "$u.walker"; done); do
+    csv_wrapped_row "$st" default "$st"
   done
   # The whole half-space unit at FIT_CONFIG, placed (no unwrapped synthesis at that configuration).
   for u in $HS_UNITS; do
-    f="$WORK/pnr/$u.$FIT_CONFIG/design.stat"
-    [ -f "$WORK/jobs/pnr.$u.$FIT_CONFIG.status" ] && [ -f "$f" ] && echo "$u,$FIT_CONFIG,ice40-wrapped,$(count '^SB_LUT4$' "$f"),$(count '^SB_DFF' "$f"),$(count '^SB_CARRY$' "$f"),$(count '^SB_RAM40' "$f"),$(count '^SB_MAC16$' "$f"),$(pnr_fmax "$u.$FIT_CONFIG")"
+    [ -f "$WORK/jobs/pnr.$u.$FIT_CONFIG.status" ] && csv_wrapped_row "$u" "$FIT_CONFIG" "$u.$FIT_CONFIG"
   done
   true
 } > "$CSV"
