@@ -10,6 +10,10 @@
 // per-triangle cycles as CSV (index among the file's triangles = the tag, accept, first span,
 // done, spans; the definitions of docs/timing.md: a span's cycle is its pop, an empty box is done
 // in its retire cycle, a job without spans in its last walk cycle), for unit_cycles_check.sh.
+// Both units' span FIFO depth: 8 unless built with -DG2_FIFO_DEPTH=D (a power of two, 1..8).
+`ifndef G2_FIFO_DEPTH
+`define G2_FIFO_DEPTH 8
+`endif
 module g2_unit_tb;
   localparam int P  = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -45,11 +49,11 @@ module g2_unit_tb;
   logic [PB:0] sxe1;
   assign v1 = rst_n && (i1 < n);
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_top #(.NumEndpoints (1), .FifoDepth (8)) u_gen1 (
+  trirast_top #(.NumEndpoints (1), .FifoDepth (`G2_FIFO_DEPTH)) u_gen1 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .cfg_divide_i (1'b0), .cfg_adaptive_i (1'b1), .cfg_endpoints_i (3'd1),
-    .cfg_fifo_depth_i (4'd8),
+    .cfg_fifo_depth_i (4'(`G2_FIFO_DEPTH)),
     .tri_valid_i (v1), .tri_ready_o (r1), .tri_tag_i (TB'(i1)),
     .tri_vx_i (t1[0 +: 3*P]), .tri_vy_i (t1[3*P +: 3*P]),
     .tri_a_i (t1[6*P +: 3*CB]), .tri_b_i (t1[6*P+3*CB +: 3*CB]),
@@ -68,7 +72,7 @@ module g2_unit_tb;
   logic [PB-1:0] sy2, sxb2;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
-  g2_unit #(.FifoDepth (8), .CornerForm (`G2_CORNER_FORM)) u_gen2 (
+  g2_unit #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .tri_valid_i (v2), .tri_ready_o (r2), .tri_tag_i (TB'(i2)),

@@ -5,7 +5,8 @@
 #   scripts/gen2_study/unit_cycles_check.sh [WORKDIR]
 #
 # For each scene of SCENES (default builtin:mixed builtin:highpoly-far), each corner form of FORMS
-# (default 0 1: DSP products, radix 16) and each sink (always ready; ready two cycles of three, the
+# (default 0 1: DSP products, radix 16), each span FIFO depth of DEPTHS (default 8; powers of two
+# up to 8, both units' FifoDepth) and each sink (always ready; ready two cycles of three, the
 # testbench's +stall = --sink-stall periodic:2:1): the scene's triangles go through
 # scripts/gen2_study/g2_unit_tb.sv (Verilator; +cycles=FILE writes g2_unit's accept, first-span
 # and done cycle per triangle) and through `trirast raster --engine improved2-sc --cycles`, and the
@@ -23,6 +24,7 @@ S="$ROOT/scripts/gen2_study"
 TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
 SCENES="${SCENES:-builtin:mixed builtin:highpoly-far}"
 FORMS="${FORMS:-0 1}"
+DEPTHS="${DEPTHS:-8}"
 PKG="$WORK/trirast_pkg.sv"
 [ -x "$TRIRAST" ] || { echo "$ME: $TRIRAST not found (build it or set TRIRAST)" >&2; exit 1; }
 command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
@@ -35,14 +37,16 @@ while read -r f; do
 done < "$R/trirast_improved.f"
 status=0
 for form in $FORMS; do
-  dir="$WORK/unit$form"
+ for depth in $DEPTHS; do
+  dir="$WORK/unit${form}d$depth"
   rm -rf "$dir"
   verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
-    -DG2_CORNER_FORM="$form" "${gen1_srcs[@]}" \
+    -DG2_CORNER_FORM="$form" -DG2_FIFO_DEPTH="$depth" "${gen1_srcs[@]}" \
     "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
     "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" "$S/g2_unit.sv" \
     "$S/g2_unit_tb.sv" --top-module g2_unit_tb -Mdir "$dir" >"$dir.log" 2>&1 ||
     { echo "$ME: Verilator build failed ($dir.log)" >&2; exit 1; }
+ done
 done
 for sc in $SCENES; do
   name="${sc#builtin:}"
@@ -55,20 +59,21 @@ for sc in $SCENES; do
   w="$(echo "$args" | sed -n 's/.*+w=\([0-9]*\).*/\1/p')"
   h="$(echo "$args" | sed -n 's/.*+h=\([0-9]*\).*/\1/p')"
   for form in $FORMS; do
-    cf=$([ "$form" = 0 ] && echo dsp || echo radix16)
+   cf=$([ "$form" = 0 ] && echo dsp || echo radix16)
+   for depth in $DEPTHS; do
     for st in "" +stall; do
       sink=$([ -z "$st" ] && echo none || echo periodic:2:1)
-      tag="$name.form$form${st:+.stall}"
+      tag="$name.form$form.d$depth${st:+.stall}"
       # shellcheck disable=SC2086
-      "$WORK/unit$form/Vg2_unit_tb" +tris="$hex" $args $st +cycles="$WORK/$tag.rtl.csv" \
+      "$WORK/unit${form}d$depth/Vg2_unit_tb" +tris="$hex" $args $st +cycles="$WORK/$tag.rtl.csv" \
         >"$WORK/$tag.rtl.log" 2>&1 || true
       grep -q '^g2_unit_tb: 0 errors' "$WORK/$tag.rtl.log" ||
         { echo "$ME: g2_unit_tb failed on $tag ($WORK/$tag.rtl.log)" >&2; exit 1; }
       SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine improved2-sc --scene "$sc" \
-        --width "$w" --height "$h" --corner-form "$cf" --sink-stall "$sink" --fifo-depth 8 \
+        --width "$w" --height "$h" --corner-form "$cf" --sink-stall "$sink" --fifo-depth "$depth" \
         --endpoints 1 --cycles "$WORK/$tag.model.csv" >/dev/null 2>"$WORK/$tag.model.log" ||
         { echo "$ME: trirast improved2-sc failed on $tag ($WORK/$tag.model.log)" >&2; exit 1; }
-      python3 - "$WORK/$tag.rtl.csv" "$WORK/$tag.model.csv" "$sc, CornerForm $form ($cf), sink $sink" <<'PY' || status=1
+      python3 - "$WORK/$tag.rtl.csv" "$WORK/$tag.model.csv" "$sc, CornerForm $form ($cf), FIFO $depth, sink $sink" <<'PY' || status=1
 import csv, sys
 rtl = list(csv.DictReader(open(sys.argv[1])))
 model = list(csv.DictReader(open(sys.argv[2])))
@@ -95,6 +100,7 @@ print(f"{label}: {min(len(rtl), len(model))} triangles compared, {diffs} differe
 sys.exit(1 if diffs else 0)
 PY
     done
+   done
   done
 done
 exit $status
