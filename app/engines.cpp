@@ -30,10 +30,12 @@ const std::vector<EngineInfo>& engine_registry() {
       {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/trirast_improved.f)", true,
        make_rtl_engine, /*timed=*/true},
       {"improved2-datapath",
-       "second-generation improved unit (issue 13), bit-accurate datapath, untimed (docs/gen2-design.md)",
+       "second-generation improved unit (issue 13), bit-accurate datapath, untimed "
+       "(docs/gen2-design.md)",
        true, make_improved2_unit_engine},
       {"improved2-sc",
-       "second-generation improved unit, SystemC model: its spans plus cycles, N = 1 (docs/gen2-design.md)",
+       "second-generation improved unit, SystemC model: its spans plus cycles, N = 1 "
+       "(docs/gen2-design.md)",
        true, make_improved2_model_engine, /*timed=*/true},
       {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "

@@ -39,8 +39,7 @@ std::map<std::string, uint64_t> expect_equals_golden(const std::vector<InputTria
                                  << d.extra_pixels << " extra pixels";
   EXPECT_EQ(u.work["spans"], u.spans.size()) << what;
   EXPECT_EQ(u.work["triangles"], setup.tris.size()) << what;
-  EXPECT_EQ(u.work["empty_boxes"] + u.work["tiny_boxes"] + u.work["lane_boxes"],
-            setup.tris.size())
+  EXPECT_EQ(u.work["empty_boxes"] + u.work["tiny_boxes"] + u.work["lane_boxes"], setup.tris.size())
       << what;
   return u.work;
 }
@@ -114,8 +113,8 @@ TEST(Improved2Datapath, DirectTestIsTheFourCentreTests) {
         c[i] = i <= box.Xmax && j <= box.Ymax;
         for (int k = 0; k < 3; ++k) {
           const EdgeSetup& e = t.edge[k];
-          c[i] = c[i] && e.eval(pixel_centre(box.x0 + i, cfg), pixel_centre(box.y0 + j, cfg)) +
-                                 e.bias >= 0;
+          c[i] = c[i] &&
+                 e.eval(pixel_centre(box.x0 + i, cfg), pixel_centre(box.y0 + j, cfg)) + e.bias >= 0;
         }
       }
       ASSERT_EQ(d.valid[j], c[0] || c[1]) << "triangle " << n << " row " << j;
@@ -137,11 +136,11 @@ TEST(Improved2Datapath, CornerDigits) {
   TriangleSetup t{};
   for (auto& v : t.v) v = Vec2i{128, 128};
   CornerUnit c(cfg);
-  EXPECT_EQ(c.digits(t, 0, 0), 1);   // all operands 0
-  EXPECT_EQ(c.digits(t, 0, 1), 3);   // 256: 9 bits
-  t.v[2] = Vec2i{128 + 15, 128};     // |dx| = 15: one digit
+  EXPECT_EQ(c.digits(t, 0, 0), 1);  // all operands 0
+  EXPECT_EQ(c.digits(t, 0, 1), 3);  // 256: 9 bits
+  t.v[2] = Vec2i{128 + 15, 128};    // |dx| = 15: one digit
   EXPECT_EQ(c.digits(t, 0, 0), 1);
-  t.v[2] = Vec2i{128 - 16, 128};     // |dx| = 16: two digits
+  t.v[2] = Vec2i{128 - 16, 128};  // |dx| = 16: two digits
   EXPECT_EQ(c.digits(t, 0, 0), 2);
   t.v[1] = Vec2i{128, 128 - (int64_t(1) << 23)};  // 2^23: 24 bits, 6 digits
   EXPECT_EQ(c.digits(t, 0, 0), 6);

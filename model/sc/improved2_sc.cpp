@@ -69,10 +69,10 @@ void Improved2UnitSc::process_run() {
   RunState& r = *run_;
   const std::vector<TriangleSetup>& tris = r.setup->tris;
   quantum_.reset();
-  uint64_t a = r.now();       // the cycle the next triangle is accepted in
-  uint64_t c_free = 0;        // C is free from this cycle (its last triangle's move to L)
-  uint64_t l_free = 0;        // L is free from this cycle (its last job's hand-off)
-  uint64_t w_free = 0;        // the walk stage is idle from this cycle
+  uint64_t a = r.now();  // the cycle the next triangle is accepted in
+  uint64_t c_free = 0;   // C is free from this cycle (its last triangle's move to L)
+  uint64_t l_free = 0;   // L is free from this cycle (its last job's hand-off)
+  uint64_t w_free = 0;   // the walk stage is idle from this cycle
   for (size_t pos = 0; pos < tris.size(); ++pos) {
     const TriangleSetup& t = tris[pos];
     TriangleCycles& rec = r.tri(pos);
@@ -88,11 +88,11 @@ void Improved2UnitSc::process_run() {
       rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
       a = a + 1;
     } else {
-      const uint64_t k = G2BoxStage::take(a, c_free);            // B -> C
+      const uint64_t k = G2BoxStage::take(a, c_free);  // B -> C
       const uint64_t cr = corner_stage.ready(k, x_);
-      const uint64_t m = std::max(cr, l_free);                    // C -> L
+      const uint64_t m = std::max(cr, l_free);  // C -> L
       const uint64_t ready = G2JobStage::ready(m, x_);
-      const uint64_t h = std::max(ready, w_free);                 // L -> W (hand-off)
+      const uint64_t h = std::max(ready, w_free);  // L -> W (hand-off)
       box_stage.counters.busy += k - a;
       box_stage.counters.stall += k - (a + 1);
       corner_stage.counters.busy += m - k;

@@ -18,10 +18,9 @@
 #include <memory>
 #include <string>
 #include <systemc>
-#include <tlm_utils/tlm_quantumkeeper.h>
 
 #include "sc/span_fifo.hpp"
-#include "sc/stage_skeleton.hpp"
+#include "sc/stage_skeleton.hpp"  // and the quantum keeper (tlm_utils/tlm_quantumkeeper.h)
 #include "unit/improved2_unit.hpp"
 
 namespace trirast::sc {
@@ -49,7 +48,10 @@ class G2BoxStage : public sc_core::sc_module {
 class G2CornerStage : public sc_core::sc_module {
  public:
   explicit G2CornerStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
-  void configure(int form) { form_ = form; counters = {}; }
+  void configure(int form) {
+    form_ = form;
+    counters = {};
+  }
   uint64_t ready(uint64_t k, const Improved2Triangle& x) const {
     if (form_ == 0) return k + 1;
     if (x.tiny) return k + 1 + uint64_t(x.corner_digits_l);
@@ -72,7 +74,7 @@ class G2JobStage : public sc_core::sc_module {
   static uint64_t ready(uint64_t m, const Improved2Triangle& x) {
     return x.tiny ? m + 1 : m + 1 + x.lane_cycles;
   }
-  StageCounters counters;   // busy: lane cycles; stall: cycles a ready job waited for W
+  StageCounters counters;  // busy: lane cycles; stall: cycles a ready job waited for W
   uint64_t lane_busy[3] = {0, 0, 0};
 };
 

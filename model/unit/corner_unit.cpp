@@ -33,8 +33,7 @@ void CornerUnit::run(const TriangleSetup& t, InterfaceOut& box, const InterfaceO
     e.E_L = corner_value(t, k, box.x0, box.y0);
     e.E_R = e.E_L + box.Xmax * e.a;
     if (e.E_L != gen1.edge[k].E_L || e.E_R != gen1.edge[k].E_R)
-      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " +
-                             std::to_string(k) +
+      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " + std::to_string(k) +
                              ": vertex-relative corner values differ from the interface's");
   }
 }

@@ -20,13 +20,13 @@
 namespace trirast {
 
 struct Gen2LaneWork {
-  int m = 0;               // iterations of an x division
-  int64_t steps = 0;       // T: traversal row steps
-  bool enters = false;     // the edge enters the box (an entry division runs)
+  int m = 0;            // iterations of an x division
+  int64_t steps = 0;    // T: traversal row steps
+  bool enters = false;  // the edge enters the box (an entry division runs)
   bool slope_saturated = false;
   bool entry_saturated = false;
-  uint64_t iterations = 0; // divider iterations run (slope + entry)
-  uint64_t cycles = 0;     // L_k: from the cycle after the load to the first done cycle
+  uint64_t iterations = 0;  // divider iterations run (slope + entry)
+  uint64_t cycles = 0;      // L_k: from the cycle after the load to the first done cycle
 };
 
 class Gen2Lane {

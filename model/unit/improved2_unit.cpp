@@ -54,8 +54,8 @@ void Improved2Unit::run_triangle(const TriangleSetup& t, Improved2Triangle& r) {
     for (int j = 0; j < rows; ++j) {
       Improved2Row row{j, d.valid[j], Span{}};
       if (d.valid[j]) {
-        row.span = Span{t.index, int32_t(b.y0 + j), int32_t(b.x0 + d.begin[j]),
-                        int32_t(b.x0 + d.end[j])};
+        row.span =
+            Span{t.index, int32_t(b.y0 + j), int32_t(b.x0 + d.begin[j]), int32_t(b.x0 + d.end[j])};
         ++r.spans;
         r.pixels += uint64_t(d.end[j] - d.begin[j]);
       }
@@ -72,8 +72,8 @@ void Improved2Unit::run_triangle(const TriangleSetup& t, Improved2Triangle& r) {
     r.lane[k] = Gen2Lane::run(norm[k], b.Xmax, b.Ymax);
     if (uint64_t(r.lane[k].steps) != walker_[k].work().boundary_steps ||
         r.lane[k].enters != walker_[k].state().enters)
-      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " +
-                             std::to_string(k) + ": the gen2 lane's traversal differs from gen1's");
+      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " + std::to_string(k) +
+                             ": the gen2 lane's traversal differs from gen1's");
     r.lane_cycles = std::max(r.lane_cycles, r.lane[k].cycles);
   }
   // W: one row per step, the three walkers in lock step.
@@ -100,8 +100,8 @@ class Improved2Engine : public Engine {
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
     Improved2Unit unit(cfg);
     Improved2Triangle r;
-    uint64_t empty = 0, tiny = 0, lanes = 0, iters = 0, steps = 0, rows = 0, stepped = 0,
-             spans = 0, pixels = 0;
+    uint64_t empty = 0, tiny = 0, lanes = 0, iters = 0, steps = 0, rows = 0, stepped = 0, spans = 0,
+             pixels = 0;
     for (const TriangleSetup& t : setup.tris) {
       unit.run_triangle(t, r);
       for (const Improved2Row& row : r.rows)

@@ -40,12 +40,12 @@ struct Improved2Row {
 
 // Everything the gen2 unit computed for one triangle.
 struct Improved2Triangle {
-  InterfaceOut box;            // B and C: the box, E_L, E_R
-  bool tiny = false;           // the direct 2x2 test took it (no lanes)
-  int corner_digits_l = 0;     // digit-serial corner unit: run length for E_L (at x0)
-  int corner_digits_r = 0;     // and for E_R (at x0 + Xmax; lane boxes only)
-  Gen2LaneWork lane[3];        // lane boxes: each lane's work and cycles
-  uint64_t lane_cycles = 0;    // max of the three lanes' cycles
+  InterfaceOut box;                // B and C: the box, E_L, E_R
+  bool tiny = false;               // the direct 2x2 test took it (no lanes)
+  int corner_digits_l = 0;         // digit-serial corner unit: run length for E_L (at x0)
+  int corner_digits_r = 0;         // and for E_R (at x0 + Xmax; lane boxes only)
+  Gen2LaneWork lane[3];            // lane boxes: each lane's work and cycles
+  uint64_t lane_cycles = 0;        // max of the three lanes' cycles
   std::vector<Improved2Row> rows;  // the rows the walk stage goes through, in order
   uint64_t spans = 0, pixels = 0, rows_stepped = 0;
 };

@@ -66,7 +66,8 @@ TEST(ScImproved2, FirstTrianglesOfMixedAsTheRtl) {
   RasterConfig cfg;
   const EngineResult r = run_model(builtin_setup("mixed", cfg), cfg);
   ASSERT_GE(r.cycles.size(), 4u);
-  const uint64_t want[4][4] = {{0, 29, 38, 10}, {1, 43, 52, 10}, {12, 57, 66, 10}, {26, 71, 80, 10}};
+  const uint64_t want[4][4] = {
+      {0, 29, 38, 10}, {1, 43, 52, 10}, {12, 57, 66, 10}, {26, 71, 80, 10}};
   for (int i = 0; i < 4; ++i) {
     SCOPED_TRACE(i);
     EXPECT_EQ(r.cycles[i].accept_cycle, want[i][0]);
