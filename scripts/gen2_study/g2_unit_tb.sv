@@ -3,7 +3,8 @@
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
 // divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
 // +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready (+stall:
-// both sinks ready in two cycles of three, the same pattern); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
+// both sinks ready in two cycles of three, the same pattern; +rseed=S +rpct=P: both ready as
+// trirast's --sink-stall random:S:P, model/core/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
 // Prints "g2_unit_tb: N errors" (0 = the sequences are equal). +cycles=FILE writes g2_unit's
@@ -38,7 +39,21 @@ module g2_unit_tb;
   logic [TriBits-1:0] t1, t2;
   assign t1 = tris[(i1 < n) ? i1 : 0];
   assign t2 = tris[(i2 < n) ? i2 : 0];
-  assign sready = !stall || (cyc % 3 != 2);
+  // --sink-stall random:SEED:PERCENT (model/core/sink_pattern.cpp's sink_mix: splitmix64).
+  bit rsink;
+  longint unsigned rseed;
+  int rpct;
+  function automatic longint unsigned sink_mix(input longint unsigned seed,
+                                               input longint unsigned c);
+    longint unsigned z;
+    z = seed * 64'h9E3779B97F4A7C15 + c;
+    z += 64'h9E3779B97F4A7C15;
+    z = (z ^ (z >> 30)) * 64'hBF58476D1CE4E5B9;
+    z = (z ^ (z >> 27)) * 64'h94D049BB133111EB;
+    return z ^ (z >> 31);
+  endfunction
+  assign sready = rsink ? (sink_mix(rseed, longint'(cyc)) % 100 >= longint'(rpct))
+                        : (!stall || (cyc % 3 != 2));
 
   // ---- gen1 ----
   logic v1, r1, sv1, retire1, walk_busy1;
@@ -131,6 +146,7 @@ module g2_unit_tb;
       $finish;
     end
     stall = $test$plusargs("stall");
+    rsink = $value$plusargs("rseed=%d", rseed) && $value$plusargs("rpct=%d", rpct);
     for (int k = 0; k < n; k++) begin
       acc2[k] = -1;  first2[k] = -1;  done2[k] = -1;  wlast2[k] = -1;  nsp2[k] = 0;
     end
@@ -187,7 +203,8 @@ module g2_unit_tb;
         $fclose(fd);
       end
     end
-    if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
+    if (rsink) $write("g2_unit_tb: sink random:%0d:%0d: ", rseed, rpct);
+    else if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
     else $write("g2_unit_tb: ");
     $display("%0d triangles, %0d spans, %0d empty boxes; cycles gen1 %0d (%.2f per triangle), gen2 %0d (%.2f per triangle)",
              n, q1.size(), retires1, end1, real'(end1) / n, end2, real'(end2) / n);

@@ -7,7 +7,8 @@
 # For each scene of SCENES (default builtin:mixed builtin:highpoly-far), each corner form of FORMS
 # (default 0 1: DSP products, radix 16), each span FIFO depth of DEPTHS (default 8; powers of two
 # up to 8, both units' FifoDepth) and each sink (always ready; ready two cycles of three, the
-# testbench's +stall = --sink-stall periodic:2:1): the scene's triangles go through
+# testbench's +stall = --sink-stall periodic:2:1; and random:SEED:PERCENT for each SEED:PERCENT of
+# RSINKS, default none, the testbench's +rseed=SEED +rpct=PERCENT): the scene's triangles go through
 # scripts/gen2_study/g2_unit_tb.sv (Verilator; +cycles=FILE writes g2_unit's accept, first-span
 # and done cycle per triangle) and through `trirast raster --engine improved2-sc --cycles`, and the
 # two CSVs are compared row by row (the testbench's index is the triangle's position among the
@@ -25,6 +26,7 @@ TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
 SCENES="${SCENES:-builtin:mixed builtin:highpoly-far}"
 FORMS="${FORMS:-0 1}"
 DEPTHS="${DEPTHS:-8}"
+RSINKS="${RSINKS:-}"
 PKG="$WORK/trirast_pkg.sv"
 [ -x "$TRIRAST" ] || { echo "$ME: $TRIRAST not found (build it or set TRIRAST)" >&2; exit 1; }
 command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
@@ -61,9 +63,16 @@ for sc in $SCENES; do
   for form in $FORMS; do
    cf=$([ "$form" = 0 ] && echo dsp || echo radix16)
    for depth in $DEPTHS; do
-    for st in "" +stall; do
-      sink=$([ -z "$st" ] && echo none || echo periodic:2:1)
-      tag="$name.form$form.d$depth${st:+.stall}"
+    # Sinks: always ready; two cycles of three; each SEED:PERCENT of RSINKS as random:SEED:PERCENT.
+    sinks=("none" "periodic:2:1")
+    for rs in $RSINKS; do sinks+=("random:$rs"); done
+    for sink in "${sinks[@]}"; do
+      case "$sink" in
+        none) st="" ;;
+        periodic:2:1) st="+stall" ;;
+        random:*) rs="${sink#random:}"; st="+rseed=${rs%%:*} +rpct=${rs#*:}" ;;
+      esac
+      tag="$name.form$form.d$depth.${sink//:/_}"
       # shellcheck disable=SC2086
       "$WORK/unit${form}d$depth/Vg2_unit_tb" +tris="$hex" $args $st +cycles="$WORK/$tag.rtl.csv" \
         >"$WORK/$tag.rtl.log" 2>&1 || true

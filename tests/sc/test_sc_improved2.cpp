@@ -89,6 +89,7 @@ TEST(ScImproved2, SceneTotalsAsTheRtl) {
       {"mixed", 0, "none", 107660},        {"mixed", 0, "periodic:2:1", 118397},
       {"mixed", 1, "none", 113495},        {"mixed", 1, "periodic:2:1", 124232},
       {"highpoly-far", 0, "none", 194162}, {"highpoly-far", 1, "periodic:2:1", 315016},
+      {"mixed", 1, "random:5:40", 128612}, {"highpoly-far", 0, "random:9:75", 250258},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.scene) + " form " + std::to_string(c.form) + " " + c.sink);
