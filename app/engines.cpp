@@ -9,6 +9,7 @@
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
 #include "unit/halfspace_unit.hpp"
+#include "unit/improved2_unit.hpp"
 #include "unit/improved_unit.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "verilator/rtl_hs_engine.hpp"
@@ -28,6 +29,14 @@ const std::vector<EngineInfo>& engine_registry() {
        true, make_model_engine, /*timed=*/true},
       {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/trirast_improved.f)", true,
        make_rtl_engine, /*timed=*/true},
+      {"improved2-datapath",
+       "second-generation improved unit (issue 13), bit-accurate datapath, untimed "
+       "(docs/gen2-design.md)",
+       true, make_improved2_unit_engine},
+      {"improved2-sc",
+       "second-generation improved unit, SystemC model: its spans plus cycles, N = 1 "
+       "(docs/gen2-design.md)",
+       true, make_improved2_model_engine, /*timed=*/true},
       {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "
        "coverage, not the rule",

@@ -57,6 +57,7 @@ std::vector<OptionSpec> scene_options() {
       {"--stamp", "S", "half-space unit: stamp of S x S pixels tested per cycle, 1 | 2 | 4", "2"},
       {"--tile", "T", "half-space unit: tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
       {"--hs-walk", "ORDER", "half-space unit: tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
+      {"--corner-form", "FORM", "gen2 improved unit (improved2-*): corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
       {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
@@ -87,6 +88,7 @@ RasterConfig config_from(const Args& a) {
     cfg.cull = parse_cull_mode(a.get("--cull"));
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
     cfg.divider = parse_divider_mode(a.get("--divider"));
+    cfg.g2_corner_form = parse_corner_form(a.get("--corner-form"));
     cfg.validate();
   } catch (const std::invalid_argument& e) {
     throw UsageError("trirast " + a.command() + ": " + e.what());

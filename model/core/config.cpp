@@ -49,6 +49,14 @@ HsWalk parse_hs_walk(const std::string& text) {
 
 const char* hs_walk_name(HsWalk walk) { return walk == HsWalk::Zigzag ? "zigzag" : "row"; }
 
+int parse_corner_form(const std::string& text) {
+  if (text == "dsp") return 0;
+  if (text == "radix16") return 1;
+  throw std::invalid_argument("--corner-form: expected dsp or radix16, got '" + text + "'");
+}
+
+const char* corner_form_name(int form) { return form == 0 ? "dsp" : "radix16"; }
+
 void RasterConfig::validate() const {
   if (width < 1 || width > kMaxViewport)
     throw std::invalid_argument("--width: " + std::to_string(width) + " is outside 1.." +
@@ -80,6 +88,9 @@ void RasterConfig::validate() const {
     throw std::invalid_argument("--fifo-depth: " + std::to_string(fifo_depth) + " is outside " +
                                 std::to_string(endpoints) + "..1024 (at least --endpoints)");
   SinkPattern::parse(sink_stall);  // throws with a message naming --sink-stall
+  if (g2_corner_form != 0 && g2_corner_form != 1)
+    throw std::invalid_argument("--corner-form: " + std::to_string(g2_corner_form) +
+                                " is not 0 (dsp) or 1 (radix16)");
   if (hs_stamp != 1 && hs_stamp != 2 && hs_stamp != 4)
     throw std::invalid_argument("--stamp: " + std::to_string(hs_stamp) + " is not 1, 2 or 4");
   if (hs_tile != 0 && hs_tile != 8 && hs_tile != 16)

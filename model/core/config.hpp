@@ -29,6 +29,11 @@ enum class HsWalk { Row, Zigzag };
 HsWalk parse_hs_walk(const std::string& text);
 const char* hs_walk_name(HsWalk walk);
 
+// The gen2 unit's corner form: "dsp" (0) | "radix16" (1); throws std::invalid_argument naming
+// --corner-form otherwise.
+int parse_corner_form(const std::string& text);
+const char* corner_form_name(int form);
+
 // Parses "none" | "back" | "front"; throws std::invalid_argument otherwise.
 CullMode parse_cull_mode(const std::string& text);
 const char* cull_mode_name(CullMode mode);
@@ -55,6 +60,11 @@ struct RasterConfig {
   int hs_stamp = 2;                 // S: the stamp tester tests S x S pixels per cycle (1, 2, 4)
   int hs_tile = 8;                  // T: tile edge for hierarchical rejection (8, 16; 0 = none)
   HsWalk hs_walk = HsWalk::Zigzag;  // tile order
+
+  // ---- the second-generation improved unit's build choice (improved2-*, docs/gen2-design.md) ----
+  // How its corner stage forms the corner values: 0 = DSP products in one cycle (the xc7 form),
+  // 1 = digit-serial, MSB first, radix 16 (the iCE40 HX form, the default).
+  int g2_corner_form = 1;
 
   // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
   int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)

@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "sc/halfspace_sc.hpp"
+#include "sc/improved2_sc.hpp"
 #include "sc/improved_sc.hpp"
 #include "sc/trad_sc.hpp"
 #include "unit/improved_unit.hpp"
@@ -20,7 +21,7 @@ bool quiet_systemc() {
   return true;
 }
 
-enum class Unit { Improved, Trad, Halfspace };
+enum class Unit { Improved, Trad, Halfspace, Improved2 };
 
 // Both units, elaborated together on first use (SystemC elaborates once per process).
 struct World {
@@ -28,6 +29,7 @@ struct World {
   ImprovedUnitSc improved{"improved"};
   TradUnitSc trad{"trad"};
   HalfspaceUnitSc halfspace{"halfspace"};
+  Improved2UnitSc improved2{"improved2"};
 
   static World& get() {
     static World w;
@@ -36,6 +38,7 @@ struct World {
   UnitScIf& unit(Unit u) {
     if (u == Unit::Improved) return improved;
     if (u == Unit::Halfspace) return halfspace;
+    if (u == Unit::Improved2) return improved2;
     return trad;
   }
 };
@@ -103,6 +106,15 @@ class ScEngine : public Engine {
     cfg.validate();
     if (unit_ == Unit::Improved) ImprovedUnit check(cfg);  // the datapath's width limits
     if (unit_ == Unit::Halfspace) HalfspaceUnit check(cfg);
+    if (unit_ == Unit::Improved2) {
+      // The whole-unit prototype it follows (scripts/gen2_study/g2_unit.sv) has one walk slice.
+      if (cfg.endpoints != 1)
+        throw std::invalid_argument("--endpoints: improved2-sc models N = 1 only (got " +
+                                    std::to_string(cfg.endpoints) + ")");
+      if (!cfg.trace_path.empty())
+        throw std::invalid_argument("--trace: improved2-sc has no trace yet");
+      Improved2Unit check(cfg);
+    }
     const double secs = simulate(unit_, setup, cfg, out, nullptr);
     World::get().unit(unit_).add_counters(out.work);
     out.work["triangles"] += setup.tris.size();
@@ -129,6 +141,11 @@ std::unique_ptr<Engine> make_halfspace_model_engine() {
   static volatile auto keep = &sc_main;
   (void)keep;
   return std::make_unique<sc::ScEngine>(sc::Unit::Halfspace);
+}
+std::unique_ptr<Engine> make_improved2_model_engine() {
+  static volatile auto keep = &sc_main;
+  (void)keep;
+  return std::make_unique<sc::ScEngine>(sc::Unit::Improved2);
 }
 std::unique_ptr<Engine> make_trad_model_engine() {
   return std::make_unique<sc::ScEngine>(sc::Unit::Trad);

@@ -10,6 +10,8 @@ namespace trirast {
 
 // The improved-Bresenham unit, timed (register as "improved-sc").
 std::unique_ptr<Engine> make_model_engine();
+// The second-generation improved unit, timed, N = 1 (register as "improved2-sc").
+std::unique_ptr<Engine> make_improved2_model_engine();
 // The traditional-Bresenham unit, timed: the spans of make_trad_engine() plus cycles
 // (register as "trad-sc").
 std::unique_ptr<Engine> make_trad_model_engine();

@@ -3,10 +3,18 @@
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
 // divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
 // +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready (+stall:
-// both sinks ready in two cycles of three, the same pattern); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
+// both sinks ready in two cycles of three, the same pattern; +rseed=S +rpct=P: both ready as
+// trirast's --sink-stall random:S:P, model/core/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
-// Prints "g2_unit_tb: N errors" (0 = the sequences are equal).
+// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). +cycles=FILE writes g2_unit's
+// per-triangle cycles as CSV (index among the file's triangles = the tag, accept, first span,
+// done, spans; the definitions of docs/timing.md: a span's cycle is its pop, an empty box is done
+// in its retire cycle, a job without spans in its last walk cycle), for unit_cycles_check.sh.
+// Both units' span FIFO depth: 8 unless built with -DG2_FIFO_DEPTH=D (a power of two, 1..8).
+`ifndef G2_FIFO_DEPTH
+`define G2_FIFO_DEPTH 8
+`endif
 module g2_unit_tb;
   localparam int P  = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -31,7 +39,21 @@ module g2_unit_tb;
   logic [TriBits-1:0] t1, t2;
   assign t1 = tris[(i1 < n) ? i1 : 0];
   assign t2 = tris[(i2 < n) ? i2 : 0];
-  assign sready = !stall || (cyc % 3 != 2);
+  // --sink-stall random:SEED:PERCENT (model/core/sink_pattern.cpp's sink_mix: splitmix64).
+  bit rsink;
+  longint unsigned rseed;
+  int rpct;
+  function automatic longint unsigned sink_mix(input longint unsigned seed,
+                                               input longint unsigned c);
+    longint unsigned z;
+    z = seed * 64'h9E3779B97F4A7C15 + c;
+    z += 64'h9E3779B97F4A7C15;
+    z = (z ^ (z >> 30)) * 64'hBF58476D1CE4E5B9;
+    z = (z ^ (z >> 27)) * 64'h94D049BB133111EB;
+    return z ^ (z >> 31);
+  endfunction
+  assign sready = rsink ? (sink_mix(rseed, longint'(cyc)) % 100 >= longint'(rpct))
+                        : (!stall || (cyc % 3 != 2));
 
   // ---- gen1 ----
   logic v1, r1, sv1, retire1, walk_busy1;
@@ -42,11 +64,11 @@ module g2_unit_tb;
   logic [PB:0] sxe1;
   assign v1 = rst_n && (i1 < n);
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_top #(.NumEndpoints (1), .FifoDepth (8)) u_gen1 (
+  trirast_top #(.NumEndpoints (1), .FifoDepth (`G2_FIFO_DEPTH)) u_gen1 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .cfg_divide_i (1'b0), .cfg_adaptive_i (1'b1), .cfg_endpoints_i (3'd1),
-    .cfg_fifo_depth_i (4'd8),
+    .cfg_fifo_depth_i (4'(`G2_FIFO_DEPTH)),
     .tri_valid_i (v1), .tri_ready_o (r1), .tri_tag_i (TB'(i1)),
     .tri_vx_i (t1[0 +: 3*P]), .tri_vy_i (t1[3*P +: 3*P]),
     .tri_a_i (t1[6*P +: 3*CB]), .tri_b_i (t1[6*P+3*CB +: 3*CB]),
@@ -65,7 +87,7 @@ module g2_unit_tb;
   logic [PB-1:0] sy2, sxb2;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
-  g2_unit #(.FifoDepth (8), .CornerForm (`G2_CORNER_FORM)) u_gen2 (
+  g2_unit #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .tri_valid_i (v2), .tri_ready_o (r2), .tri_tag_i (TB'(i2)),
@@ -75,6 +97,11 @@ module g2_unit_tb;
     .span_valid_o (sv2), .span_ready_i (sready), .span_tag_o (stag2), .span_y_o (sy2),
     .span_x_begin_o (sxb2), .span_x_end_o (sxe2),
     .box_retire_o (retire2), .box_retire_tag_o (rtag2), .busy_o (busy2));
+
+  // g2_unit's per-triangle cycles (+cycles=FILE).
+  longint acc2 [MaxTris], first2 [MaxTris], done2 [MaxTris], wlast2 [MaxTris];
+  int nsp2 [MaxTris];
+  string cycles_path;
 
   logic [SpanBits-1:0] q1 [$], q2 [$];
   longint end1 = -1, end2 = -1, retires1 = 0, retires2 = 0;
@@ -88,6 +115,17 @@ module g2_unit_tb;
       if (v2 && r2) i2 <= i2 + 1;
       if (sv1 && sready) q1.push_back({stag1, sy1, sxb1, sxe1});
       if (sv2 && sready) q2.push_back({stag2, sy2, sxb2, sxe2});
+      if (v2 && r2) acc2[i2] = cyc;
+      if (sv2 && sready) begin
+        if (nsp2[stag2] == 0) first2[stag2] = cyc;
+        done2[stag2] = cyc;
+        nsp2[stag2]++;
+      end
+      if (retire2) begin
+        first2[rtag2] = cyc;
+        done2[rtag2] = cyc;
+      end
+      if (u_gen2.u_walk.last) wlast2[u_gen2.u_walk.tag_q] = cyc;
       if (retire1) retires1++;
       if (retire2) retires2++;
       if (idle1 && end1 < 0) end1 = cyc;
@@ -108,6 +146,10 @@ module g2_unit_tb;
       $finish;
     end
     stall = $test$plusargs("stall");
+    rsink = $value$plusargs("rseed=%d", rseed) && $value$plusargs("rpct=%d", rpct);
+    for (int k = 0; k < n; k++) begin
+      acc2[k] = -1;  first2[k] = -1;  done2[k] = -1;  wlast2[k] = -1;  nsp2[k] = 0;
+    end
     $readmemh(path, tris, 0, n - 1);
     i1 = 0;
     i2 = 0;
@@ -143,7 +185,26 @@ module g2_unit_tb;
       $display("g2_unit_tb: empty boxes retired: gen1 %0d, gen2 %0d", retires1, retires2);
       errors++;
     end
-    if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
+    if ($value$plusargs("cycles=%s", cycles_path)) begin
+      int fd;
+      fd = $fopen(cycles_path, "w");
+      if (fd == 0) begin
+        $display("g2_unit_tb: cannot write %s", cycles_path);
+        errors++;
+      end else begin
+        $fdisplay(fd, "index,accept_cycle,first_span_cycle,done_cycle,spans");
+        for (int k = 0; k < n; k++) begin
+          if (first2[k] < 0) begin   // walked, no span: done in its last walk cycle
+            first2[k] = wlast2[k];
+            done2[k] = wlast2[k];
+          end
+          $fdisplay(fd, "%0d,%0d,%0d,%0d,%0d", k, acc2[k], first2[k], done2[k], nsp2[k]);
+        end
+        $fclose(fd);
+      end
+    end
+    if (rsink) $write("g2_unit_tb: sink random:%0d:%0d: ", rseed, rpct);
+    else if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
     else $write("g2_unit_tb: ");
     $display("%0d triangles, %0d spans, %0d empty boxes; cycles gen1 %0d (%.2f per triangle), gen2 %0d (%.2f per triangle)",
              n, q1.size(), retires1, end1, real'(end1) / n, end2, real'(end2) / n);

@@ -1,0 +1,121 @@
+// The SystemC model of the second-generation improved unit (issue 13; docs/gen2-design.md, "The
+// C++ datapath and SystemC model"), cycle for cycle the whole-unit prototype
+// scripts/gen2_study/g2_unit.sv (N = 1):
+//
+//   source -> [B] box stage -> [C] corner stage (DSP or digit-serial) -> [L] job register + three
+//             lanes (or the direct 2x2 test's row spans) -> [W] walk stage, registered push ->
+//             span_fifo -> span_sink
+//
+// Each stage holds one triangle (a register with a full flag) and passes it on in the first cycle
+// the next one is free or frees itself in that cycle, so the stages' cycles follow from one
+// another in acceptance order; one process (the unit's) computes them triangle by triangle with
+// the datapath of model/unit/improved2_unit.hpp, stamps the spans with their push cycles into the
+// shared span FIFO (span_fifo.hpp, which knows each pop cycle), and keeps SystemC time through a
+// quantum keeper as the first generation's setup stage does (stage_skeleton.hpp).
+#pragma once
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <systemc>
+
+#include "sc/span_fifo.hpp"
+#include "sc/stage_skeleton.hpp"  // and the quantum keeper (tlm_utils/tlm_quantumkeeper.h)
+#include "unit/improved2_unit.hpp"
+
+namespace trirast::sc {
+
+// [B] The box stage: the triangle register, box, clip and empty test in one cycle. A triangle
+// accepted in a is in B from a + 1: an empty box retires in a + 1, any other moves to C in the
+// first cycle k >= a + 1 in which C is free (C empty, or C's triangle moving on in k). The port
+// accepts the next triangle in the cycle B's leaves (ready = B empty, retiring or moving).
+class G2BoxStage : public sc_core::sc_module {
+ public:
+  explicit G2BoxStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
+  // The cycle triangle accepted in a moves to C, C being free from c_free on.
+  static uint64_t take(uint64_t a, uint64_t c_free) { return std::max(a + 1, c_free); }
+  StageCounters counters;  // busy: cycles holding a triangle; stall: of them waiting for C
+};
+
+// [C] The corner stage: E_L (and E_R) of the triangle that entered in k. Ready (its values valid
+// for L) in:
+//   DSP products (CornerForm 0):   k + 1
+//   digit-serial, radix 16 (CornerForm 1): started in k (the operands from B's box), dl digits:
+//     a box for the direct test  k + 1 + dl
+//     a box for the lanes        k + 3 + dl + dr (a second run at x0 + Xmax for E_R: the start
+//                                cycle after the first run's last, then dr digits)
+// It moves to L in the first cycle >= ready in which L is free.
+class G2CornerStage : public sc_core::sc_module {
+ public:
+  explicit G2CornerStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
+  void configure(int form) {
+    form_ = form;
+    counters = {};
+  }
+  uint64_t ready(uint64_t k, const Improved2Triangle& x) const {
+    if (form_ == 0) return k + 1;
+    if (x.tiny) return k + 1 + uint64_t(x.corner_digits_l);
+    return k + 3 + uint64_t(x.corner_digits_l) + uint64_t(x.corner_digits_r);
+  }
+  int form() const { return form_; }
+  StageCounters counters;  // busy: cycles holding a triangle; stall: of them waiting for L
+
+ private:
+  int form_ = 1;
+};
+
+// [L] The job register and the three redesigned lanes: a triangle moved from C in m is in L
+// from m + 1; a direct-test job can be handed to the walk stage from m + 1, a lane job from
+// m + 1 + max_k L_k (Gen2Lane's cycles); it is handed off in the first such cycle the walk stage
+// is idle, and L is free again in that cycle.
+class G2JobStage : public sc_core::sc_module {
+ public:
+  explicit G2JobStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
+  static uint64_t ready(uint64_t m, const Improved2Triangle& x) {
+    return x.tiny ? m + 1 : m + 1 + x.lane_cycles;
+  }
+  StageCounters counters;  // busy: lane cycles; stall: cycles a ready job waited for W
+  uint64_t lane_busy[3] = {0, 0, 0};
+};
+
+// [W] The retimed walk stage (g2_unit_walk.sv): loaded in h, it processes one row per cycle from
+// h + 1, a row in the first cycle t in which count + push + 1 <= DEPTH (count: the FIFO's
+// occupancy at the start of t; push: the span registered in t - 1, pushed in t); a row's span is
+// registered and pushed into the FIFO in t + 1. Idle from the cycle after its last row.
+class G2WalkStage : public sc_core::sc_module {
+ public:
+  explicit G2WalkStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
+  StageCounters counters;
+};
+
+class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
+ public:
+  SC_HAS_PROCESS(Improved2UnitSc);
+  explicit Improved2UnitSc(sc_core::sc_module_name name);
+
+  void run(RunState& r) override;
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
+
+  SpanSink sink;
+  SpanFifo fifo;
+  G2BoxStage box_stage;
+  G2CornerStage corner_stage;
+  G2JobStage job_stage;
+  G2WalkStage walk_stage;
+
+ private:
+  void thread();
+  void process_run();
+  // Walks job x (setup position pos) loaded in h; returns its last row's cycle.
+  uint64_t walk(const Improved2Triangle& x, size_t pos, uint64_t h, TriangleCycles& rec);
+
+  RunState* run_ = nullptr;
+  std::unique_ptr<Improved2Unit> unit_;
+  Improved2Triangle x_;
+  tlm_utils::tlm_quantumkeeper quantum_;
+  bool pending_ = false;
+  sc_core::sc_event start_ev_;
+  uint64_t tiny_ = 0, lanes_ = 0, empty_ = 0, iterations_ = 0, steps_ = 0, rows_ = 0;
+};
+
+}  // namespace trirast::sc

@@ -1,0 +1,41 @@
+#include "unit/corner_unit.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/fixed_point.hpp"
+
+namespace trirast {
+
+CornerUnit::CornerUnit(const RasterConfig& cfg) : cfg_(cfg) {}
+
+int64_t CornerUnit::corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const {
+  const int64_t dx = pixel_centre(x0, cfg_) - t.v[k].x;
+  const int64_t dy = pixel_centre(y0, cfg_) - t.v[k].y;
+  return t.edge[k].A * dx + t.edge[k].B * dy + t.edge[k].bias;
+}
+
+int CornerUnit::digits(const TriangleSetup& t, int64_t x0, int64_t y0) const {
+  uint64_t any = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int64_t dx = pixel_centre(x0, cfg_) - t.v[k].x;
+    const int64_t dy = pixel_centre(y0, cfg_) - t.v[k].y;
+    any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
+  }
+  const int bits = unsigned_bits(any);
+  return std::max(1, (bits + kDigitBits - 1) / kDigitBits);
+}
+
+void CornerUnit::run(const TriangleSetup& t, InterfaceOut& box, const InterfaceOut& gen1) const {
+  for (int k = 0; k < 3; ++k) {
+    InterfaceEdge& e = box.edge[k];
+    e.E_L = corner_value(t, k, box.x0, box.y0);
+    e.E_R = e.E_L + box.Xmax * e.a;
+    if (e.E_L != gen1.edge[k].E_L || e.E_R != gen1.edge[k].E_R)
+      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " + std::to_string(k) +
+                             ": vertex-relative corner values differ from the interface's");
+  }
+}
+
+}  // namespace trirast

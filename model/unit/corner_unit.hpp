@@ -1,0 +1,34 @@
+// The second-generation unit's corner stage (docs/gen2-design.md, "The C++ datapath and SystemC
+// model"): vertex-relative corner values, E_L = A*(cx0 - vx) + B*(cy0 - vy) + bias per edge (no C:
+// E vanishes at the edge's own vertex vx, vy), and E_R = E_L + Xmax*a. The same values as gen1's
+// interface (E(c) + bias, unit/interface.hpp); the hardware forms them either as DSP products in
+// one cycle or digit-serially, MSB first, 4 operand bits per cycle
+// (scripts/gen2_study/g2_corner_msb.sv, DigitBits 4), whose run length is digits().
+#pragma once
+#include <cstdint>
+
+#include "core/config.hpp"
+#include "core/setup.hpp"
+#include "unit/interface.hpp"
+
+namespace trirast {
+
+class CornerUnit {
+ public:
+  explicit CornerUnit(const RasterConfig& cfg);
+  // E_L of edge k at the pixel centre of (x0, y0), vertex-relative.
+  int64_t corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const;
+  // The digit-serial unit's run length at (x0, y0): the digits of 4 bits of the largest operand
+  // magnitude |cx0 - vx|, |cy0 - vy| over the three edges, at least 1 (g2_corner_msb's counter).
+  int digits(const TriangleSetup& t, int64_t x0, int64_t y0) const;
+  // Fills E_L and E_R of every edge of `box` (its a, b, x0, y0, Xmax already set) and checks them
+  // against gen1's (`gen1`): a difference is a model bug (std::logic_error).
+  void run(const TriangleSetup& t, InterfaceOut& box, const InterfaceOut& gen1) const;
+
+  static constexpr int kDigitBits = 4;  // radix 16
+
+ private:
+  RasterConfig cfg_;
+};
+
+}  // namespace trirast
