@@ -1,7 +1,8 @@
 // The improved unit against the traditional one and the half-space tile unit in cycles (scripts/cycles_table.sh writes the
 // output to docs/cycles-improved-vs-trad.md): the five seed-000 scene analogues and meshes, both
 // SystemC models with the default parameters (N = 1, FIFO 8, sink always ready), and the improved
-// unit with N = 4 and in divide mode beside them.
+// unit with N = 4 and in divide mode beside them. Then, after a line "@@", the second-generation
+// improved unit (improved2-sc, both corner forms) beside the first and the traditional unit.
 #include <cstdio>
 #include <string>
 #include <systemc>  // declares sc_main extern "C"
@@ -43,7 +44,8 @@ int sc_main(int argc, char** argv) {
       "improved fixed divider | half-space cycles (S2 T8 zigzag) | half-space vs improved | "
       "half-space cyc/tri (setup, walk) | half-space S4 T16 | half-space S1 no tiles |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
-  uint64_t sum_i = 0, sum_t = 0, sum_h = 0;
+  uint64_t sum_i = 0, sum_t = 0, sum_h = 0, sum_g = 0, sum_gd = 0;
+  std::string gen2_rows;
   for (const BenchmarkScene& e : scenes) {
     RasterConfig cfg;
     Scene scene;
@@ -78,9 +80,26 @@ int sc_main(int argc, char** argv) {
     cfgh1.hs_stamp = 1;
     cfgh1.hs_tile = 0;
     const Run h1 = run(*hs, setup, cfgh1);
+    auto gen2 = make_improved2_model_engine();
+    RasterConfig cfgg = cfg;
+    cfgg.g2_corner_form = 1;
+    const Run g = run(*gen2, setup, cfgg);
+    cfgg.g2_corner_form = 0;
+    const Run gd = run(*gen2, setup, cfgg);
     sum_i += i.cycles;
     sum_t += t.cycles;
     sum_h += h.cycles;
+    sum_g += g.cycles;
+    sum_gd += gd.cycles;
+    char row[512];
+    std::snprintf(row, sizeof row, "| %s | %zu | %llu | %llu | %llu | %s | %s | %.2f | %llu | %s | %.2f |\n",
+                  e.label.c_str(), setup.tris.size(), (unsigned long long)t.cycles,
+                  (unsigned long long)i.cycles, (unsigned long long)g.cycles,
+                  pct(double(g.cycles), double(t.cycles)).c_str(),
+                  pct(double(g.cycles), double(i.cycles)).c_str(), double(g.cycles) / n,
+                  (unsigned long long)gd.cycles, pct(double(gd.cycles), double(t.cycles)).c_str(),
+                  double(gd.cycles) / n);
+    gen2_rows += row;
     std::printf(
         "| %s | %zu | %llu | %llu | %s | %.1f (%.1f, %.1f) | %.1f (%.1f, %.1f) | %llu | %llu | "
         "%llu | %llu | %s | %.1f (%.1f, %.1f) | %llu | %llu |\n",
@@ -98,5 +117,16 @@ int sc_main(int argc, char** argv) {
               (unsigned long long)sum_i, (unsigned long long)sum_t,
               pct(double(sum_i), double(sum_t)).c_str(), (unsigned long long)sum_h,
               pct(double(sum_h), double(sum_i)).c_str());
+  std::printf("@@\n");
+  std::printf(
+      "| scene | triangles | trad cycles | gen1 cycles | gen2 cycles (radix-16 corner) | gen2 vs "
+      "trad | gen2 vs gen1 | gen2 cyc/tri | gen2 DSP corner | gen2 DSP vs trad | gen2 DSP "
+      "cyc/tri |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("%s", gen2_rows.c_str());
+  std::printf("| **all** | | %llu | %llu | %llu | %s | %s | | %llu | %s | |\n",
+              (unsigned long long)sum_t, (unsigned long long)sum_i, (unsigned long long)sum_g,
+              pct(double(sum_g), double(sum_t)).c_str(), pct(double(sum_g), double(sum_i)).c_str(),
+              (unsigned long long)sum_gd, pct(double(sum_gd), double(sum_t)).c_str());
   return 0;
 }

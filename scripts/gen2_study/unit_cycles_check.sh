@@ -51,7 +51,7 @@ for form in $FORMS; do
  done
 done
 for sc in $SCENES; do
-  name="${sc#builtin:}"
+  name="$(basename "${sc#builtin:}")"   # a mesh file by its file name
   tri="$WORK/$name.tri"; hex="$WORK/$name.hex"
   SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 "$TRIRAST" raster --engine golden --scene "$sc" \
     --export-tris "0:9999999:$tri" >/dev/null 2>"$WORK/export.log" ||
