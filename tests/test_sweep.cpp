@@ -290,6 +290,98 @@ TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
   EXPECT_EQ(json.substr(row, json.find('}', row) - row).find("estimate"), std::string::npos);
 }
 
+// The second-generation unit in the sweep (--engines improved2-sc, improved2-datapath): the
+// improved unit's widths with N = 1 in both corner forms, exact where the widths are the
+// golden's, the same pixels as gen1 at every width (both follow the rule at their S), the DSP
+// corner form never slower than radix 16, and its area unknown (never gen1's synthesis or
+// estimate: scripts/synth.sh does not synthesize the gen2 study prototype).
+TEST(SweepImproved2, CornerFormsSweptExactWithUnknownArea) {
+  // The full sweep's points: 29 widths x 2 corner forms, with distinct names, none buildable
+  // (the prototype is not in rtl/).
+  const std::vector<SweepPoint> full = sweep_points(false, {"improved2-sc"});
+  ASSERT_EQ(full.size(), 58u);
+  std::set<std::string> names;
+  for (const SweepPoint& p : full) {
+    EXPECT_EQ(p.kind(), UnitKind::Improved2);
+    EXPECT_FALSE(p.rtl()) << p.label();
+    EXPECT_EQ(p.cfg.endpoints, 1) << p.label();
+    names.insert(p.config_name());
+  }
+  EXPECT_EQ(names.size(), 58u);
+  EXPECT_TRUE(names.count("S8 c16 b14 N1 gen2 dsp"));
+  EXPECT_TRUE(names.count("S4 c12 b10 N1 gen2 radix16"));
+  EXPECT_EQ(sweep_points(false, {"improved2-datapath"}).size(), 29u);  // the corner form once
+  // Not in the default engines.
+  for (const SweepPoint& p : sweep_points(false, {}))
+    EXPECT_NE(p.kind(), UnitKind::Improved2) << p.label();
+
+  TempDir dir;
+  // A synthesized improved row at the default widths: gen2 must not take it.
+  write_file(dir.file("synth.csv"),
+             "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
+             "improved,default,xilinx7,6536,2320,818,0,9,\n");
+  const std::string scenes = "builtin:hard-tiny;builtin:lowpoly-far;builtin:mixed:objects=2,tess=8";
+  const CommandResult r = run_command(
+      kBin + " sweep --quick --no-progress --engines golden,improved-sc,improved2-sc,"
+             "improved2-datapath --scenes '" + scenes + "' --synth-csv " + dir.file("synth.csv") +
+      " --out " + dir.file("out"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto cfgs = read_csv(dir.file("out/sweep_configs.csv"));
+  int g2 = 0;
+  for (const auto& row : cfgs) {
+    if (row.at("unit") != "improved2") continue;
+    ++g2;
+    EXPECT_EQ(row.at("failures"), "0") << row.at("config");
+    EXPECT_EQ(row.at("luts"), "") << row.at("config");
+    EXPECT_EQ(row.at("area_source"), "") << row.at("config");
+    EXPECT_EQ(row.at("rtl"), "0") << row.at("config");
+    // The same pixels as the first generation at the same widths.
+    std::string gen1 = row.at("config");
+    gen1 = gen1.substr(0, gen1.find(" N1 gen2"));
+    gen1 += " K- N1";
+    const auto* g1 = find_row(cfgs, "improved-sc", gen1);
+    ASSERT_TRUE(g1) << gen1;
+    for (const char* col : {"error_ppm", "missing_ppm", "extra_ppm", "max_error_ppm"})
+      EXPECT_EQ(row.at(col), g1->at(col)) << row.at("config") << " " << col;
+    EXPECT_EQ(row.at("rejected"), g1->at("rejected")) << row.at("config");
+  }
+  EXPECT_EQ(g2, 9);  // quick: three widths x (dsp, radix16, datapath)
+  for (const std::string engine_config :
+       {"improved2-sc|S8 c16 b14 N1 gen2 dsp", "improved2-sc|S8 c16 b14 N1 gen2 radix16",
+        "improved2-datapath|S8 c16 b14 N1 gen2"}) {
+    const size_t bar = engine_config.find('|');
+    const auto* row = find_row(cfgs, engine_config.substr(0, bar), engine_config.substr(bar + 1));
+    ASSERT_TRUE(row) << engine_config;
+    EXPECT_EQ(row->at("exact"), "1") << engine_config;
+    EXPECT_EQ(row->at("error_ppm"), "0.000") << engine_config;
+  }
+  EXPECT_EQ(find_row(cfgs, "improved2-datapath", "S8 c16 b14 N1 gen2")->at("total_cycles"), "");
+  // Per scene: radix 16 spends its digit-serial corner runs, so never fewer cycles than the DSP
+  // form, and more on the small triangles of lowpoly-far.
+  const auto rows = read_csv(dir.file("out/sweep.csv"));
+  for (const std::string scene : {"builtin:hard-tiny", "builtin:lowpoly-far"}) {
+    const auto* dsp = find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 dsp", scene);
+    const auto* r16 = find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 radix16", scene);
+    ASSERT_TRUE(dsp && r16) << scene;
+    EXPECT_GT(std::stol(dsp->at("total_cycles")), 0) << scene;
+    EXPECT_GE(std::stol(r16->at("total_cycles")), std::stol(dsp->at("total_cycles"))) << scene;
+    EXPECT_EQ(r16->at("missing"), "0") << scene;
+    EXPECT_EQ(r16->at("extra"), "0") << scene;
+    EXPECT_EQ(r16->at("luts"), "") << scene;
+  }
+  EXPECT_GT(std::stol(find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 radix16",
+                               "builtin:lowpoly-far")->at("total_cycles")),
+            std::stol(find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 dsp",
+                               "builtin:lowpoly-far")->at("total_cycles")));
+  // The JSON names the corner form and gives no area.
+  const std::string json = slurp(dir.file("out/sweep.json"));
+  const size_t at = json.find("\"config\": \"S8 c16 b14 N1 gen2 dsp\"");
+  ASSERT_NE(at, std::string::npos);
+  const std::string point = json.substr(at, json.find("\"scenes\"", at) - at);
+  EXPECT_NE(point.find("\"corner_form\": \"dsp\""), std::string::npos) << point;
+  EXPECT_EQ(point.find("\"luts\""), std::string::npos) << point;
+}
+
 TEST(SweepCli, BadUsageIsOneLine) {
   TempDir dir;
   for (const std::string& args :
@@ -460,6 +552,11 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   hs_cfg.hs_stamp = 4;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
   EXPECT_FALSE(hs.estimate(UnitKind::Halfspace, RasterConfig{}).known());
+  // The second-generation unit: never the improved unit's synthesis or estimate.
+  EXPECT_FALSE(hs.area(UnitKind::Improved2, RasterConfig{}).known());
+  EXPECT_FALSE(hs.estimate(UnitKind::Improved2, RasterConfig{}).known());
+  EXPECT_EQ(synth_unit_name(UnitKind::Improved2, RasterConfig{}), "");
+  EXPECT_EQ(hs.fmax_mhz(UnitKind::Improved2, RasterConfig{}), 0);
   write_file(dir.file("bad.csv"), "unit,config,luts\nimproved,default,1\n");
   EXPECT_THROW(AreaModel(dir.file("bad.csv"), ""), std::runtime_error);
 }

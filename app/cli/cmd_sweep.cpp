@@ -359,7 +359,7 @@ int cmd_sweep(int argc, char** argv) {
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
              {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
-             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline,improved-rtl (default) and improved-datapath, halfspace-sc, halfspace-datapath, halfspace-rtl (the half-space unit over its stamp, tile and walk; area where scripts/synth.sh synthesized it)", ""},
+             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline,improved-rtl (default) and improved-datapath, halfspace-sc, halfspace-datapath, halfspace-rtl (the half-space unit over its stamp, tile and walk; area where scripts/synth.sh synthesized it), improved2-sc, improved2-datapath (the second-generation unit at the improved unit's widths with N = 1, corner form dsp / radix16; area unknown: not synthesized by scripts/synth.sh)", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
              {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
@@ -612,6 +612,22 @@ int cmd_sweep(int argc, char** argv) {
                   summaries[p].area.estimate() ? "(area estimate)"
                   : summaries[p].area.known()  ? ""
                                                : "(area not synthesized)");
+  // The model-only front (quotient truncation; the second-generation unit, whose RTL is not in
+  // rtl/): configurations no other one dominates.
+  bool whatif_header = false;
+  for (size_t p = 0; p < points.size(); ++p)
+    if (summaries[p].whatif_cycles) {
+      if (!whatif_header) std::printf("  Pareto, model only (error, cycles)\n");
+      whatif_header = true;
+      std::printf("  %-40s %12.3f %10.3f %10s %8s  %s\n", points[p].label().c_str(),
+                  summaries[p].error_ppm, summaries[p].cycles_per_triangle,
+                  summaries[p].area.known() ? std::to_string(int64_t(summaries[p].area.luts)).c_str()
+                                            : "-",
+                  summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
+                  summaries[p].area.estimate() ? "(area estimate)"
+                  : summaries[p].area.known()  ? ""
+                                               : "(area unknown)");
+    }
   if (failures) std::printf("  %d point(s) failed: see the error column of sweep.csv\n", failures);
   if (!missing.empty())
     std::printf("  PARTIAL: %zu task(s) had no result file (first: %s); their points are left "

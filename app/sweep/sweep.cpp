@@ -74,6 +74,7 @@ UnitKind SweepPoint::kind() const {
   if (engine == "trad-sc") return UnitKind::Trad;
   if (engine == "halfspace-sc" || engine == "halfspace-datapath" || engine == "halfspace-rtl")
     return UnitKind::Halfspace;
+  if (engine == "improved2-sc" || engine == "improved2-datapath") return UnitKind::Improved2;
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }
@@ -95,6 +96,10 @@ std::string SweepPoint::config_name() const {
     s += " N" + std::to_string(cfg.endpoints);
     if (cfg.divider == DividerMode::Fixed) s += " fixed";
     if (cfg.boundary == BoundaryMode::Divide) s += " divide";
+  } else if (kind() == UnitKind::Improved2) {
+    // Step, adaptive, untruncated always (the gen2 engines ignore those options): not named.
+    s += " b" + std::to_string(cfg.box_bits) + " N" + std::to_string(cfg.endpoints) + " gen2";
+    if (engine == "improved2-sc") s += cfg.g2_corner_form == 0 ? " dsp" : " radix16";
   } else if (kind() == UnitKind::Halfspace) {
     s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.hs_stamp) +
          (cfg.hs_tile > 0 ? " t" + std::to_string(cfg.hs_tile) : std::string(" t-")) + " " +
@@ -159,6 +164,44 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
       add_hs("halfspace-rtl", 1, 0, Zz);
     }
   };
+  // The second-generation unit (only when --engines names it): the improved unit's width
+  // configurations that apply to it (N = 1, the only N improved2-sc models; no quotient
+  // truncation, fixed divider or divide boundary: the gen2 engines run step, adaptive,
+  // untruncated) in both corner forms; the untimed datapath, whose spans the corner form does not
+  // change, once per width. The improved unit's sweep keeps the default FIFO depth: so does this.
+  auto add_g2 = [&](const std::string& group, int S, int coord, int box) {
+    for (const std::string engine : {"improved2-sc", "improved2-datapath"}) {
+      if (!wanted(engine)) continue;
+      for (int form : {0, 1}) {
+        if (engine == "improved2-datapath" && form == 0) continue;  // the default form only
+        SweepPoint p;
+        p.engine = engine;
+        p.group = group;
+        p.cfg.subpixel_bits = S;
+        p.cfg.coord_int_bits = coord;
+        p.cfg.box_bits = box;
+        p.cfg.g2_corner_form = form;
+        if (seen.insert(p.label()).second) pts.push_back(p);
+      }
+    }
+  };
+  auto add_g2_points = [&] {
+    const char* g = "gen2 ";
+    if (quick) {
+      add_g2(std::string(g) + "S", 8, 16, 14);
+      add_g2(std::string(g) + "S", 4, 16, 14);
+      add_g2(std::string(g) + "box bits", 8, 16, 8);
+      return;
+    }
+    for (int S : {8, 6, 4, 2, 0}) add_g2(std::string(g) + "S", S, 16, 14);
+    for (int S : {8, 4})
+      for (int box : {12, 10, 9, 8, 7, 6}) add_g2(std::string(g) + "box bits", S, 16, box);
+    for (int S : {8, 4})
+      for (int coord : {14, 13, 12, 11}) add_g2(std::string(g) + "coord bits", S, coord, 14);
+    add_g2(std::string(g) + "synthesized widths", 4, 12, 10);  // scripts/synth.sh "small"
+    add_g2(std::string(g) + "synthesized widths", 8, 20, 14);  // scripts/synth.sh "wide"
+    for (int S : {6, 4, 2}) add_g2(std::string(g) + "narrow", S, 12, 10);
+  };
   const auto A = DividerMode::Adaptive, Fx = DividerMode::Fixed;
   add("golden", "reference", 8, 16, 14, 0, 1);
   if (quick) {
@@ -172,6 +215,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     add("float-scanline", "CPU baseline", 8, 16, 14, 0, 1);
     for (int N : {1, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
     add_hs_points();
+    add_g2_points();
     return pts;
   }
   for (int S : {8, 6, 4, 2, 0})
@@ -195,6 +239,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   for (int S : {8, 6, 4, 2, 0}) add("float-scanline", "CPU baseline", S, 16, 14, 0, 1);
   for (int N : {1, 2, 4}) add("improved-rtl", "RTL", 8, 16, 14, 0, N);
   add_hs_points();
+  add_g2_points();
   return pts;
 }
 
@@ -283,8 +328,9 @@ PointResult run_sweep_point(const SweepPoint& p, const SweepSceneData& scene) {
         ++r.rejected_range;
         continue;
       }
-      // The improved unit's interface refuses a box wider or taller than 2^box_bits pixels.
-      if (p.kind() == UnitKind::Improved && !t.box.empty() &&
+      // The improved unit's interface refuses a box wider or taller than 2^box_bits pixels (the
+      // second generation's box stage is the same interface).
+      if ((p.kind() == UnitKind::Improved || p.kind() == UnitKind::Improved2) && !t.box.empty() &&
           (t.box.width() - 1 >= box_limit || t.box.height() - 1 >= box_limit)) {
         ++r.rejected_width;
         continue;
@@ -417,13 +463,14 @@ std::string csv_field(const std::string& s) {
 std::string config_columns(const SweepPoint& p) {
   const RasterConfig& c = p.cfg;
   const bool improved = p.kind() == UnitKind::Improved;
-  const bool boxed = improved || p.kind() == UnitKind::Halfspace;
+  const bool boxed =
+      improved || p.kind() == UnitKind::Halfspace || p.kind() == UnitKind::Improved2;
   return p.engine + "," + unit_kind_name(p.kind()) + "," + csv_field(p.group) + "," +
          csv_field(p.config_name()) + "," + std::to_string(c.subpixel_bits) + "," +
          std::to_string(c.coord_int_bits) + "," + (boxed ? std::to_string(c.box_bits) : "") +
          "," + (improved ? divider_mode_name(c.divider) : "") + "," +
          (improved ? std::to_string(c.divider_quotient_bits) : "") + "," +
-         (improved ? std::to_string(c.endpoints) : "") + "," +
+         (improved || p.kind() == UnitKind::Improved2 ? std::to_string(c.endpoints) : "") + "," +
          (improved ? boundary_mode_name(c.boundary) : "");
 }
 
@@ -523,6 +570,10 @@ Json sweep_point_json(const SweepPoint& p) {
         .set("stamp", c.hs_stamp)
         .set("tile", c.hs_tile)
         .set("walk", hs_walk_name(c.hs_walk));
+  if (p.kind() == UnitKind::Improved2) {
+    j.set("box_bits", c.box_bits).set("endpoints", c.endpoints);
+    if (p.engine == "improved2-sc") j.set("corner_form", c.g2_corner_form == 0 ? "dsp" : "radix16");
+  }
   return j;
 }
 

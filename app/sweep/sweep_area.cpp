@@ -16,6 +16,7 @@ const char* unit_kind_name(UnitKind k) {
     case UnitKind::Improved: return "improved";
     case UnitKind::Trad: return "trad";
     case UnitKind::Halfspace: return "halfspace";
+    case UnitKind::Improved2: return "improved2";
     case UnitKind::Cpu: return "cpu";
     default: return "golden";
   }
@@ -234,6 +235,7 @@ Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
 
 double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
   const std::string unit = synth_unit_name(kind, cfg);
+  if (unit.empty()) return 0;  // no hardware, or none scripts/synth.sh builds
   for (const SynthRow& r : fmax_rows_)
     if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
         r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
@@ -244,8 +246,10 @@ double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
 
 Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
+  // No hardware, or hardware scripts/synth.sh does not synthesize (the second-generation unit:
+  // unknown, never the first generation's estimate).
   if (kind != UnitKind::Improved && kind != UnitKind::Trad && kind != UnitKind::Halfspace)
-    return a;  // no hardware
+    return a;
   // What synthesis fixes: FIFO 8; no truncation (improved); TileSize and walk (half-space); N:
   // the row's.
   const RasterConfig synth_like;

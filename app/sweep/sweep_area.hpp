@@ -9,10 +9,14 @@
 
 namespace trirast {
 
-enum class UnitKind { Improved, Trad, Halfspace, Cpu, Golden };
+// Improved2: the second-generation improved unit (improved2-* engines, docs/gen2-design.md); its
+// RTL is the study prototype of scripts/gen2_study/, which scripts/synth.sh does not synthesize and
+// which has no width formula: its area is unknown.
+enum class UnitKind { Improved, Trad, Halfspace, Improved2, Cpu, Golden };
 const char* unit_kind_name(UnitKind k);
 // The unit's name in docs/synth.csv for a configuration: "improved", "trad", or the half-space
-// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S); "" for no hardware.
+// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S); "" for no hardware
+// and for the second-generation unit (not synthesized by scripts/synth.sh).
 std::string synth_unit_name(UnitKind k, const RasterConfig& cfg);
 
 struct Area {
@@ -54,7 +58,8 @@ class AreaModel {
   // Area of one configuration of a unit. Synthesis covers improved units with N = 1, FIFO 8 and no
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL), and the
   // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, zigzag), per
-  // stamp size. The half-space unit has no width formula: elsewhere its area is unknown.
+  // stamp size. The half-space unit has no width formula: elsewhere its area is unknown. The
+  // second-generation unit's area is always unknown (its study prototype is not synthesized here).
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
   // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a
@@ -63,7 +68,8 @@ class AreaModel {
   // target than target() (or of "ice40-pnr", which carries Fmax only) give only their Fmax.
   void add_rows(const std::vector<SynthRow>& rows);
   // The width formula, scaled, whatever synthesis covers (to report its error against synthesis);
-  // unknown (Area::known() false) for a unit without one (the half-space unit, CPU engines).
+  // unknown (Area::known() false) for a unit without one (the half-space unit, the
+  // second-generation unit, CPU engines).
   Area estimate(UnitKind kind, const RasterConfig& cfg) const;
   // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
   double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
