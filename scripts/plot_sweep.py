@@ -87,7 +87,8 @@ def symlog_x(ax):
 
 
 COLORS = {"improved-sc": "tab:blue", "trad-sc": "tab:red", "improved-rtl": "tab:green",
-          "float-scanline": "tab:purple", "golden": "black", "improved-datapath": "tab:cyan"}
+          "float-scanline": "tab:purple", "golden": "black", "improved-datapath": "tab:cyan",
+          "improved2-sc": "tab:brown", "improved2-datapath": "tab:olive"}
 MARKERS = {"S x N x K": "o", "box bits": "s", "coord bits": "^", "fixed divider": "v",
            "boundary divide": "D", "synthesized": "*", "narrow": "P", "traditional": "X",
            "RTL": "h", "CPU baseline": "d", "reference": "o"}
