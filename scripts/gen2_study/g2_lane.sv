@@ -23,7 +23,9 @@
 //    difference; X' is one adder whose first operand is a register (Xmax, or zero for dir +,
 //    taken the cycle after the load). The entry test q >= Xmax (both directions) is formed
 //    bit-serially during the iterations.
-//  - D, s, r_s and R are held without their F constant (or the numerator's) low bits.
+//  - D, s, r_s, R and the column value are held without their F low bits: D's and s's are zero,
+//    R's are the numerator's, and the column value's never change (s's are zero), so e's low
+//    bits are E's (E_L or E_R) from the load, for both directions.
 // Cycles (m = Qx, or Q with FixedM; P = PreIter; T = traversal steps; from the cycle after the
 // load to the first cycle with done_o): a horizontal edge T + 1; otherwise
 // max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
@@ -95,8 +97,11 @@ module g2_lane #(
   logic [2:0] op_q, op_d;
   logic horiz_q, mirror_q, dir_q;
   logic [MB-1:0] dh_q, sh_q;                 // |A|, |B| (D and s without their F zero bits)
-  logic signed [EB-1:0] u_q, u_d;            // column value: v (dir +) or ~v (dir -)
-  logic [WB-1:0] j_q;
+  logic signed [EB-F-1:0] u_q, u_d;          // column value v (dir +) or ~v (dir -) without its F
+                                             // low bits (s's are zero: they never change)
+  logic [F-1:0] elo_q;                       // E's F low bits: e's (r's low bits are u's; dir -
+                                             // e's are ~u's, T1's)
+  logic [WB-2:0] j_q;                        // row (at most Ymax + 1 < 2^(WB-1))
   logic [IB-1:0] cnt_q, cnt_d;               // bit of the quotient this iteration makes
   logic first_q, first_d;                    // first iteration of a division
   logic [MB-1:0] rh_q, rh_d;                 // partial remainder R without its F low bits
@@ -126,11 +131,11 @@ module g2_lane #(
 
   // ---- traversal: registers only decide ----
   logic entered, in_box, trav_done, need_entry;
-  assign entered    = !u_q[EB-1];
-  assign in_box     = j_q <= WB'(ymax_i);
+  assign entered    = !u_q[EB-F-1];
+  assign in_box     = j_q <= (WB-1)'(ymax_i);
   assign trav_done  = entered || !in_box;
   assign need_entry = !horiz_q && entered && in_box;
-  assign u_d        = u_q + EB'({sh_q, {F{1'b0}}});
+  assign u_d        = u_q + (EB-F)'(sh_q);
 
   // ---- divider: set-up (shifter) and iteration ----
   localparam int HB = NB - F;               // numerator bits above its F low bits
@@ -143,7 +148,7 @@ module g2_lane #(
   logic pre, cmpl, qbit;
   localparam bit Pre = PreIter != 0;
   // The set-up aligns n >> F (s's F low bits are zero): R[RB-1:F] = (n >> F) >> m.
-  assign num     = (op_q == OpSlopeSet) ? HB'(sh_q) : u_q[NB-1:F];
+  assign num     = (op_q == OpSlopeSet) ? HB'(sh_q) : u_q[HB-1:0];
   // With the pre-iteration, R = n >> (m + 1) and the pre-iteration shifts in n's bit m.
   assign shifted = Pre ? (num >> 1) >> m : num >> m;
   assign rh_set  = shifted[MB-1:0];
@@ -151,7 +156,7 @@ module g2_lane #(
   // R's bit F - 1 in the iteration that makes quotient bit c is the numerator's bit c + F:
   // s's (bit c of |B|) or the column value's, which stays put while the entry division runs (the
   // traversal is over).
-  assign nbit    = (op_q == OpSlope) ? sh_q[cnt_q] : u_q[32'(cnt_q) + F];
+  assign nbit    = (op_q == OpSlope) ? sh_q[cnt_q] : u_q[cnt_q];
   assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
   assign fits    = !trial[MB+1];
   if (Pre) begin : g_pre
@@ -247,7 +252,8 @@ module g2_lane #(
       dir_q    <= dir_n;
       dh_q     <= abs_a[MB-1:0];
       sh_q     <= abs_b[MB-1:0];
-      u_q      <= u_load;
+      u_q      <= u_load[EB-1:F];
+      elo_q    <= (dir_n == mirror_n) ? er_i[F-1:0] : el_i[F-1:0];
       j_q      <= '0;
     end else if (!trav_done) begin
       u_q <= u_d;
@@ -278,7 +284,7 @@ module g2_lane #(
   assign rs_o       = {rsh_q, {F{1'b0}}};
   assign ssat_o     = ssat_q;
   assign enters_o   = entered && in_box;
-  assign j_entry_o  = j_q;
+  assign j_entry_o  = WB'(j_q);
   // Past the entry a horizontal edge is clear (dir +) or out (dir -); otherwise the entry test.
   assign entry_state_o = (horiz_q || sat_q || gt_q || eq_q) ? (dir_q ? RowClear : RowOut)
                                                             : RowBound;
@@ -286,10 +292,10 @@ module g2_lane #(
   // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
   assign entry_x_o  = XB'(xm_q) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
   if (Pre) begin : g_e_direct
-    assign entry_e_o = {rh_q, dir_q ? u_q[F-1:0] : ~u_q[F-1:0]};  // already D - 1 - r for dir -
+    assign entry_e_o = {rh_q, elo_q};  // already D - 1 - r for dir -
   end else begin : g_e_conv
     assign entry_e_o = {dir_q ? rh_q : ~r_minus_d[MB-1:0],
-                        dir_q ? u_q[F-1:0] : ~u_q[F-1:0]};
+                        elo_q};
   end
 
 endmodule
