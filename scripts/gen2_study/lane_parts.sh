@@ -23,7 +23,7 @@ luts() {  # luts FILE: "LUT FF" of g2_lane on xc7
 }
 PARTS=(
 "numerator shifter n >> m (the adaptive divider's alignment: R's high bits, 24 of 41)|s/assign shifted = .*/assign shifted = num >> 4;/"
-"numerator select (|B| or the column value) before the shifter|s/assign num     = .*/assign num = u_q[HB-1:0];/"
+"numerator select (abs(B) or the column value) before the shifter|s/assign num     = .*/assign num = u_q[HB-1:0];/"
 "bits above R at the set-up (sticky OR)|s/assign stk_set = .*/assign stk_set = 1'b0;/"
 "R - D (25 bits: the saturation test's sign, and dir - e's high bits ~(r - D))|s/assign r_minus_d = .*/assign r_minus_d = {1'b0, rh_q};/"
 "trial subtraction {R, bit} - D (25 bits)|s/assign trial   = .*/assign trial = {1'b0, x_hi};/"
@@ -32,7 +32,7 @@ PARTS=(
 "traversal adder u + s|s/assign u_d        = .*/assign u_d = u_q;/"
 "column value load select (E_L, E_R, complement; it folds into the adder's LUTs)|s/assign u_load   = .*/assign u_load = el_i;/"
 "row test j <= Ymax|s/assign in_box     = .*/assign in_box = 1'b1;/"
-"|A| and |B| (two 25-bit negations at the load)|s/assign abs_a    = .*/assign abs_a = a_i;/; s/assign abs_b    = .*/assign abs_b = b_i;/"
+"abs(A) and abs(B) (two 25-bit negations at the load)|s/assign abs_a    = .*/assign abs_a = a_i;/; s/assign abs_b    = .*/assign abs_b = b_i;/"
 )
 read -r base_l base_f <<< "$(luts "$SRC")"
 echo "| part of g2_lane (replaced by a stub) | xc7 LUT without it | LUT it costs |"
