@@ -33,9 +33,9 @@
 module g2_lane #(
   parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
   // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
-  // trial subtractor (the saturation test, no comparator) and, for a dir - entry, continues
-  // from D - 1 - R_0 with complemented numerator bits, which leaves e = D - 1 - r in R (no
-  // output adder for e); one more cycle per division.
+  // trial subtractor (the saturation test) and, for a dir - entry, continues from D - 1 - R_0
+  // with complemented numerator bits, which leaves e = D - 1 - r in R (no select for e; R - D is
+  // then unused); one more cycle per division.
   parameter int PreIter = 0
 ) (
   input  logic                                    clk_i,
