@@ -7,19 +7,25 @@
 //  - The operation is a registered state; every next-state decision reads registers only (the
 //    column value's sign, j <= Ymax, the iteration counter, the registered saturation flag).
 //  - Each division has a set-up cycle that aligns the numerator: R = n >> m (one shifter, n
-//    muxed between s and the column value), the low numerator bits picked one per iteration by the
-//    counter from the registers that hold them (s, or the column value, frozen by then). The iteration is then
-//    {R, bit} - D at the divisor's width + 1 (25 bits: D's F zero low bits pass as wires), with no
-//    shifter in its path. Saturation (n >> m >= D) is a compare of the registered R (plus the
-//    bits shifted out above it) in the first iteration, registered; a saturated division stops
-//    after its second cycle (its quotient and remainder are not used by the walker).
+//    muxed between s and the column value). R is held without its F low bits: D's are zero, so
+//    R's are the numerator's bits m + F - 1 .. m in every iteration, and the bit that enters R's
+//    high part is picked by the counter from the register that holds it (s, or the column
+//    value, frozen by then); the shifter forms R's high bits only. The iteration is then
+//    {R, bit} - D at the divisor's width + 1 (25 bits), with no shifter in its path. Saturation
+//    (n >> m >= D) is the sign of R - D (plus the bits shifted out above R) in the first
+//    iteration, registered; a saturated division stops after its second cycle (its quotient and
+//    remainder are not used by the walker).
 //  - The boundary traversal (one add per row) runs at the same time as the slope division
 //    (separate adder and registers); the entry-x division starts when both are done.
 //  - dir - edges keep u = ~v = -v - 1 (so the traversal always adds s and "entered" is always
 //    u >= 0) and divide u instead of -v = u + 1: X' = Xmax - 1 - q and e = D - 1 - r follow
-//    from u's q, r without a correction (two adders on the outputs). The entry test
-//    q >= Xmax (both directions) is formed bit-serially during the iterations.
-//  - D, s and r_s are held without their F constant zero low bits.
+//    from u's q, r without a correction. e's high bits are ~(r - D), the saturation test's
+//    difference; X' is one adder whose first operand is a register (Xmax, or zero for dir +,
+//    taken the cycle after the load). The entry test q >= Xmax (both directions) is formed
+//    bit-serially during the iterations.
+//  - D, s, r_s, R and the column value are held without their F low bits: D's and s's are zero,
+//    R's are the numerator's, and the column value's never change (s's are zero), so e's low
+//    bits are E's (E_L or E_R) from the load, for both directions.
 // Cycles (m = Qx, or Q with FixedM; P = PreIter; T = traversal steps; from the cycle after the
 // load to the first cycle with done_o): a horizontal edge T + 1; otherwise
 // max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
@@ -27,9 +33,9 @@
 module g2_lane #(
   parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
   // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
-  // trial subtractor (the saturation test, no comparator) and, for a dir - entry, continues
-  // from D - 1 - R_0 with complemented numerator bits, which leaves e = D - 1 - r in R (no
-  // output adder for e); one more cycle per division.
+  // trial subtractor (the saturation test) and, for a dir - entry, continues from D - 1 - R_0
+  // with complemented numerator bits, which leaves e = D - 1 - r in R (no select for e; R - D is
+  // then unused); one more cycle per division.
   parameter int PreIter = 0
 ) (
   input  logic                                    clk_i,
@@ -91,16 +97,25 @@ module g2_lane #(
   logic [2:0] op_q, op_d;
   logic horiz_q, mirror_q, dir_q;
   logic [MB-1:0] dh_q, sh_q;                 // |A|, |B| (D and s without their F zero bits)
-  logic signed [EB-1:0] u_q, u_d;            // column value: v (dir +) or ~v (dir -)
-  logic [WB-1:0] j_q;
+  logic signed [EB-F-1:0] u_q, u_d;          // column value v (dir +) or ~v (dir -) without its F
+                                             // low bits (s's are zero: they never change)
+  logic [F-1:0] elo_q;                       // E's F low bits: e's (r's low bits are u's; dir -
+                                             // e's are ~u's, T1's)
+  logic [WB-2:0] j_q;                        // row (at most Ymax + 1 < 2^(WB-1))
   logic [IB-1:0] cnt_q, cnt_d;               // bit of the quotient this iteration makes
   logic first_q, first_d;                    // first iteration of a division
-  logic [RB-1:0] r_q, r_d;                   // partial remainder (< D when not saturated)
+  logic [MB-1:0] rh_q, rh_d;                 // partial remainder R without its F low bits
+                                             // (< |A| when not saturated; R's low bits are
+                                             // the numerator's, read from u_q or sh_q)
   logic stk_q, stk_d, sat_q, sat_d;          // bits above R at the set-up; saturated
   logic [QB-1:0] qs_q, qs_d, qe_q, qe_d;     // slope and entry quotients (shifted in MSB first)
   logic [MB-1:0] rsh_q, rsh_d;               // r_s without its F zero bits
   logic ssat_q, ssat_d;
   logic gt_q, gt_d, eq_q, eq_d;              // entry quotient vs Xmax, MSB first
+  // X' = Xmax - 1 - q's first operand, zero for dir + (a flip-flop with a synchronous reset, so
+  // the adder reads a register, not a select).
+  logic [BB-1:0] xm_q;
+  logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----
   logic [CB-1:0] abs_a, abs_b;
@@ -116,53 +131,54 @@ module g2_lane #(
 
   // ---- traversal: registers only decide ----
   logic entered, in_box, trav_done, need_entry;
-  assign entered    = !u_q[EB-1];
-  assign in_box     = j_q <= WB'(ymax_i);
+  assign entered    = !u_q[EB-F-1];
+  assign in_box     = j_q <= (WB-1)'(ymax_i);
   assign trav_done  = entered || !in_box;
   assign need_entry = !horiz_q && entered && in_box;
-  assign u_d        = u_q + EB'({sh_q, {F{1'b0}}});
+  assign u_d        = u_q + (EB-F)'(sh_q);
 
   // ---- divider: set-up (shifter) and iteration ----
-  logic [NB-1:0] num, shifted;
-  logic [RB-1:0] r_set;
+  localparam int HB = NB - F;               // numerator bits above its F low bits
+  logic [HB-1:0] num, shifted;
+  logic [MB-1:0] rh_set, rh_iter;
   logic stk_set;
   logic nbit, fits, sat_now, xbit;
   logic [MB:0] x_hi;                         // {R, bit}[RB:F]
   logic [MB+1:0] trial;
-  logic [RB-1:0] r_iter;
-  logic pre, cmpl, nbit_e, qbit;
-  logic [F-1:0] x_lo;
+  logic pre, cmpl, qbit;
   localparam bit Pre = PreIter != 0;
-  assign num     = (op_q == OpSlopeSet) ? NB'({sh_q, {F{1'b0}}}) : NB'(u_q);
+  // The set-up aligns n >> F (s's F low bits are zero): R[RB-1:F] = (n >> F) >> m.
+  assign num     = (op_q == OpSlopeSet) ? HB'(sh_q) : u_q[HB-1:0];
   // With the pre-iteration, R = n >> (m + 1) and the pre-iteration shifts in n's bit m.
   assign shifted = Pre ? (num >> 1) >> m : num >> m;
-  assign r_set   = shifted[RB-1:0];
-  assign stk_set = |shifted[NB-1:RB];
-  // The numerator's bit below R: s's (its F low bits are zero) or the column value's, which
-  // stays put while the entry division runs (the traversal is over).
-  assign nbit    = (op_q == OpSlope) ? ((32'(cnt_q) >= F) ? sh_q[cnt_q - IB'(F)] : 1'b0)
-                                     : u_q[cnt_q];
-  assign x_hi    = r_q[RB-1:F-1];
+  assign rh_set  = shifted[MB-1:0];
+  assign stk_set = |shifted[HB-1:MB];
+  // R's bit F - 1 in the iteration that makes quotient bit c is the numerator's bit c + F:
+  // s's (bit c of |B|) or the column value's, which stays put while the entry division runs (the
+  // traversal is over).
+  assign nbit    = (op_q == OpSlope) ? sh_q[cnt_q] : u_q[cnt_q];
   assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
   assign fits    = !trial[MB+1];
   if (Pre) begin : g_pre
     assign pre    = first_q;
     assign cmpl   = (op_q == OpEntry) && !dir_q;  // dividing D - 1 - R (dir - entry)
-    assign nbit_e = nbit ^ (cmpl && !pre);
-    assign x_lo   = {r_q[F-2:0], nbit_e};
+    assign x_hi   = {rh_q, nbit ^ (cmpl && !pre)};
     assign qbit   = fits ^ cmpl;  // the quotient bit (complemented when dividing D - 1 - R)
-    assign r_iter = (pre && cmpl) ? {~trial[MB-1:0], ~x_lo}
-                  : pre ? {x_hi[MB-1:0], x_lo}
-                  : {fits ? trial[MB-1:0] : x_hi[MB-1:0], x_lo};
+    assign rh_iter = (pre && cmpl) ? ~trial[MB-1:0]
+                   : pre ? x_hi[MB-1:0]
+                   : fits ? trial[MB-1:0] : x_hi[MB-1:0];
   end else begin : g_plain
     assign pre    = 1'b0;
     assign cmpl   = 1'b0;
-    assign nbit_e = nbit;
-    assign x_lo   = {r_q[F-2:0], nbit};
+    assign x_hi   = {rh_q, nbit};
     assign qbit   = fits;
-    assign r_iter = {fits ? trial[MB-1:0] : x_hi[MB-1:0], r_q[F-2:0], nbit};
+    assign rh_iter = fits ? trial[MB-1:0] : x_hi[MB-1:0];
   end
-  assign sat_now = stk_q || (r_q[RB-1:F] >= dh_q);
+  // R - D on R's high bits: its sign is the saturation test (first iteration) and, in the
+  // end, ~(r - D) = D - 1 - r is a dir - edge's e.
+  logic [MB:0] r_minus_d;
+  assign r_minus_d = {1'b0, rh_q} - {1'b0, dh_q};
+  assign sat_now = stk_q || !r_minus_d[MB];
   assign xbit    = (32'(cnt_q) < BB) ? xmax_i[cnt_q] : 1'b0;
 
   logic last, set_entry;
@@ -170,7 +186,7 @@ module g2_lane #(
     op_d   = op_q;
     cnt_d  = cnt_q - 1'b1;
     first_d = 1'b0;
-    r_d    = r_q;
+    rh_d   = rh_q;
     stk_d  = stk_q;
     sat_d  = first_q ? (Pre ? stk_q || fits : sat_now) : sat_q;
     qs_d   = qs_q;
@@ -183,15 +199,15 @@ module g2_lane #(
     set_entry = 1'b0;
     unique case (op_q)
       OpSlopeSet: begin
-        r_d = r_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
+        rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
         qs_d = '0;
         op_d = OpSlope;
       end
       OpSlope: begin
-        r_d  = r_iter;
+        rh_d = rh_iter;
         if (!pre) qs_d = {qs_q[QB-2:0], qbit};
         if (last) begin
-          rsh_d  = r_iter[RB-1:F];
+          rsh_d  = rh_iter;
           ssat_d = sat_q;
           op_d   = trav_done ? (need_entry ? OpEntry : OpDone) : OpWait;
           set_entry = trav_done && need_entry;
@@ -202,7 +218,7 @@ module g2_lane #(
         set_entry = trav_done && need_entry;
       end
       OpEntry: begin
-        r_d  = r_iter;
+        rh_d = rh_iter;
         if (!pre) qe_d = {qe_q[QB-2:0], qbit};
         // While equal so far: the first differing bit decides (gt is read only once eq is 0).
         if (eq_q && !pre) begin
@@ -214,7 +230,7 @@ module g2_lane #(
       default: op_d = OpDone;
     endcase
     if (set_entry) begin
-      r_d = r_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
+      rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
       qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
     end
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;
@@ -236,15 +252,18 @@ module g2_lane #(
       dir_q    <= dir_n;
       dh_q     <= abs_a[MB-1:0];
       sh_q     <= abs_b[MB-1:0];
-      u_q      <= u_load;
+      u_q      <= u_load[EB-1:F];
+      elo_q    <= (dir_n == mirror_n) ? er_i[F-1:0] : el_i[F-1:0];
       j_q      <= '0;
     end else if (!trav_done) begin
       u_q <= u_d;
       j_q <= j_q + 1'b1;
     end
+    if (ld_q) xm_q <= dir_q ? '0 : xmax_i;
+    ld_q    <= load_i;
     cnt_q   <= cnt_d;
     first_q <= first_d;
-    r_q     <= r_d;
+    rh_q    <= rh_d;
     stk_q   <= stk_d;
     sat_q   <= sat_d;
     qs_q    <= qs_d;
@@ -265,18 +284,18 @@ module g2_lane #(
   assign rs_o       = {rsh_q, {F{1'b0}}};
   assign ssat_o     = ssat_q;
   assign enters_o   = entered && in_box;
-  assign j_entry_o  = j_q;
+  assign j_entry_o  = WB'(j_q);
   // Past the entry a horizontal edge is clear (dir +) or out (dir -); otherwise the entry test.
   assign entry_state_o = (horiz_q || sat_q || gt_q || eq_q) ? (dir_q ? RowClear : RowOut)
                                                             : RowBound;
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
   // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
-  assign entry_x_o  = (dir_q ? XB'(0) : XB'(xmax_i)) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
+  assign entry_x_o  = XB'(xm_q) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
   if (Pre) begin : g_e_direct
-    assign entry_e_o = r_q;  // already D - 1 - r for dir -
+    assign entry_e_o = {rh_q, elo_q};  // already D - 1 - r for dir -
   end else begin : g_e_conv
-    assign entry_e_o = {(dir_q ? MB'(0) : dh_q) + (dir_q ? r_q[RB-1:F] : ~r_q[RB-1:F]),
-                        dir_q ? r_q[F-1:0] : ~r_q[F-1:0]};
+    assign entry_e_o = {dir_q ? rh_q : ~r_minus_d[MB-1:0],
+                        elo_q};
   end
 
 endmodule

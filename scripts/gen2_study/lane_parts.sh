@@ -22,15 +22,17 @@ luts() {  # luts FILE: "LUT FF" of g2_lane on xc7
        END {print l, f}' "$TMP/stat"
 }
 PARTS=(
-"numerator shifter n >> m (the adaptive divider's alignment)|s/assign shifted = .*/assign shifted = num >> 4;/"
-"numerator select (s or the column value) before the shifter|s/assign num     = .*/assign num = NB'(u_q);/"
+"numerator shifter n >> m (the adaptive divider's alignment: R's high bits, 24 of 41)|s/assign shifted = .*/assign shifted = num >> 4;/"
+"numerator select (abs(B) or the column value) before the shifter|s/assign num     = .*/assign num = u_q[HB-1:0];/"
 "bits above R at the set-up (sticky OR)|s/assign stk_set = .*/assign stk_set = 1'b0;/"
-"saturation compare R >= D (first iteration)|s/assign sat_now = .*/assign sat_now = stk_q;/"
+"R - D (25 bits: the saturation test's sign, and dir - e's high bits ~(r - D))|s/assign r_minus_d = .*/assign r_minus_d = {1'b0, rh_q};/"
 "trial subtraction {R, bit} - D (25 bits)|s/assign trial   = .*/assign trial = {1'b0, x_hi};/"
-"output conversion: dir - X' = Xmax - 1 - q, e = D - 1 - r (two adders and the dir muxes)|s/assign entry_x_o  = .*/assign entry_x_o = XB'(qe_q);/; s/    assign entry_e_o = {.*/    assign entry_e_o = r_q; wire [7:0] unused_e = {/"
+"entry X' = Xmax - 1 - q for dir - (adder with a register operand, complement of q)|s/assign entry_x_o  = .*/assign entry_x_o = XB'(qe_q);/"
+"entry e's select (r, or ~(r - D) for dir -)|s/    assign entry_e_o = {dir_q.*/    assign entry_e_o = {rh_q, elo_q}; wire [F-1:0] unused_e = {/"
 "traversal adder u + s|s/assign u_d        = .*/assign u_d = u_q;/"
-"column value load select (E_L, E_R, complement)|s/assign u_load   = .*/assign u_load = el_i;/"
+"column value load select (E_L, E_R, complement; it folds into the adder's LUTs)|s/assign u_load   = .*/assign u_load = el_i;/"
 "row test j <= Ymax|s/assign in_box     = .*/assign in_box = 1'b1;/"
+"abs(A) and abs(B) (two 25-bit negations at the load)|s/assign abs_a    = .*/assign abs_a = a_i;/; s/assign abs_b    = .*/assign abs_b = b_i;/"
 )
 read -r base_l base_f <<< "$(luts "$SRC")"
 echo "| part of g2_lane (replaced by a stub) | xc7 LUT without it | LUT it costs |"
