@@ -314,16 +314,21 @@ if [ "$CHECK" = 1 ]; then
       python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
         { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
     done
-    for form in 0 1; do
-      tb_build g2_unit_tb "check_unit$form" -DG2_CORNER_FORM=$form "${gen1_srcs[@]}" \
+    # CornerForm 0 and 1, and CornerForm 1 with the iCE40 fit's build choices (G2_FIT:
+    # g2_unit_ice40.sv's; the same cycles as CornerForm 1).
+    for cfg in 0 1 1fit; do
+      form="${cfg%fit}"; fit=0; lab=""
+      [ "$cfg" = "$form" ] || { fit=1; lab=", iCE40 fit"; }
+      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit "${gen1_srcs[@]}" \
         "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
-        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" "$S/g2_unit.sv" \
-        "$S/g2_unit_tb.sv"
+        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_unit_walk.sv" \
+        "$S/g2_unit.sv" "$S/g2_unit_tb.sv"
       for sc in $UNIT_SCENES; do
         hex="$WORK/unit_${sc#builtin:}.hex"
         for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
           # shellcheck disable=SC2046,SC2086
-          tb_run g2_unit_tb "check_unit$form" "g2_unit_tb (CornerForm $form, $sc${st:+, $st})" "" \
+          tb_run g2_unit_tb "check_unit$cfg" \
+            "g2_unit_tb (CornerForm $form$lab, $sc${st:+, $st})" "" \
             +tris="$hex" $(cat "$hex.args") $st
         done
       done

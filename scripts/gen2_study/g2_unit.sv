@@ -20,9 +20,18 @@
 //   [W] the retimed walk stage with the registered push and the span FIFO (g2_unit_walk.sv: the
 //       walk slice plus the tiny job's rows), span FIFO -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
+// Build choices for the iCE40 HX8K fit (docs/gen2-design.md, "Fitting the HX8K"), all with the
+// same spans and cycles as the defaults: FifoRam 1, the span FIFO in block RAM
+// (g2_span_fifo_ram.sv); WalkerCs 0, the walkers' carry-in step (g2_walker_cs CarrySelect 0);
+// SignFold 1, g2_corner_msb's signs on the multiplicands; ElReg 1 (CornerForm 1 only), the lanes
+// load E_L from its register and the 2x2 test reads the accumulator (no 150-bit select).
 module g2_unit #(
   parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
-  parameter int CornerForm = 0   // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
+  parameter int CornerForm = 0,  // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
+  parameter bit FifoRam    = 1'b0,
+  parameter bit WalkerCs   = 1'b1,
+  parameter bit SignFold   = 1'b0,
+  parameter bit ElReg      = 1'b0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -128,7 +137,7 @@ module g2_unit #(
   logic [3*CB-1:0] c_a_q, c_b_q;
   logic [2:0] c_bias_q;
   logic c_tiny, c_ready, c_move, l_free;
-  logic [3*EB-1:0] el, er;
+  logic [3*EB-1:0] el, er, el_lane;   // el: E_L for the 2x2 test; el_lane: for the lanes' load
 
   assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
   assign c_free = !c_full_q || c_move;
@@ -168,6 +177,7 @@ module g2_unit #(
       assign ax = EB'(ak * xm);
       assign er[k*EB +: EB] = el[k*EB +: EB] + (ax <<< F);
     end
+    assign el_lane = el;
     assign c_ready = 1'b1;
   end else begin : g_msb
     // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
@@ -183,7 +193,7 @@ module g2_unit #(
     assign s_vy  = start2_q ? c_vy_q : b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
     assign s_y0  = start2_q ? c_y0_q : PB'(fy);
-    g2_corner_msb #(.DigitBits (4)) u_corner (
+    g2_corner_msb #(.DigitBits (4), .SignFold (SignFold)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
       .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc));
@@ -205,7 +215,15 @@ module g2_unit #(
     always_ff @(posedge clk_i) begin
       if (done && !second_q) el_q <= acc;
     end
-    assign el = second_q ? el_q : acc;
+    if (ElReg) begin : g_elreg
+      // The lanes load only after run 2 (second_q), when E_L is in el_q; the 2x2 test's result
+      // is used only for a tiny box, which moves after run 1 with E_L in acc.
+      assign el      = acc;
+      assign el_lane = el_q;
+    end else begin : g_elsel
+      assign el      = second_q ? el_q : acc;
+      assign el_lane = el;
+    end
     assign er = acc;
     assign c_ready = done && (second_q || c_tiny);
   end
@@ -285,7 +303,7 @@ module g2_unit #(
     g2_lane u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
       .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
-      .el_i (el[k*EB +: EB]), .er_i (er[k*EB +: EB]),
+      .el_i (el_lane[k*EB +: EB]), .er_i (er[k*EB +: EB]),
       .xmax_i (l_xmax_q), .ymax_i (l_ymax_q),
       .busy_o (), .done_o (lane_done[k]),
       .horiz_o (), .mirror_o (hand_mirror[k]), .dir_down_o (hand_dir_down[k]),
@@ -301,7 +319,7 @@ module g2_unit #(
   // ---------------------------------------------------------------- W: walk stage, FIFO
   logic walk_busy;
   logic [TB+3*PB:0] span;
-  g2_unit_walk #(.FifoDepth (FifoDepth)) u_walk (
+  g2_unit_walk #(.FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_walk (
     .clk_i (clk_i), .rst_ni (rst_ni),
     .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
     .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),

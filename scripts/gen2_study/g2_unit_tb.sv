@@ -7,6 +7,9 @@
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
 // Prints "g2_unit_tb: N errors" (0 = the sequences are equal).
+`ifndef G2_FIT
+`define G2_FIT 0
+`endif
 module g2_unit_tb;
   localparam int P  = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -65,7 +68,9 @@ module g2_unit_tb;
   logic [PB-1:0] sy2, sxb2;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
-  g2_unit #(.FifoDepth (8), .CornerForm (`G2_CORNER_FORM)) u_gen2 (
+  // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles).
+  g2_unit #(.FifoDepth (8), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
+            .WalkerCs (!`G2_FIT), .SignFold (`G2_FIT), .ElReg (`G2_FIT)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .tri_valid_i (v2), .tri_ready_o (r2), .tri_tag_i (TB'(i2)),
