@@ -80,7 +80,8 @@ TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
 LANE_SCENES="${LANE_SCENES:-builtin:highpoly-far builtin:mixed}"
 PKG="$WORK/trirast_pkg.sv"
 
-# name|top|sources (after the package)|chparam NAME=VALUE,...|description
+# name|top|sources (after the package)|chparam NAME=VALUE,...|description[|bram]
+# (a sixth field "bram": the wrapper's synth_ice40 may map memories to block RAM, without -nobram)
 DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
 "g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
@@ -119,6 +120,11 @@ DESIGNS=(
 "g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
 "g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
 "g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
+"g2.unit_ice40|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
+"g2.walk_ice40|g2_unit_walk|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (g2_unit_walk: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
+"g2.walker_ci|g2_walker_cs|$S/g2_walker_cs.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
+"g2.corner_msb16f|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
+"g2.span_fifo_ram|g2_span_fifo_ram|$S/g2_span_fifo_ram.sv|EntryBits=78|span FIFO, 8 entries, storage in block RAM (registered read, bypass register): the same cycles as g1.span_fifo|bram"
 )
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
@@ -139,8 +145,9 @@ wrap_params() {  # wrap_params "A=1,B=2": synth_wrap.py --param options
   for x in "${kv[@]}"; do printf -- '--param %s ' "$x"; done
 }
 
-run_design() {  # run_design NAME TOP SOURCES PARAMS
-  local name="$1" top="$2" srcs="$3" params="$4" d="$WORK/$1" ch t0
+run_design() {  # run_design NAME TOP SOURCES PARAMS [bram]
+  local name="$1" top="$2" srcs="$3" params="$4" nobram="-nobram" d="$WORK/$1" ch t0
+  [ "${5:-}" = bram ] && nobram=
   mkdir -p "$d"
   ch="$(chparams "$params" "$top")"
   t0=$(date +%s)
@@ -163,7 +170,7 @@ run_design() {  # run_design NAME TOP SOURCES PARAMS
        # A combinational design has no clock port: drop the wrapper's clock connection.
        { grep -q '"clk_i"' "$d/ports.json" || sed -i '/^    \.clk_i (clk_i),$/d' "$d/wrap.sv"; } &&
        yosys -q -l "$d/pnr_yosys.log" -p "read_verilog -sv -I $R $PKG $srcs $R/trirast_synth_shell.sv $d/wrap.sv;
-         synth_ice40 -nobram -top g2_wrap -json $d/design.json; tee -q -o $d/pnr.stat stat" >/dev/null; then
+         synth_ice40 $nobram -top g2_wrap -json $d/design.json; tee -q -o $d/pnr.stat stat" >/dev/null; then
       timeout "$TIMEOUT" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" \
         --pcf-allow-unconstrained --freq "$FREQ" --seed 1 --timing-allow-fail \
         --log "$d/nextpnr.log" >/dev/null 2>&1 || echo "$ME: $name: nextpnr stopped or failed ($d/nextpnr.log)" >&2
@@ -209,9 +216,9 @@ pnr_path() {  # first source -> last sink of the critical path, and its logic/ro
 report() {
   echo "| design | what | xc7 LUT | xc7 FF | xc7 CARRY4 | xc7 DSP | iCE40 LUT4 | iCE40 FF | iCE40 CARRY | wrapped LC / 7680 | wrapper FF | Fmax MHz | critical path (nextpnr) |"
   echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
-  local row name top srcs params desc d
+  local row name top srcs params desc opts d
   for row in "${DESIGNS[@]}"; do
-    IFS='|' read -r name top srcs params desc <<< "$row"
+    IFS='|' read -r name top srcs params desc opts <<< "$row"
     d="$WORK/$name"
     [ -d "$d" ] || continue
     echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed -e "s|$ROOT/||g" -e 's/|/\\|/g') |"
@@ -350,9 +357,9 @@ if [ "$REPORT" = 0 ]; then
     { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
   ran=0
   for row in "${DESIGNS[@]}"; do
-    IFS='|' read -r name top srcs params desc <<< "$row"
+    IFS='|' read -r name top srcs params desc opts <<< "$row"
     if [ -n "$ONLY" ] && ! [[ "$name" =~ $ONLY ]]; then continue; fi
-    run_design "$name" "$top" "$srcs" "$params"
+    run_design "$name" "$top" "$srcs" "$params" "$opts"
     ran=$((ran + 1))
   done
   [ "$ran" -gt 0 ] || { echo "$ME: --only '$ONLY' matches no design" >&2; exit 2; }

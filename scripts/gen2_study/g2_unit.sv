@@ -24,14 +24,17 @@
 // same spans and cycles as the defaults: FifoRam 1, the span FIFO in block RAM
 // (g2_span_fifo_ram.sv); WalkerCs 0, the walkers' carry-in step (g2_walker_cs CarrySelect 0);
 // SignFold 1, g2_corner_msb's signs on the multiplicands; ElReg 1 (CornerForm 1 only), the lanes
-// load E_L from its register and the 2x2 test reads the accumulator (no 150-bit select).
+// load E_L from its register and the 2x2 test reads the accumulator (no 150-bit select); TestHi 1,
+// the 2x2 test on E_L >> F and A, B (its steps are A << F, B << F: the signs are the same, with
+// chains F bits shorter).
 module g2_unit #(
   parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
   parameter int CornerForm = 0,  // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
   parameter bit FifoRam    = 1'b0,
   parameter bit WalkerCs   = 1'b1,
   parameter bit SignFold   = 1'b0,
-  parameter bit ElReg      = 1'b0
+  parameter bit ElReg      = 1'b0,
+  parameter bit TestHi     = 1'b0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -228,18 +231,27 @@ module g2_unit #(
     assign c_ready = done && (second_q || c_tiny);
   end
 
-  // The direct 2x2 test (box-relative: x0 = y0 = 0).
-  logic [3*EB-1:0] a_step, b_step;
+  // The direct 2x2 test (box-relative: x0 = y0 = 0). TestHi: E_L + A*u (u = 2^F) >= 0 exactly
+  // when floor(E_L / u) + A >= 0, so the test runs on E_L's bits above F and on A, B.
+  localparam int TW = TestHi ? EB - F : EB;
+  logic [3*TW-1:0] t_el, a_step, b_step;
   for (genvar k = 0; k < 3; k++) begin : g_step
-    assign a_step[k*EB +: EB] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
-    assign b_step[k*EB +: EB] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+    if (TestHi) begin : g_hi
+      assign t_el[k*TW +: TW]   = el[k*EB + F +: TW];
+      assign a_step[k*TW +: TW] = TW'($signed(c_a_q[k*CB +: CB]));
+      assign b_step[k*TW +: TW] = TW'($signed(c_b_q[k*CB +: CB]));
+    end else begin : g_full
+      assign t_el[k*TW +: TW]   = el[k*EB +: EB];
+      assign a_step[k*TW +: TW] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
+      assign b_step[k*TW +: TW] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+    end
   end
   logic [1:0] t_valid;
   logic [2*PB-1:0] t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   /* verilator lint_off PINCONNECTEMPTY */
-  g2_box2x2 #(.W (EB)) u_box2x2 (
-    .el_i (el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
+  g2_box2x2 #(.W (TW)) u_box2x2 (
+    .el_i (t_el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
     .x0_i ('0), .y0_i ('0), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
   /* verilator lint_on PINCONNECTEMPTY */
 

@@ -15,7 +15,9 @@
 // CarrySelect 0 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same rows): X' and the
 // bound are not formed twice; each is one adder whose carry-in is the select (X' + inc or
 // X' + inc +- 1 as X' + inc_m + t, inc_m = q_s or ~q_s prepared at the load, t = selb or !selb),
-// so it follows the e sum's sign instead of running beside it.
+// so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
+// the bound from the running registers, which hold the values loaded with the job until then (no
+// copies ex, ee, bex).
 module g2_walker_cs #(
   parameter bit CarrySelect = 1'b1
 ) (
@@ -100,7 +102,12 @@ module g2_walker_cs #(
       cnt_d = cnt_q - 1'b1;
       ent_d = enters_q && (cnt_q == WB'(1));
       if (ent_q) begin
-        st_d = est_q;  x_d = ex_q;  e_d = $signed({2'b00, ee_q});  bx_d = bex_q;
+        // CarrySelect 0: X', e and the bound still hold the entry values loaded with the job
+        // (before its entry row an edge is out or clear, and only a bound row steps them).
+        st_d = est_q;
+        if (CarrySelect) begin
+          x_d = ex_q;  e_d = $signed({2'b00, ee_q});  bx_d = bex_q;
+        end
       end else if (st_q == RowBound) begin
         x_d  = xs;
         e_d  = selb ? eb : ea;
@@ -135,9 +142,11 @@ module g2_walker_cs #(
       ssat_q   <= ssat_i;
       enters_q <= enters_i;
       est_q    <= entry_state_i;
-      ex_q     <= entry_x_i;
-      ee_q     <= entry_e_i;
-      bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
+      if (CarrySelect) begin   // the entry row's copies (CarrySelect 0: x_q, e_q, bx_q hold them)
+        ex_q     <= entry_x_i;
+        ee_q     <= entry_e_i;
+        bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
+      end
       if (CarrySelect) begin
         inca_q   <= inca;
         incb_q   <= incb;
