@@ -14,6 +14,8 @@
 #       scripts/gen2_study/g2_walk_check_tb.sv: g2_walk_slice as a whole against rtl/'s walk stage
 #       and span port on the same random hand-offs and sink pattern (spans equal; one cycle later
 #       each with an always-ready sink); then
+#       scripts/gen2_study/g2_fifo_check_tb.sv: g2_span_fifo_ram (block RAM) against
+#       rtl/trirast_span_fifo.sv on random pushes and pops, depths 2 to 32; then
 #       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
 #       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
 #       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
@@ -21,8 +23,8 @@
 #       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
 #       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
 #       random triangles of the box's hard cases under random offer and stall patterns; then
-#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms)
-#       against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
+#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms, and
+#       the radix-16 form with the iCE40 fit's build choices) against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
 #       is missing), spans equal span for span, both units' cycles; then
 #       scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first corner units, pipelined
 #       g2_corner_msb16p included, on full-width operands with the extremes, and its cycle count;
@@ -121,6 +123,7 @@ DESIGNS=(
 "g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
 "g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
 "g2.unit_ice40|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
+"g2.unit_ice40_pre|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (g2_lane PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
 "g2.walk_ice40|g2_unit_walk|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (g2_unit_walk: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
 "g2.walker_ci|g2_walker_cs|$S/g2_walker_cs.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
 "g2.corner_msb16f|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
@@ -162,7 +165,9 @@ run_design() {  # run_design NAME TOP SOURCES PARAMS [bram]
     echo "$ME: $name: ice40 synthesis failed ($d/ice40.log)" >&2
   if [ "$PNR" = 1 ]; then
     echo "$ME: $name: wrapper + nextpnr (timeout ${TIMEOUT} s)" >&2
-    if yosys -q -l "$d/ports.log" -p "read_verilog -sv -I $R $PKG $srcs; $ch hierarchy -top $top; proc;
+    # The port list at TOP's defaults (synth_wrap.py: it must not depend on PARAMS, which go on
+    # the wrapper's instance; a chparam'd top with submodules gets a derived name).
+    if yosys -q -l "$d/ports.log" -p "read_verilog -sv -I $R $PKG $srcs; hierarchy -top $top; proc;
          write_json $d/ports.json" >/dev/null 2>&1 &&
        # shellcheck disable=SC2046
        python3 "$ROOT/scripts/synth_wrap.py" --json "$d/ports.json" --top "$top" --name g2_wrap \
@@ -277,6 +282,10 @@ if [ "$CHECK" = 1 ]; then
     "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$S/g2_walker_cs.sv" \
     "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
   tb_run g2_walk_check_tb check_walk g2_walk_check_tb ""
+  # The span FIFO in block RAM (the iCE40 fit's) against gen1's, depths 2 to 32.
+  tb_build g2_fifo_check_tb check_fifo \
+    "$R/trirast_span_fifo.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_fifo_check_tb.sv"
+  tb_run g2_fifo_check_tb check_fifo g2_fifo_check_tb ""
   # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
   # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
   # Two builds: g2_lane as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).

@@ -34,7 +34,11 @@ module g2_unit #(
   parameter bit WalkerCs   = 1'b1,
   parameter bit SignFold   = 1'b0,
   parameter bit ElReg      = 1'b0,
-  parameter bit TestHi     = 1'b0
+  parameter bit TestHi     = 1'b0,
+  // g2_lane's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
+  // the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
+  parameter int LaneFixedM  = 0,
+  parameter int LanePreIter = 0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -312,7 +316,7 @@ module g2_unit #(
   end
   for (genvar k = 0; k < 3; k++) begin : g_edge
     /* verilator lint_off PINCONNECTEMPTY */
-    g2_lane u_lane (
+    g2_lane #(.FixedM (LaneFixedM), .PreIter (LanePreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
       .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
       .el_i (el_lane[k*EB +: EB]), .er_i (er[k*EB +: EB]),

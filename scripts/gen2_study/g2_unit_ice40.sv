@@ -11,7 +11,8 @@ module g2_unit_ice40 #(
   parameter bit WalkerCs = 1'b0,
   parameter bit SignFold = 1'b1,
   parameter bit ElReg    = 1'b1,
-  parameter bit TestHi   = 1'b1
+  parameter bit TestHi   = 1'b1,
+  parameter int LanePreIter = 0   // 1: g2_lane's pre-iteration (fewer LUT4, more cycles)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -37,7 +38,7 @@ module g2_unit_ice40 #(
 );
   g2_unit #(
     .CornerForm (1), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .SignFold (SignFold),
-    .ElReg (ElReg), .TestHi (TestHi)
+    .ElReg (ElReg), .TestHi (TestHi), .LanePreIter (LanePreIter)
   ) u_unit (
     .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .tri_valid_i, .tri_ready_o, .tri_tag_i,
     .tri_vx_i, .tri_vy_i, .tri_a_i, .tri_b_i, .tri_c_i ('0), .tri_bias_i, .span_valid_o,
