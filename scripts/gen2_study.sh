@@ -202,7 +202,7 @@ pnr_fmax() {  # achieved Fmax after routing, or why there is none
   local log="$1/nextpnr.log"
   [ -f "$log" ] || { echo "-"; return; }
   if ! grep -q "Program finished normally" "$log"; then
-    if grep -q "Unable to place cell" "$log"; then echo "does not fit"; else echo "failed"; fi
+    if grep -q "Unable to place cell\|Failed to expand region" "$log"; then echo "does not fit"; else echo "failed"; fi
     return
   fi
   grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/"
