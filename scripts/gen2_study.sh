@@ -124,6 +124,12 @@ DESIGNS=(
 "g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
 "g2.unit_ice40|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
 "g2.unit_ice40_pre|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (g2_lane PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
+"g2.unit_ice40c|g2_unit_ice40c|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40c.sv||g2.unit_ice40 with E2Sum: E_2 = C_0 + C_1 + C_2 - biases - E_0 - E_1 from the port's C, two corner accumulators (same spans and cycles; the port keeps tri_c_i)|bram"
+"g2.unit_ice40_ff|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
+"g2.unit_ice40_cs|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
+"g2.unit_ice40_nosf|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
+"g2.unit_ice40_notest|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
+"g2.unit_ice40_noel|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|ElReg=0|g2.unit_ice40 without ElReg: E_L for the lanes through the 150-bit select|bram"
 "g2.walk_ice40|g2_unit_walk|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (g2_unit_walk: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
 "g2.walker_ci|g2_walker_cs|$S/g2_walker_cs.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
 "g2.corner_msb16f|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
@@ -331,11 +337,16 @@ if [ "$CHECK" = 1 ]; then
         { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
     done
     # CornerForm 0 and 1, and CornerForm 1 with the iCE40 fit's build choices (G2_FIT:
-    # g2_unit_ice40.sv's; the same cycles as CornerForm 1).
-    for cfg in 0 1 1fit; do
-      form="${cfg%fit}"; fit=0; lab=""
-      [ "$cfg" = "$form" ] || { fit=1; lab=", iCE40 fit"; }
-      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit "${gen1_srcs[@]}" \
+    # g2_unit_ice40.sv's; the same cycles as CornerForm 1), and those with E2Sum
+    # (g2_unit_ice40c.sv's).
+    for cfg in 0 1 1fit 1fite2; do
+      form="${cfg:0:1}"; fit=0; e2=0; lab=""
+      case "$cfg" in
+        1fit) fit=1; lab=", iCE40 fit" ;;
+        1fite2) fit=1; e2=1; lab=", iCE40 fit, E2Sum" ;;
+      esac
+      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit -DG2_E2SUM=$e2 \
+        "${gen1_srcs[@]}" \
         "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
         "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_unit_walk.sv" \
         "$S/g2_unit.sv" "$S/g2_unit_tb.sv"

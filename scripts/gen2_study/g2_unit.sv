@@ -38,7 +38,11 @@ module g2_unit #(
   // g2_lane's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
   // the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
-  parameter int LanePreIter = 0
+  parameter int LanePreIter = 0,
+  // 1 (CornerForm 1 only): E_2 = (C_0 + C_1 + C_2 - the biases) - E_0 - E_1, the corner unit
+  // without edge 2's accumulator; reads tri_c_i (the sum of the edges' E is the same at every
+  // point: the A and B of the three edges sum to 0). The same values and cycles.
+  parameter bit E2Sum = 1'b0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -51,7 +55,7 @@ module g2_unit #(
   input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E)
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E) but with E2Sum
   input  logic [2:0]                            tri_bias_i,
   output logic                                  span_valid_o,
   input  logic                                  span_ready_i,
@@ -84,6 +88,7 @@ module g2_unit #(
   logic [3*P-1:0] b_vx_q, b_vy_q;
   logic [3*CB-1:0] b_a_q, b_b_q;
   logic [2:0] b_bias_q;
+  logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
   logic b_empty, b_take, b_retire, c_free;
 
   function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
@@ -132,6 +137,8 @@ module g2_unit #(
     if (tri_valid_i && tri_ready_o) begin
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
       b_a_q <= tri_a_i;  b_b_q <= tri_b_i;  b_bias_q <= tri_bias_i;
+      b_s_q <= tri_c_i[0 +: EB] + tri_c_i[EB +: EB] + tri_c_i[2*EB +: EB]
+               - EB'(tri_bias_i[0]) - EB'(tri_bias_i[1]) - EB'(tri_bias_i[2]);
     end
   end
 
@@ -143,6 +150,7 @@ module g2_unit #(
   logic [3*P-1:0] c_vx_q, c_vy_q;
   logic [3*CB-1:0] c_a_q, c_b_q;
   logic [2:0] c_bias_q;
+  logic [EB-1:0] c_s_q;
   logic c_tiny, c_ready, c_move, l_free;
   logic [3*EB-1:0] el, er, el_lane;   // el: E_L for the 2x2 test; el_lane: for the lanes' load
 
@@ -167,6 +175,7 @@ module g2_unit #(
       c_a_q    <= b_a_q;
       c_b_q    <= b_b_q;
       c_bias_q <= b_bias_q;
+      c_s_q    <= b_s_q;
     end
   end
 
@@ -192,7 +201,7 @@ module g2_unit #(
     // corner stage's register), and iterates with A, B, bias from C's register. A box for the
     // lanes then runs again from C's register at x1 = x0 + Xmax for E_R, E_L held in el_q.
     logic start2_q, run_q, second_q, busy, start, done;
-    logic [3*EB-1:0] acc, el_q;
+    logic [3*EB-1:0] acc, acc_u, el_q;
     logic [3*P-1:0] s_vx, s_vy;
     logic [PB-1:0] s_x0, s_y0;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
@@ -200,10 +209,18 @@ module g2_unit #(
     assign s_vy  = start2_q ? c_vy_q : b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
     assign s_y0  = start2_q ? c_y0_q : PB'(fy);
-    g2_corner_msb #(.DigitBits (4), .SignFold (SignFold)) u_corner (
+    g2_corner_msb #(.DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
-      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc));
+      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
+    if (E2Sum) begin : g_e2
+      assign acc[0 +: 2*EB] = acc_u[0 +: 2*EB];
+      assign acc[2*EB +: EB] = c_s_q - acc_u[0 +: EB] - acc_u[EB +: EB];
+      logic unused_e2;
+      assign unused_e2 = ^acc_u[2*EB +: EB];
+    end else begin : g_e3
+      assign acc = acc_u;
+    end
     assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -244,6 +261,8 @@ module g2_unit #(
       assign t_el[k*TW +: TW]   = el[k*EB + F +: TW];
       assign a_step[k*TW +: TW] = TW'($signed(c_a_q[k*CB +: CB]));
       assign b_step[k*TW +: TW] = TW'($signed(c_b_q[k*CB +: CB]));
+      logic unused_lo;
+      assign unused_lo = ^el[k*EB +: F];   // below the test's sign (floor)
     end else begin : g_full
       assign t_el[k*TW +: TW]   = el[k*EB +: EB];
       assign a_step[k*TW +: TW] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
@@ -354,6 +373,6 @@ module g2_unit #(
   assign busy_o = b_full_q || c_full_q || l_full_q || walk_busy || span_valid_o;
 
   logic unused;
-  assign unused = ^tri_c_i;
+  assign unused = ^{tri_c_i, b_s_q, c_s_q};   // used when E2Sum
 
 endmodule

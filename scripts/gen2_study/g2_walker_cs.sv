@@ -60,7 +60,7 @@ module g2_walker_cs #(
 
   // ---- the step: all in parallel ----
   logic signed [RB+1:0] ea, eb;
-  logic signed [XB-1:0] xa, xb, ba, bb, xs, bs;
+  logic signed [XB-1:0] xs, bs;
   logic ga, gb, selb, leave;
   assign ea = e_q + dea_q;
   assign eb = e_q + deb_q;
@@ -69,6 +69,7 @@ module g2_walker_cs #(
   assign selb = dir_q ? !eb[RB+1] : ea[RB+1];
   assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
   if (CarrySelect) begin : g_cs
+    logic signed [XB-1:0] xa, xb, ba, bb;
     assign xa = x_q + inca_q;
     assign xb = x_q + incb_q;
     assign ba = bx_q + binca_q;
@@ -85,7 +86,8 @@ module g2_walker_cs #(
     assign bsum = {bx_q, 1'b1} + {binca_q, tbx};
     assign xs = $signed(xsum[XB:1]);
     assign bs = $signed(bsum[XB:1]);
-    assign {xa, xb, ba, bb} = '0;
+    logic unused_ci;
+    assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
   end
 
   always_comb begin
