@@ -258,7 +258,7 @@ tb_run() {
   out="$("$WORK/$dir/V$top" "$@" 2>&1)" || true
   echo "$out" | grep "^$top:" | { if [ -n "$skip" ]; then grep -v -- "$skip"; else cat; fi; } |
     sed "s/^$top:/$label:/" || true
-  echo "$out" | grep -q "^$top: 0 errors" || { echo "$ME: $label found differences" >&2; exit 1; }
+  grep -q "^$top: 0 errors" <<< "$out" || { echo "$ME: $label found differences" >&2; exit 1; }
 }
 # scene_tris SCENE: WORKDIR/scene_NAME.tri, the scene's triangles exported by TRIRAST (once).
 scene_tris() {

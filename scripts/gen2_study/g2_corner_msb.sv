@@ -96,12 +96,14 @@ module g2_corner_msb #(
         // A' * digit + B' * digit - bias_last: signs on the multiplicands (CB + 1 bits: -(-2^24)).
         logic signed [CB:0] ake, bke, as, bs;
         logic signed [PW:0] pxe, pye, px, py, nb;
-        assign ake = $signed({ak[CB-1], ak});
-        assign bke = $signed({bk[CB-1], bk});
+        /* verilator lint_off WIDTH */   // sign extensions by assignment
+        assign ake = ak;
+        assign bke = bk;
         assign as  = sx_q ? -ake : ake;
         assign bs  = sy_q ? -bke : bke;
-        assign pxe = $signed({{(PW - CB){as[CB]}}, as});
-        assign pye = $signed({{(PW - CB){bs[CB]}}, bs});
+        assign pxe = as;
+        assign pye = bs;
+        /* verilator lint_on WIDTH */
         assign nb  = (cnt_q == NB'(1) && bias_i[k]) ? '1 : '0;   // -bias on the last digit
         always_comb begin
           px = '0;
