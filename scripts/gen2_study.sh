@@ -14,6 +14,8 @@
 #       scripts/gen2_study/g2_walk_check_tb.sv: g2_walk_slice as a whole against rtl/'s walk stage
 #       and span port on the same random hand-offs and sink pattern (spans equal; one cycle later
 #       each with an always-ready sink); then
+#       scripts/gen2_study/g2_fifo_check_tb.sv: g2_span_fifo_ram (block RAM) against
+#       rtl/trirast_span_fifo.sv on random pushes and pops, depths 2 to 32; then
 #       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
 #       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
 #       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
@@ -21,8 +23,8 @@
 #       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
 #       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
 #       random triangles of the box's hard cases under random offer and stall patterns; then
-#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms)
-#       against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
+#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms, and
+#       the radix-16 form with the iCE40 fit's build choices) against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
 #       is missing), spans equal span for span, both units' cycles; then
 #       scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first corner units, pipelined
 #       g2_corner_msb16p included, on full-width operands with the extremes, and its cycle count;
@@ -80,7 +82,8 @@ TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
 LANE_SCENES="${LANE_SCENES:-builtin:highpoly-far builtin:mixed}"
 PKG="$WORK/trirast_pkg.sv"
 
-# name|top|sources (after the package)|chparam NAME=VALUE,...|description
+# name|top|sources (after the package)|chparam NAME=VALUE,...|description[|bram]
+# (a sixth field "bram": the wrapper's synth_ice40 may map memories to block RAM, without -nobram)
 DESIGNS=(
 "g1.interface|trirast_interface|$R/trirast_interface.sv||gen1 interface: box + 9 corner products (E_L, E_R per edge), 1 cycle"
 "g2.box_stage|g2_box_stage|$S/g2_box_stage.sv|Split=0|gen2 box stage B in one cycle: triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
@@ -119,6 +122,18 @@ DESIGNS=(
 "g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
 "g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
 "g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
+"g2.unit_ice40|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
+"g2.unit_ice40_pre|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (g2_lane PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
+"g2.unit_ice40c|g2_unit_ice40c|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40c.sv||g2.unit_ice40 with E2Sum: E_2 = C_0 + C_1 + C_2 - biases - E_0 - E_1 from the port's C, two corner accumulators (same spans and cycles; the port keeps tri_c_i)|bram"
+"g2.unit_ice40_ff|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
+"g2.unit_ice40_cs|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
+"g2.unit_ice40_nosf|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
+"g2.unit_ice40_notest|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
+"g2.unit_ice40_noel|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|ElReg=0|g2.unit_ice40 without ElReg: E_L for the lanes through the 150-bit select|bram"
+"g2.walk_ice40|g2_unit_walk|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (g2_unit_walk: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
+"g2.walker_ci|g2_walker_cs|$S/g2_walker_cs.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
+"g2.corner_msb16f|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
+"g2.span_fifo_ram|g2_span_fifo_ram|$S/g2_span_fifo_ram.sv|EntryBits=78|span FIFO, 8 entries, storage in block RAM (registered read, bypass register): the same cycles as g1.span_fifo|bram"
 )
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
@@ -139,8 +154,9 @@ wrap_params() {  # wrap_params "A=1,B=2": synth_wrap.py --param options
   for x in "${kv[@]}"; do printf -- '--param %s ' "$x"; done
 }
 
-run_design() {  # run_design NAME TOP SOURCES PARAMS
-  local name="$1" top="$2" srcs="$3" params="$4" d="$WORK/$1" ch t0
+run_design() {  # run_design NAME TOP SOURCES PARAMS [bram]
+  local name="$1" top="$2" srcs="$3" params="$4" nobram="-nobram" d="$WORK/$1" ch t0
+  [ "${5:-}" = bram ] && nobram=
   mkdir -p "$d"
   ch="$(chparams "$params" "$top")"
   t0=$(date +%s)
@@ -155,7 +171,9 @@ run_design() {  # run_design NAME TOP SOURCES PARAMS
     echo "$ME: $name: ice40 synthesis failed ($d/ice40.log)" >&2
   if [ "$PNR" = 1 ]; then
     echo "$ME: $name: wrapper + nextpnr (timeout ${TIMEOUT} s)" >&2
-    if yosys -q -l "$d/ports.log" -p "read_verilog -sv -I $R $PKG $srcs; $ch hierarchy -top $top; proc;
+    # The port list at TOP's defaults (synth_wrap.py: it must not depend on PARAMS, which go on
+    # the wrapper's instance; a chparam'd top with submodules gets a derived name).
+    if yosys -q -l "$d/ports.log" -p "read_verilog -sv -I $R $PKG $srcs; hierarchy -top $top; proc;
          write_json $d/ports.json" >/dev/null 2>&1 &&
        # shellcheck disable=SC2046
        python3 "$ROOT/scripts/synth_wrap.py" --json "$d/ports.json" --top "$top" --name g2_wrap \
@@ -163,7 +181,7 @@ run_design() {  # run_design NAME TOP SOURCES PARAMS
        # A combinational design has no clock port: drop the wrapper's clock connection.
        { grep -q '"clk_i"' "$d/ports.json" || sed -i '/^    \.clk_i (clk_i),$/d' "$d/wrap.sv"; } &&
        yosys -q -l "$d/pnr_yosys.log" -p "read_verilog -sv -I $R $PKG $srcs $R/trirast_synth_shell.sv $d/wrap.sv;
-         synth_ice40 -nobram -top g2_wrap -json $d/design.json; tee -q -o $d/pnr.stat stat" >/dev/null; then
+         synth_ice40 $nobram -top g2_wrap -json $d/design.json; tee -q -o $d/pnr.stat stat" >/dev/null; then
       timeout "$TIMEOUT" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" \
         --pcf-allow-unconstrained --freq "$FREQ" --seed 1 --timing-allow-fail \
         --log "$d/nextpnr.log" >/dev/null 2>&1 || echo "$ME: $name: nextpnr stopped or failed ($d/nextpnr.log)" >&2
@@ -190,7 +208,7 @@ pnr_fmax() {  # achieved Fmax after routing, or why there is none
   local log="$1/nextpnr.log"
   [ -f "$log" ] || { echo "-"; return; }
   if ! grep -q "Program finished normally" "$log"; then
-    if grep -q "Unable to place cell" "$log"; then echo "does not fit"; else echo "failed"; fi
+    if grep -q "Unable to place cell\|Failed to expand region" "$log"; then echo "does not fit"; else echo "failed"; fi
     return
   fi
   grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/"
@@ -209,9 +227,9 @@ pnr_path() {  # first source -> last sink of the critical path, and its logic/ro
 report() {
   echo "| design | what | xc7 LUT | xc7 FF | xc7 CARRY4 | xc7 DSP | iCE40 LUT4 | iCE40 FF | iCE40 CARRY | wrapped LC / 7680 | wrapper FF | Fmax MHz | critical path (nextpnr) |"
   echo "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
-  local row name top srcs params desc d
+  local row name top srcs params desc opts d
   for row in "${DESIGNS[@]}"; do
-    IFS='|' read -r name top srcs params desc <<< "$row"
+    IFS='|' read -r name top srcs params desc opts <<< "$row"
     d="$WORK/$name"
     [ -d "$d" ] || continue
     echo "| $name | $desc | $(count '^LUT[1-6]$' "$d/xc7.stat") | $(count '^FD[RSCPE]*$' "$d/xc7.stat") | $(count '^CARRY4$' "$d/xc7.stat") | $(count '^DSP48' "$d/xc7.stat") | $(count '^SB_LUT4$' "$d/ice40.stat") | $(count '^SB_DFF' "$d/ice40.stat") | $(count '^SB_CARRY$' "$d/ice40.stat") | $(pnr_lc "$d") | $(wrap_ffs "$d") | $(pnr_fmax "$d") | $(pnr_path "$d" | sed -e "s|$ROOT/||g" -e 's/|/\\|/g') |"
@@ -240,7 +258,7 @@ tb_run() {
   out="$("$WORK/$dir/V$top" "$@" 2>&1)" || true
   echo "$out" | grep "^$top:" | { if [ -n "$skip" ]; then grep -v -- "$skip"; else cat; fi; } |
     sed "s/^$top:/$label:/" || true
-  echo "$out" | grep -q "^$top: 0 errors" || { echo "$ME: $label found differences" >&2; exit 1; }
+  grep -q "^$top: 0 errors" <<< "$out" || { echo "$ME: $label found differences" >&2; exit 1; }
 }
 # scene_tris SCENE: WORKDIR/scene_NAME.tri, the scene's triangles exported by TRIRAST (once).
 scene_tris() {
@@ -270,6 +288,10 @@ if [ "$CHECK" = 1 ]; then
     "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$S/g2_walker_cs.sv" \
     "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
   tb_run g2_walk_check_tb check_walk g2_walk_check_tb ""
+  # The span FIFO in block RAM (the iCE40 fit's) against gen1's, depths 2 to 32.
+  tb_build g2_fifo_check_tb check_fifo \
+    "$R/trirast_span_fifo.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_fifo_check_tb.sv"
+  tb_run g2_fifo_check_tb check_fifo g2_fifo_check_tb ""
   # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
   # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
   # Two builds: g2_lane as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).
@@ -314,16 +336,26 @@ if [ "$CHECK" = 1 ]; then
       python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
         { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
     done
-    for form in 0 1; do
-      tb_build g2_unit_tb "check_unit$form" -DG2_CORNER_FORM=$form "${gen1_srcs[@]}" \
+    # CornerForm 0 and 1, and CornerForm 1 with the iCE40 fit's build choices (G2_FIT:
+    # g2_unit_ice40.sv's; the same cycles as CornerForm 1), and those with E2Sum
+    # (g2_unit_ice40c.sv's).
+    for cfg in 0 1 1fit 1fite2; do
+      form="${cfg:0:1}"; fit=0; e2=0; lab=""
+      case "$cfg" in
+        1fit) fit=1; lab=", iCE40 fit" ;;
+        1fite2) fit=1; e2=1; lab=", iCE40 fit, E2Sum" ;;
+      esac
+      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit -DG2_E2SUM=$e2 \
+        "${gen1_srcs[@]}" \
         "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
-        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" "$S/g2_unit.sv" \
-        "$S/g2_unit_tb.sv"
+        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_unit_walk.sv" \
+        "$S/g2_unit.sv" "$S/g2_unit_tb.sv"
       for sc in $UNIT_SCENES; do
         hex="$WORK/unit_${sc#builtin:}.hex"
         for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
           # shellcheck disable=SC2046,SC2086
-          tb_run g2_unit_tb "check_unit$form" "g2_unit_tb (CornerForm $form, $sc${st:+, $st})" "" \
+          tb_run g2_unit_tb "check_unit$cfg" \
+            "g2_unit_tb (CornerForm $form$lab, $sc${st:+, $st})" "" \
             +tris="$hex" $(cat "$hex.args") $st
         done
       done
@@ -345,9 +377,9 @@ if [ "$REPORT" = 0 ]; then
     { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
   ran=0
   for row in "${DESIGNS[@]}"; do
-    IFS='|' read -r name top srcs params desc <<< "$row"
+    IFS='|' read -r name top srcs params desc opts <<< "$row"
     if [ -n "$ONLY" ] && ! [[ "$name" =~ $ONLY ]]; then continue; fi
-    run_design "$name" "$top" "$srcs" "$params"
+    run_design "$name" "$top" "$srcs" "$params" "$opts"
     ran=$((ran + 1))
   done
   [ "$ran" -gt 0 ] || { echo "$ME: --only '$ONLY' matches no design" >&2; exit 2; }

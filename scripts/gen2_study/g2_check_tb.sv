@@ -56,10 +56,10 @@ module g2_check_tb;
   logic [QB-1:0] qs;
   logic [RB-1:0] rs, ee;
   logic [WB-1:0] je, row;
-  logic [1:0] est, st1, st2;
+  logic [1:0] est, st1, st2, st3;
   logic signed [XB-1:0] ex, x1;
-  logic [BB:0] bnd2;
-  logic m1, m2;
+  logic [BB:0] bnd2, bnd3;
+  logic m1, m2, m3;
   trirast_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
@@ -69,6 +69,11 @@ module g2_check_tb;
     .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
     .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee), .xmax_i (xmax),
     .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
+  // The iCE40 fit's walker (carry-in step, no entry copies): the same rows.
+  g2_walker_cs #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
+    .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
+    .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
+    .xmax_i (xmax), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
 
   // ---------------- span generators ----------------
   logic [5:0] gst;
@@ -223,9 +228,10 @@ module g2_check_tb;
     for (int j = 0; j < rows; j++) begin
       logic [BB:0] want;
       want = m1 ? (BB + 1)'(32'(xmax) - 32'(x1)) : (BB + 1)'(x1 + 1'b1);
-      if (st1 != st2 || (st1 == trirast_pkg::RowBound && want != bnd2)) begin
+      if (st1 != st2 || (st1 == trirast_pkg::RowBound && want != bnd2) ||
+          st1 != st3 || (st1 == trirast_pkg::RowBound && want != bnd3)) begin
         errors++;
-        if (errors < 10) $display("walker row %0d: gen1 st %0d x %0d (bound %0d), gen2 st %0d bound %0d", j, st1, x1, want, st2, bnd2);
+        if (errors < 10) $display("walker row %0d: gen1 st %0d x %0d (bound %0d), gen2 st %0d bound %0d, carry-in st %0d bound %0d", j, st1, x1, want, st2, bnd2, st3, bnd3);
       end
       if (st1 == trirast_pkg::RowBound) bound_rows++;
       adv = 1; @(negedge clk); adv = 0; row = row + 1'b1;

@@ -1,5 +1,5 @@
 // gen2 study: a random cross-check of the MSB-first corner-value prototypes (g2_corner_msb radix
-// 4 and 16, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
+// 4 and 16, radix 16 with SignFold, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
 // E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
 // (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
 // of a triangle near the box), the operands here are independent and include the extremes:
@@ -24,8 +24,8 @@ module g2_corner_check_tb;
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic start;
-  logic busy_m4, busy_m16, busy_p0, busy_p1, busy_ps;
-  logic [3*EB-1:0] el_m4, el_m16, el_p0, el_p1, el_ps;
+  logic busy_m4, busy_m16, busy_m16s, busy_p0, busy_p1, busy_ps;
+  logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_p0, el_p1, el_ps;
 
   g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
@@ -33,6 +33,9 @@ module g2_corner_check_tb;
   g2_corner_msb #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_m16), .el_o (el_m16));
+  g2_corner_msb #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
+    .start_i (start), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .y0_i (y0), .busy_o (busy_m16s), .el_o (el_m16s));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_p0), .el_o (el_p0));
@@ -119,7 +122,7 @@ module g2_corner_check_tb;
     depth_seen0 = -1;
     depth_seen1 = -1;
     depth_seens = -1;
-    while ((busy_m4 || busy_m16 || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
+    while ((busy_m4 || busy_m16 || busy_m16s || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
       @(negedge clk);
       cyc++;
       if (!busy_p0 && depth_seen0 < 0) depth_seen0 = cyc;
@@ -143,12 +146,13 @@ module g2_corner_check_tb;
       want = A * (cx0 - vxk) + B * (cy0 - vyk) - longint'(bias[k]);
       if ((want < 0 ? -want : want) > max_abs) max_abs = want < 0 ? -want : want;
       if (sx(64'(el_m4[k*EB +: EB]), EB) != want || sx(64'(el_m16[k*EB +: EB]), EB) != want ||
+          sx(64'(el_m16s[k*EB +: EB]), EB) != want ||
           sx(64'(el_p0[k*EB +: EB]), EB) != want || sx(64'(el_p1[k*EB +: EB]), EB) != want ||
           sx(64'(el_ps[k*EB +: EB]), EB) != want) begin
         errors++;
-        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
+        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16 SignFold %0d msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
           k, A, B, cx0 - vxk, cy0 - vyk, bias[k], sx(64'(el_m4[k*EB +: EB]), EB),
-          sx(64'(el_m16[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
+          sx(64'(el_m16[k*EB +: EB]), EB), sx(64'(el_m16s[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
           sx(64'(el_p1[k*EB +: EB]), EB), sx(64'(el_ps[k*EB +: EB]), EB), want);
       end
     end

@@ -6,8 +6,17 @@
 // largest operand of the three edges, so it takes ceil(bits / DigitBits) cycles (at least one)
 // after the start cycle. Against g2_corner_digit (LSB first) it keeps no shifted multiplicands:
 // the registers are the two operand magnitudes and the accumulator per edge, and a digit counter.
+// SignFold 1 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same values and cycles):
+// the operand's sign is applied to the 25-bit multiplicand (A' = +-A, B' = +-B, each cycle from
+// the held sign) instead of to the 50-bit partial product, and the bias enters the last digit's
+// B' * digit sum, so a digit costs two 26-bit negations and one 50-bit three-operand sum instead
+// of two 50-bit negations, their selects and a four-operand sum.
+// AccEdges 2 (g2_unit's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the caller forms
+// it from the other two), but its magnitudes still set the digit count (the same cycles).
 module g2_corner_msb #(
-  parameter int DigitBits = 4
+  parameter int DigitBits = 4,
+  parameter bit SignFold  = 1'b0,
+  parameter int AccEdges  = 3
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -67,37 +76,67 @@ module g2_corner_msb #(
     assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
     assign mag_k[k][0] = (ND * DB)'(amx);
     assign mag_k[k][1] = (ND * DB)'(amy);
-    // The current digit of each operand: a ND-way select by the counter.
-    always_comb begin
-      dgx = '0;
-      dgy = '0;
-      for (int i = 0; i < ND; i++) begin
-        if (cnt_q == NB'(i + 1)) begin
-          dgx = mx_q[i*DB +: DB];
-          dgy = my_q[i*DB +: DB];
+    if (k < AccEdges) begin : g_acc
+      // The current digit of each operand: a ND-way select by the counter.
+      always_comb begin
+        dgx = '0;
+        dgy = '0;
+        for (int i = 0; i < ND; i++) begin
+          if (cnt_q == NB'(i + 1)) begin
+            dgx = mx_q[i*DB +: DB];
+            dgy = my_q[i*DB +: DB];
+          end
         end
       end
-    end
-    // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
-    assign tx = EB'(pp(ak, dgx));
-    assign ty = EB'(pp(bk, dgy));
-    always_comb begin
-      mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;
-      if (start_i) begin
-        mx_d = mag_k[k][0];
-        my_d = mag_k[k][1];
-        sx_d = dxl[DW-1];
-        sy_d = dy[DW-1];
-        acc_d = '0;
-      end else if (cnt_q != '0) begin
-        acc_d = (acc_q <<< DB) + (sx_q ? -tx : tx) + (sy_q ? -ty : ty)
-                - ((cnt_q == NB'(1)) ? EB'(bias_i[k]) : '0);
+      // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
+      if (!SignFold) begin : g_pp
+        assign tx = EB'(pp(ak, dgx));
+        assign ty = EB'(pp(bk, dgy));
+      end else begin : g_pps
+        // A' * digit + B' * digit - bias_last: signs on the multiplicands (CB + 1 bits: -(-2^24)).
+        logic signed [CB:0] ake, bke, as, bs;
+        logic signed [PW:0] pxe, pye, px, py, nb;
+        /* verilator lint_off WIDTH */   // sign extensions by assignment
+        assign ake = ak;
+        assign bke = bk;
+        assign as  = sx_q ? -ake : ake;
+        assign bs  = sy_q ? -bke : bke;
+        assign pxe = as;
+        assign pye = bs;
+        /* verilator lint_on WIDTH */
+        assign nb  = (cnt_q == NB'(1) && bias_i[k]) ? '1 : '0;   // -bias on the last digit
+        always_comb begin
+          px = '0;
+          py = nb;
+          for (int i = 0; i < DB; i++) begin
+            if (dgx[i]) px = px + (pxe <<< i);
+            if (dgy[i]) py = py + (pye <<< i);
+          end
+        end
+        assign tx = EB'(px);
+        assign ty = EB'(py);
       end
+      always_comb begin
+        mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;
+        if (start_i) begin
+          mx_d = mag_k[k][0];
+          my_d = mag_k[k][1];
+          sx_d = dxl[DW-1];
+          sy_d = dy[DW-1];
+          acc_d = '0;
+        end else if (cnt_q != '0) begin
+          if (SignFold) acc_d = (acc_q <<< DB) + tx + ty;
+          else acc_d = (acc_q <<< DB) + (sx_q ? -tx : tx) + (sy_q ? -ty : ty)
+                       - ((cnt_q == NB'(1)) ? EB'(bias_i[k]) : '0);
+        end
+      end
+      always_ff @(posedge clk_i) begin
+        mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;
+      end
+      assign el_o[k*EB +: EB] = acc_q;
+    end else begin : g_noacc
+      assign el_o[k*EB +: EB] = '0;
     end
-    always_ff @(posedge clk_i) begin
-      mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;
-    end
-    assign el_o[k*EB +: EB] = acc_q;
   end
 
   // The number of digits of the largest operand (priority encoder).

@@ -20,9 +20,29 @@
 //   [W] the retimed walk stage with the registered push and the span FIFO (g2_unit_walk.sv: the
 //       walk slice plus the tiny job's rows), span FIFO -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
+// Build choices for the iCE40 HX8K fit (docs/gen2-design.md, "Fitting the HX8K"), all with the
+// same spans and cycles as the defaults: FifoRam 1, the span FIFO in block RAM
+// (g2_span_fifo_ram.sv); WalkerCs 0, the walkers' carry-in step (g2_walker_cs CarrySelect 0);
+// SignFold 1, g2_corner_msb's signs on the multiplicands; ElReg 1 (CornerForm 1 only), the lanes
+// load E_L from its register and the 2x2 test reads the accumulator (no 150-bit select); TestHi 1,
+// the 2x2 test on E_L >> F and A, B (its steps are A << F, B << F: the signs are the same, with
+// chains F bits shorter).
 module g2_unit #(
   parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
-  parameter int CornerForm = 0   // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
+  parameter int CornerForm = 0,  // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
+  parameter bit FifoRam    = 1'b0,
+  parameter bit WalkerCs   = 1'b1,
+  parameter bit SignFold   = 1'b0,
+  parameter bit ElReg      = 1'b0,
+  parameter bit TestHi     = 1'b0,
+  // g2_lane's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
+  // the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
+  parameter int LaneFixedM  = 0,
+  parameter int LanePreIter = 0,
+  // 1 (CornerForm 1 only): E_2 = (C_0 + C_1 + C_2 - the biases) - E_0 - E_1, the corner unit
+  // without edge 2's accumulator; reads tri_c_i (the sum of the edges' E is the same at every
+  // point: the A and B of the three edges sum to 0). The same values and cycles.
+  parameter bit E2Sum = 1'b0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -35,7 +55,7 @@ module g2_unit #(
   input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E)
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E) but with E2Sum
   input  logic [2:0]                            tri_bias_i,
   output logic                                  span_valid_o,
   input  logic                                  span_ready_i,
@@ -68,6 +88,7 @@ module g2_unit #(
   logic [3*P-1:0] b_vx_q, b_vy_q;
   logic [3*CB-1:0] b_a_q, b_b_q;
   logic [2:0] b_bias_q;
+  logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
   logic b_empty, b_take, b_retire, c_free;
 
   function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
@@ -116,6 +137,8 @@ module g2_unit #(
     if (tri_valid_i && tri_ready_o) begin
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
       b_a_q <= tri_a_i;  b_b_q <= tri_b_i;  b_bias_q <= tri_bias_i;
+      b_s_q <= tri_c_i[0 +: EB] + tri_c_i[EB +: EB] + tri_c_i[2*EB +: EB]
+               - EB'(tri_bias_i[0]) - EB'(tri_bias_i[1]) - EB'(tri_bias_i[2]);
     end
   end
 
@@ -127,8 +150,9 @@ module g2_unit #(
   logic [3*P-1:0] c_vx_q, c_vy_q;
   logic [3*CB-1:0] c_a_q, c_b_q;
   logic [2:0] c_bias_q;
+  logic [EB-1:0] c_s_q;
   logic c_tiny, c_ready, c_move, l_free;
-  logic [3*EB-1:0] el, er;
+  logic [3*EB-1:0] el, er, el_lane;   // el: E_L for the 2x2 test; el_lane: for the lanes' load
 
   assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
   assign c_free = !c_full_q || c_move;
@@ -151,6 +175,7 @@ module g2_unit #(
       c_a_q    <= b_a_q;
       c_b_q    <= b_b_q;
       c_bias_q <= b_bias_q;
+      c_s_q    <= b_s_q;
     end
   end
 
@@ -168,6 +193,7 @@ module g2_unit #(
       assign ax = EB'(ak * xm);
       assign er[k*EB +: EB] = el[k*EB +: EB] + (ax <<< F);
     end
+    assign el_lane = el;
     assign c_ready = 1'b1;
   end else begin : g_msb
     // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
@@ -175,7 +201,7 @@ module g2_unit #(
     // corner stage's register), and iterates with A, B, bias from C's register. A box for the
     // lanes then runs again from C's register at x1 = x0 + Xmax for E_R, E_L held in el_q.
     logic start2_q, run_q, second_q, busy, start, done;
-    logic [3*EB-1:0] acc, el_q;
+    logic [3*EB-1:0] acc, acc_u, el_q;
     logic [3*P-1:0] s_vx, s_vy;
     logic [PB-1:0] s_x0, s_y0;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
@@ -183,10 +209,18 @@ module g2_unit #(
     assign s_vy  = start2_q ? c_vy_q : b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
     assign s_y0  = start2_q ? c_y0_q : PB'(fy);
-    g2_corner_msb #(.DigitBits (4)) u_corner (
+    g2_corner_msb #(.DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
-      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc));
+      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
+    if (E2Sum) begin : g_e2
+      assign acc[0 +: 2*EB] = acc_u[0 +: 2*EB];
+      assign acc[2*EB +: EB] = c_s_q - acc_u[0 +: EB] - acc_u[EB +: EB];
+      logic unused_e2;
+      assign unused_e2 = ^acc_u[2*EB +: EB];
+    end else begin : g_e3
+      assign acc = acc_u;
+    end
     assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -205,23 +239,42 @@ module g2_unit #(
     always_ff @(posedge clk_i) begin
       if (done && !second_q) el_q <= acc;
     end
-    assign el = second_q ? el_q : acc;
+    if (ElReg) begin : g_elreg
+      // The lanes load only after run 2 (second_q), when E_L is in el_q; the 2x2 test's result
+      // is used only for a tiny box, which moves after run 1 with E_L in acc.
+      assign el      = acc;
+      assign el_lane = el_q;
+    end else begin : g_elsel
+      assign el      = second_q ? el_q : acc;
+      assign el_lane = el;
+    end
     assign er = acc;
     assign c_ready = done && (second_q || c_tiny);
   end
 
-  // The direct 2x2 test (box-relative: x0 = y0 = 0).
-  logic [3*EB-1:0] a_step, b_step;
+  // The direct 2x2 test (box-relative: x0 = y0 = 0). TestHi: E_L + A*u (u = 2^F) >= 0 exactly
+  // when floor(E_L / u) + A >= 0, so the test runs on E_L's bits above F and on A, B.
+  localparam int TW = TestHi ? EB - F : EB;
+  logic [3*TW-1:0] t_el, a_step, b_step;
   for (genvar k = 0; k < 3; k++) begin : g_step
-    assign a_step[k*EB +: EB] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
-    assign b_step[k*EB +: EB] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+    if (TestHi) begin : g_hi
+      assign t_el[k*TW +: TW]   = el[k*EB + F +: TW];
+      assign a_step[k*TW +: TW] = TW'($signed(c_a_q[k*CB +: CB]));
+      assign b_step[k*TW +: TW] = TW'($signed(c_b_q[k*CB +: CB]));
+      logic unused_lo;
+      assign unused_lo = ^el[k*EB +: F];   // below the test's sign (floor)
+    end else begin : g_full
+      assign t_el[k*TW +: TW]   = el[k*EB +: EB];
+      assign a_step[k*TW +: TW] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
+      assign b_step[k*TW +: TW] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+    end
   end
   logic [1:0] t_valid;
   logic [2*PB-1:0] t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   /* verilator lint_off PINCONNECTEMPTY */
-  g2_box2x2 #(.W (EB)) u_box2x2 (
-    .el_i (el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
+  g2_box2x2 #(.W (TW)) u_box2x2 (
+    .el_i (t_el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
     .x0_i ('0), .y0_i ('0), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
   /* verilator lint_on PINCONNECTEMPTY */
 
@@ -282,10 +335,10 @@ module g2_unit #(
   end
   for (genvar k = 0; k < 3; k++) begin : g_edge
     /* verilator lint_off PINCONNECTEMPTY */
-    g2_lane u_lane (
+    g2_lane #(.FixedM (LaneFixedM), .PreIter (LanePreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
       .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
-      .el_i (el[k*EB +: EB]), .er_i (er[k*EB +: EB]),
+      .el_i (el_lane[k*EB +: EB]), .er_i (er[k*EB +: EB]),
       .xmax_i (l_xmax_q), .ymax_i (l_ymax_q),
       .busy_o (), .done_o (lane_done[k]),
       .horiz_o (), .mirror_o (hand_mirror[k]), .dir_down_o (hand_dir_down[k]),
@@ -301,7 +354,7 @@ module g2_unit #(
   // ---------------------------------------------------------------- W: walk stage, FIFO
   logic walk_busy;
   logic [TB+3*PB:0] span;
-  g2_unit_walk #(.FifoDepth (FifoDepth)) u_walk (
+  g2_unit_walk #(.FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_walk (
     .clk_i (clk_i), .rst_ni (rst_ni),
     .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
     .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),
@@ -320,6 +373,6 @@ module g2_unit #(
   assign busy_o = b_full_q || c_full_q || l_full_q || walk_busy || span_valid_o;
 
   logic unused;
-  assign unused = ^tri_c_i;
+  assign unused = ^{tri_c_i, b_s_q, c_s_q};   // used when E2Sum
 
 endmodule

@@ -6,8 +6,13 @@
 // acceptance order) and emits its rows through the same registered push: one row per cycle, and
 // it ends after row 0 when row 1 is empty or outside the box (a job without spans takes one cycle).
 // The walkers load stale hand-off values for a tiny job; their outputs are not read.
+// Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
+// FifoRam 1 keeps the span FIFO in block RAM (g2_span_fifo_ram.sv) instead of flip-flops;
+// WalkerCs 0 gives the walkers g2_walker_cs's carry-in step (one X' and one bound adder each).
 module g2_unit_walk #(
-  parameter int FifoDepth = trirast_pkg::DefaultFifoDepth
+  parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
+  parameter bit FifoRam   = 1'b0,
+  parameter bit WalkerCs  = 1'b1
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -64,7 +69,7 @@ module g2_unit_walk #(
   assign load = !walk_q && hand_valid_i;
 
   for (genvar k = 0; k < 3; k++) begin : g_walker
-    g2_walker_cs u_walker (
+    g2_walker_cs #(.CarrySelect (WalkerCs)) u_walker (
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       .load_i        (load),
@@ -150,20 +155,36 @@ module g2_unit_walk #(
     end
   end
 
-  trirast_span_fifo #(
-    .NumEndpoints (1),
-    .FifoDepth    (FifoDepth),
-    .EntryBits    (EntryBits)
-  ) u_fifo (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .push_i  (push_q),
-    .data_i  (data_q),
-    .count_o (count),
-    .valid_o (span_valid_o),
-    .ready_i (span_ready_i),
-    .data_o  (span_o)
-  );
+  if (FifoRam) begin : g_fifo_ram
+    g2_span_fifo_ram #(
+      .FifoDepth (FifoDepth),
+      .EntryBits (EntryBits)
+    ) u_fifo (
+      .clk_i   (clk_i),
+      .rst_ni  (rst_ni),
+      .push_i  (push_q),
+      .data_i  (data_q),
+      .count_o (count),
+      .valid_o (span_valid_o),
+      .ready_i (span_ready_i),
+      .data_o  (span_o)
+    );
+  end else begin : g_fifo_ff
+    trirast_span_fifo #(
+      .NumEndpoints (1),
+      .FifoDepth    (FifoDepth),
+      .EntryBits    (EntryBits)
+    ) u_fifo (
+      .clk_i   (clk_i),
+      .rst_ni  (rst_ni),
+      .push_i  (push_q),
+      .data_i  (data_q),
+      .count_o (count),
+      .valid_o (span_valid_o),
+      .ready_i (span_ready_i),
+      .data_o  (span_o)
+    );
+  end
 
   assign hand_ready_o = !walk_q;
   assign busy_o = walk_q || push_q;   // a job walks, or its last span is in the push register

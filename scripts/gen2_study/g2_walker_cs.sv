@@ -12,7 +12,15 @@
 //    with the same select, so the span generator starts from registers.
 // The load-time preparation (a few subtractions) sits on the hand-off path, which a gen2 unit
 // registers (hand-off buffer).
-module g2_walker_cs (
+// CarrySelect 0 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same rows): X' and the
+// bound are not formed twice; each is one adder whose carry-in is the select (X' + inc or
+// X' + inc +- 1 as X' + inc_m + t, inc_m = q_s or ~q_s prepared at the load, t = selb or !selb),
+// so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
+// the bound from the running registers, which hold the values loaded with the job until then (no
+// copies ex, ee, bex).
+module g2_walker_cs #(
+  parameter bit CarrySelect = 1'b1
+) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   input  logic                                 load_i,
@@ -52,18 +60,35 @@ module g2_walker_cs (
 
   // ---- the step: all in parallel ----
   logic signed [RB+1:0] ea, eb;
-  logic signed [XB-1:0] xa, xb, ba, bb;
+  logic signed [XB-1:0] xs, bs;
   logic ga, gb, selb, leave;
   assign ea = e_q + dea_q;
   assign eb = e_q + deb_q;
-  assign xa = x_q + inca_q;
-  assign xb = x_q + incb_q;
-  assign ba = bx_q + binca_q;
-  assign bb = bx_q + bincb_q;
   assign ga = x_q >= tha_q;          // the leave test of xa (dir -: negated)
   assign gb = x_q >= thb_q;
   assign selb = dir_q ? !eb[RB+1] : ea[RB+1];
   assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
+  if (CarrySelect) begin : g_cs
+    logic signed [XB-1:0] xa, xb, ba, bb;
+    assign xa = x_q + inca_q;
+    assign xb = x_q + incb_q;
+    assign ba = bx_q + binca_q;
+    assign bb = bx_q + bincb_q;
+    assign xs = selb ? xb : xa;
+    assign bs = selb ? bb : ba;
+  end else begin : g_ci
+    // inca_q / binca_q hold inc_m; incb_q / bincb_q are unused (the carry-in below).
+    logic [XB:0] xsum, bsum;
+    logic tx, tbx;
+    assign tx   = dir_q ? selb : !selb;
+    assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
+    assign xsum = {x_q, 1'b1} + {inca_q, tx};
+    assign bsum = {bx_q, 1'b1} + {binca_q, tbx};
+    assign xs = $signed(xsum[XB:1]);
+    assign bs = $signed(bsum[XB:1]);
+    logic unused_ci;
+    assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
+  end
 
   always_comb begin
     st_d = st_q;  x_d = x_q;  e_d = e_q;  bx_d = bx_q;
@@ -79,11 +104,16 @@ module g2_walker_cs (
       cnt_d = cnt_q - 1'b1;
       ent_d = enters_q && (cnt_q == WB'(1));
       if (ent_q) begin
-        st_d = est_q;  x_d = ex_q;  e_d = $signed({2'b00, ee_q});  bx_d = bex_q;
+        // CarrySelect 0: X', e and the bound still hold the entry values loaded with the job
+        // (before its entry row an edge is out or clear, and only a bound row steps them).
+        st_d = est_q;
+        if (CarrySelect) begin
+          x_d = ex_q;  e_d = $signed({2'b00, ee_q});  bx_d = bex_q;
+        end
       end else if (st_q == RowBound) begin
-        x_d  = selb ? xb : xa;
+        x_d  = xs;
         e_d  = selb ? eb : ea;
-        bx_d = selb ? bb : ba;
+        bx_d = bs;
         st_d = leave ? (dir_q ? RowClear : RowOut) : RowBound;
       end
     end
@@ -114,18 +144,32 @@ module g2_walker_cs (
       ssat_q   <= ssat_i;
       enters_q <= enters_i;
       est_q    <= entry_state_i;
-      ex_q     <= entry_x_i;
-      ee_q     <= entry_e_i;
-      bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
-      inca_q   <= inca;
-      incb_q   <= incb;
-      binca_q  <= mirror_i ? -inca : inca;
-      bincb_q  <= mirror_i ? -incb : incb;
+      if (CarrySelect) begin   // the entry row's copies (CarrySelect 0: x_q, e_q, bx_q hold them)
+        ex_q     <= entry_x_i;
+        ee_q     <= entry_e_i;
+        bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
+      end
+      if (CarrySelect) begin
+        inca_q   <= inca;
+        incb_q   <= incb;
+        binca_q  <= mirror_i ? -inca : inca;
+        bincb_q  <= mirror_i ? -incb : incb;
+      end else begin
+        // inc_m: X' + inca = X' + inc_m + !dir, X' + incb = X' + inc_m + dir (the same for the
+        // bound with dir ^ mirror); incb_q, bincb_q are left unused.
+        inca_q   <= dir_down_i ? qse : ~qse;
+        binca_q  <= (dir_down_i ^ mirror_i) ? qse : ~qse;
+      end
       dea_q    <= dir_down_i ? rse : -rse;
       deb_q    <= dir_down_i ? rse - de : de - rse;
       // dir +: leave when x + inc >= Xmax, i.e. x >= Xmax - inc; dir -: stay when x + inc >= 0.
-      tha_q    <= dir_down_i ? xm - inca : -inca;
-      thb_q    <= dir_down_i ? xm - incb : -incb;
+      if (CarrySelect) begin
+        tha_q    <= dir_down_i ? xm - inca : -inca;
+        thb_q    <= dir_down_i ? xm - incb : -incb;
+      end else begin
+        tha_q    <= dir_down_i ? xm - qse : qse;
+        thb_q    <= dir_down_i ? xm + ~qse : qse + 1'b1;
+      end
     end
   end
 

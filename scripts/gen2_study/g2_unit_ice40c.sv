@@ -1,0 +1,44 @@
+// gen2 study prototype (scripts/gen2_study.sh, row g2.unit_ice40c; docs/gen2-design.md section 1,
+// "Fitting the HX8K"): g2_unit_ice40 with E2Sum: the triangle port's C (as gen1's) gives
+// S = C_0 + C_1 + C_2 - the biases, and E_2 = S - E_0 - E_1, so the corner unit has two
+// accumulators instead of three. The same spans and cycles as g2_unit_ice40.
+module g2_unit_ice40c #(
+  parameter bit FifoRam  = 1'b1,
+  parameter bit WalkerCs = 1'b0,
+  parameter bit SignFold = 1'b1,
+  parameter bit ElReg    = 1'b1,
+  parameter bit TestHi   = 1'b1,
+  parameter int LanePreIter = 0   // 1: g2_lane's pre-iteration (fewer LUT4, more cycles)
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
+  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
+  input  logic                                  tri_valid_i,
+  output logic                                  tri_ready_o,
+  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
+  input  logic [2:0]                            tri_bias_i,
+  output logic                                  span_valid_o,
+  input  logic                                  span_ready_i,
+  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
+  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
+  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
+  output logic [trirast_pkg::PixBits:0]         span_x_end_o,
+  output logic                                  box_retire_o,
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  output logic                                  busy_o
+);
+  g2_unit #(
+    .CornerForm (1), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .SignFold (SignFold),
+    .ElReg (ElReg), .TestHi (TestHi), .LanePreIter (LanePreIter), .E2Sum (1'b1)
+  ) u_unit (
+    .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .tri_valid_i, .tri_ready_o, .tri_tag_i,
+    .tri_vx_i, .tri_vy_i, .tri_a_i, .tri_b_i, .tri_c_i, .tri_bias_i, .span_valid_o,
+    .span_ready_i, .span_tag_o, .span_y_o, .span_x_begin_o, .span_x_end_o, .box_retire_o,
+    .box_retire_tag_o, .busy_o);
+endmodule
