@@ -58,9 +58,10 @@ SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {
   sig_.c_busy = tr.add("corner_stage", "busy", 1, 0);
   sig_.c_tri = tr.add("corner_stage", "tri", 32, VcdRecorder::kX);
   sig_.c_stall = tr.add("corner_stage", "stall", 1, 0);  // values ready, waiting for L
-  sig_.c_run = tr.add("corner_unit", "run", 2, StCornerIdle);
-  tr.name_values(sig_.c_run, "corner_run",
-                 {{StCornerIdle, "Idle"}, {StRunL, "RunL"}, {StRunR, "RunR"}, {StProducts, "Products"}});
+  sig_.c_run = tr.add("corner_unit", "run", 2, kCornerIdle);
+  tr.name_values(
+      sig_.c_run, "corner_run",
+      {{kCornerIdle, "Idle"}, {kRunL, "RunL"}, {kRunR, "RunR"}, {kProducts, "Products"}});
   sig_.c_digits = tr.add("corner_unit", "digits", 8, VcdRecorder::kX);  // the run's digit count
   sig_.l_busy = tr.add("job_stage", "busy", 1, 0);
   sig_.l_tri = tr.add("job_stage", "tri", 32, VcdRecorder::kX);
@@ -69,12 +70,13 @@ SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {
   for (int e = 0; e < 3; ++e) {
     const std::string lane = "lane" + std::to_string(e);
     sig_.lane_busy[e] = tr.add(lane, "busy", 1, 0);
-    sig_.lane_steps[e] = tr.add(lane, "steps", 16, VcdRecorder::kX);       // T, while busy
+    sig_.lane_steps[e] = tr.add(lane, "steps", 16, VcdRecorder::kX);     // T, while busy
     sig_.lane_iter[e] = tr.add(lane, "iterations", 8, VcdRecorder::kX);  // divider, while busy
   }
-  sig_.w_state = tr.add("walk_stage", "state", 2, StWalkIdle2);
-  tr.name_values(sig_.w_state, "walk_state",
-                 {{StWalkIdle2, "StWalkIdle"}, {StWalkLanes, "StWalkLanes"}, {StWalkTiny, "StWalkTiny"}});
+  sig_.w_state = tr.add("walk_stage", "state", 2, kWalkIdle);
+  tr.name_values(
+      sig_.w_state, "walk_state",
+      {{kWalkIdle, "StWalkIdle"}, {kWalkLanes, "StWalkLanes"}, {kWalkTiny, "StWalkTiny"}});
   sig_.w_tri = tr.add("walk_stage", "tri", 32, VcdRecorder::kX);
   sig_.w_row = tr.add("walk_stage", "row", 16, VcdRecorder::kX);
   sig_.w_stall = tr.add("walk_stage", "stall", 1, 0);  // no FIFO room for the row
@@ -94,8 +96,8 @@ SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {
 // Each stage's signals hold from the cycle the triangle is in it to the cycle it leaves; the
 // value a stage falls back to in the cycle after is reported first, so the next triangle's
 // entering in that cycle (reported later) wins.
-void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint64_t k,
-                                uint64_t cr, uint64_t m, uint64_t ready, uint64_t h) {
+void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint64_t k, uint64_t cr,
+                                uint64_t m, uint64_t ready, uint64_t h) {
   // B: a + 1 .. k (stalled a + 1 .. k - 1 while C was full).
   tr.value(sig_.b_busy, a + 1, 1);
   tr.value(sig_.b_tri, a + 1, tag);
@@ -117,17 +119,17 @@ void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint6
     tr.value(sig_.c_stall, m, 0);
   }
   if (corner_stage.form() == 0) {
-    tr.value(sig_.c_run, k + 1, StProducts);
-    tr.value(sig_.c_run, m + 1, StCornerIdle);
+    tr.value(sig_.c_run, k + 1, kProducts);
+    tr.value(sig_.c_run, m + 1, kCornerIdle);
   } else {
     const uint64_t dl = uint64_t(x_.corner_digits_l);
-    tr.value(sig_.c_run, k, StRunL);
+    tr.value(sig_.c_run, k, kRunL);
     tr.value(sig_.c_digits, k, dl);
     if (!x_.tiny) {
-      tr.value(sig_.c_run, k + 1 + dl, StRunR);
+      tr.value(sig_.c_run, k + 1 + dl, kRunR);
       tr.value(sig_.c_digits, k + 1 + dl, uint64_t(x_.corner_digits_r));
     }
-    tr.value(sig_.c_run, cr, StCornerIdle);
+    tr.value(sig_.c_run, cr, kCornerIdle);
     tr.value(sig_.c_digits, cr, VcdRecorder::kX);
   }
   // L: m + 1 .. h (stalled ready .. h - 1 while the walk stage was busy); lane e busy
@@ -158,7 +160,7 @@ void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint6
 uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t h,
                                TriangleCycles& rec, VcdRecorder* tr) {
   if (tr) {
-    tr->value(sig_.w_state, h + 1, x.tiny ? StWalkTiny : StWalkLanes);
+    tr->value(sig_.w_state, h + 1, x.tiny ? kWalkTiny : kWalkLanes);
     tr->value(sig_.w_tri, h + 1, rec.tri);
   }
   uint64_t t = h + 1, last = h;
@@ -183,7 +185,7 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
     t = go + 1;
   }
   if (tr) {
-    tr->value(sig_.w_state, last + 1, StWalkIdle2);
+    tr->value(sig_.w_state, last + 1, kWalkIdle);
     tr->value(sig_.w_tri, last + 1, VcdRecorder::kX);
     tr->value(sig_.w_row, last + 1, VcdRecorder::kX);
   }

@@ -99,9 +99,9 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   explicit Improved2UnitSc(sc_core::sc_module_name name);
 
   // The walk stage's trace states (walk_stage.state): idle, a lane job's rows, a tiny job's rows.
-  enum WalkTraceState : uint64_t { StWalkIdle2 = 0, StWalkLanes = 1, StWalkTiny = 2 };
+  enum WalkTraceState : uint64_t { kWalkIdle = 0, kWalkLanes = 1, kWalkTiny = 2 };
   // The corner unit's trace states (corner_unit.run).
-  enum CornerRun : uint64_t { StCornerIdle = 0, StRunL = 1, StRunR = 2, StProducts = 3 };
+  enum CornerRun : uint64_t { kCornerIdle = 0, kRunL = 1, kRunR = 2, kProducts = 3 };
 
   void run(RunState& r) override;
   void add_counters(std::map<std::string, uint64_t>& work) const override;

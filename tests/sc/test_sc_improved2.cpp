@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -195,14 +197,14 @@ std::string slurp(const std::string& path) {
 }
 
 const char* kImproved2Signals[] = {
-    "box_stage.tri_accept", "box_stage.busy",    "box_stage.tri",      "box_stage.stall",
-    "box_stage.retire",     "corner_stage.busy", "corner_stage.tri",   "corner_stage.stall",
-    "corner_unit.run",      "corner_unit.digits", "job_stage.busy",    "job_stage.tri",
-    "job_stage.tiny",       "job_stage.stall",   "lane0.busy",         "lane1.busy",
-    "lane2.busy",           "lane0.steps",       "lane0.iterations",   "walk_stage.state",
-    "walk_stage.tri",       "walk_stage.row",    "walk_stage.stall",   "walk_stage.push",
-    "span.valid",           "span.ready",        "span.tri",           "span.y",
-    "span.x_begin",         "span.x_end",        "span_fifo.count",    "span_sink.take"};
+    "box_stage.tri_accept", "box_stage.busy",     "box_stage.tri",    "box_stage.stall",
+    "box_stage.retire",     "corner_stage.busy",  "corner_stage.tri", "corner_stage.stall",
+    "corner_unit.run",      "corner_unit.digits", "job_stage.busy",   "job_stage.tri",
+    "job_stage.tiny",       "job_stage.stall",    "lane0.busy",       "lane1.busy",
+    "lane2.busy",           "lane0.steps",        "lane0.iterations", "walk_stage.state",
+    "walk_stage.tri",       "walk_stage.row",     "walk_stage.stall", "walk_stage.push",
+    "span.valid",           "span.ready",         "span.tri",         "span.y",
+    "span.x_begin",         "span.x_end",         "span_fifo.count",  "span_sink.take"};
 
 // The whole run of mixed (2 objects) traced, both corner forms, a 2-deep FIFO and a stalling
 // sink: every signal exists and changes; the span port's accepts (span_sink.take) rise in each
@@ -326,15 +328,15 @@ TEST(ScImproved2, TraceShowsTheCornerRuns) {
   // values are ready; the job stage holds it from the cycle after.
   EXPECT_EQ(value_at(v, "corner_unit.run", 0), "0");
   EXPECT_EQ(value_at(v, "corner_unit.run", 1), "1");
-  const std::vector<std::pair<uint64_t, std::string>>& run = v.values.at(v.id_of.at("corner_unit.run"));
+  const auto& run = v.values.at(v.id_of.at("corner_unit.run"));
   ASSERT_GE(run.size(), 4u);  // 0 at $dumpvars, RunL, RunR, Idle
   EXPECT_EQ(run[1], std::make_pair(uint64_t(1), std::string("1")));
   EXPECT_EQ(run[2].second, "10");  // RunR
   EXPECT_EQ(run[3].second, "0");
   const uint64_t dl = std::stoull(value_at(v, "corner_unit.digits", 1), nullptr, 2);
   const uint64_t dr = std::stoull(value_at(v, "corner_unit.digits", run[2].first), nullptr, 2);
-  EXPECT_EQ(run[2].first, 1 + 1 + dl);          // k + 1 + d_L
-  EXPECT_EQ(run[3].first, 1 + 3 + dl + dr);     // r_C = k + 3 + d_L + d_R
+  EXPECT_EQ(run[2].first, 1 + 1 + dl);       // k + 1 + d_L
+  EXPECT_EQ(run[3].first, 1 + 3 + dl + dr);  // r_C = k + 3 + d_L + d_R
   // C holds the triangle from k + 1 = 2 until it moves to L (L free: in r_C).
   EXPECT_EQ(value_at(v, "corner_stage.busy", 2), "1");
   EXPECT_EQ(value_at(v, "corner_stage.busy", run[3].first), "1");
@@ -395,6 +397,31 @@ TEST(ScImproved2, TraceWindow) {
   // Nothing after the window: no change stamped past hi + 1.
   for (const auto& [id, ch] : v.values)
     for (const auto& tv : ch) EXPECT_LE(tv.first, hi + 1) << id;
+}
+
+// A .fst trace is a real FST (gtkwave's vcd2fst converts the VCD), read back by fst2vcd with the
+// unit's scopes, with its .gtkw beside it.
+TEST(ScImproved2, TraceAsFst) {
+  if (std::system("command -v vcd2fst >/dev/null 2>&1 && command -v fst2vcd >/dev/null 2>&1") != 0)
+    GTEST_SKIP() << "gtkwave's vcd2fst / fst2vcd not installed";
+  RasterConfig cfg;
+  const SetupResult setup = builtin_setup("lowpoly-far", cfg);
+  const std::string base = testing::TempDir() + "sc_improved2_fst";
+  cfg.trace_path = base + ".fst";
+  std::remove(cfg.trace_path.c_str());
+  run_model(setup, cfg);
+  const std::string fst = slurp(cfg.trace_path);
+  ASSERT_FALSE(fst.empty());
+  EXPECT_NE(fst[0], '$') << "the .fst holds VCD text";
+  ASSERT_EQ(
+      std::system(
+          ("fst2vcd -f " + cfg.trace_path + " -o " + base + ".back.vcd >/dev/null 2>&1").c_str()),
+      0);
+  const Vcd v = read_vcd(base + ".back.vcd");
+  EXPECT_EQ(v.top, "improved2");
+  EXPECT_TRUE(v.id_of.count("corner_unit.run"));
+  EXPECT_TRUE(v.id_of.count("walk_stage.row"));
+  EXPECT_NE(slurp(base + ".gtkw").find("[dumpfile] \"sc_improved2_fst.fst\""), std::string::npos);
 }
 
 }  // namespace
