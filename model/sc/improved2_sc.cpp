@@ -70,6 +70,12 @@ SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {
   for (int e = 0; e < 3; ++e) {
     const std::string lane = "lane" + std::to_string(e);
     sig_.lane_busy[e] = tr.add(lane, "busy", 1, 0);
+    sig_.lane_phase[e] = tr.add(lane, "phase", 2, kLaneIdle);
+    tr.name_values(sig_.lane_phase[e], "lane_phase",
+                   {{kLaneIdle, "Idle"},
+                    {kLaneSlope, "Slope"},
+                    {kLaneEntry, "Entry"},
+                    {kLaneTraverse, "Traverse"}});
     sig_.lane_steps[e] = tr.add(lane, "steps", 16, VcdRecorder::kX);     // T, while busy
     sig_.lane_iter[e] = tr.add(lane, "iterations", 8, VcdRecorder::kX);  // divider, while busy
   }
@@ -149,6 +155,16 @@ void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint6
       const Gen2LaneWork& w = x_.lane[e];
       if (w.cycles == 0) continue;
       tr.value(sig_.lane_busy[e], m + 1, 1);
+      // Gen2Lane's cycles: a horizontal edge (no division) T + 1; otherwise max(m_s, T) + 1 for
+      // the slope division with the traversal, then m_e for the entry division.
+      if (w.iterations == 0) {
+        tr.value(sig_.lane_phase[e], m + 1, kLaneTraverse);
+      } else {
+        const uint64_t me = !w.enters ? 0 : w.entry_saturated ? 2 : uint64_t(w.m);
+        tr.value(sig_.lane_phase[e], m + 1, kLaneSlope);
+        if (me) tr.value(sig_.lane_phase[e], m + 1 + w.cycles - me, kLaneEntry);
+      }
+      tr.value(sig_.lane_phase[e], m + 1 + w.cycles, kLaneIdle);
       tr.value(sig_.lane_steps[e], m + 1, uint64_t(w.steps));
       tr.value(sig_.lane_iter[e], m + 1, w.iterations);
       tr.value(sig_.lane_busy[e], m + 1 + w.cycles, 0);

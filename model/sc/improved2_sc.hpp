@@ -101,6 +101,9 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   // The walk stage's trace states (walk_stage.state): idle, a lane job's rows, a tiny job's rows.
   enum WalkTraceState : uint64_t { kWalkIdle = 0, kWalkLanes = 1, kWalkTiny = 2 };
   // The corner unit's trace states (corner_unit.run).
+  // A lane's trace phases (laneK.phase): the slope division with the traversal beside it (its
+  // set-up cycle included), the entry division, a horizontal edge's traversal.
+  enum LanePhase : uint64_t { kLaneIdle = 0, kLaneSlope = 1, kLaneEntry = 2, kLaneTraverse = 3 };
   enum CornerRun : uint64_t { kCornerIdle = 0, kRunL = 1, kRunR = 2, kProducts = 3 };
 
   void run(RunState& r) override;
@@ -132,7 +135,8 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
     int accept = -1, b_busy = -1, b_tri = -1, b_stall = -1, b_retire = -1;
     int c_busy = -1, c_tri = -1, c_stall = -1, c_run = -1, c_digits = -1;
     int l_busy = -1, l_tri = -1, l_tiny = -1, l_stall = -1;
-    int lane_busy[3] = {-1, -1, -1}, lane_steps[3] = {-1, -1, -1}, lane_iter[3] = {-1, -1, -1};
+    int lane_busy[3] = {-1, -1, -1}, lane_phase[3] = {-1, -1, -1}, lane_steps[3] = {-1, -1, -1},
+        lane_iter[3] = {-1, -1, -1};
     int w_state = -1, w_tri = -1, w_row = -1, w_stall = -1, w_push = -1;
   };
   TraceSignals sig_;

@@ -196,15 +196,39 @@ std::string slurp(const std::string& path) {
   return ss.str();
 }
 
-const char* kImproved2Signals[] = {
-    "box_stage.tri_accept", "box_stage.busy",     "box_stage.tri",    "box_stage.stall",
-    "box_stage.retire",     "corner_stage.busy",  "corner_stage.tri", "corner_stage.stall",
-    "corner_unit.run",      "corner_unit.digits", "job_stage.busy",   "job_stage.tri",
-    "job_stage.tiny",       "job_stage.stall",    "lane0.busy",       "lane1.busy",
-    "lane2.busy",           "lane0.steps",        "lane0.iterations", "walk_stage.state",
-    "walk_stage.tri",       "walk_stage.row",     "walk_stage.stall", "walk_stage.push",
-    "span.valid",           "span.ready",         "span.tri",         "span.y",
-    "span.x_begin",         "span.x_end",         "span_fifo.count",  "span_sink.take"};
+const char* kImproved2Signals[] = {"box_stage.tri_accept",
+                                   "box_stage.busy",
+                                   "box_stage.tri",
+                                   "box_stage.stall",
+                                   "box_stage.retire",
+                                   "corner_stage.busy",
+                                   "corner_stage.tri",
+                                   "corner_stage.stall",
+                                   "corner_unit.run",
+                                   "corner_unit.digits",
+                                   "job_stage.busy",
+                                   "job_stage.tri",
+                                   "job_stage.tiny",
+                                   "job_stage.stall",
+                                   "lane0.busy",
+                                   "lane1.busy",
+                                   "lane2.busy",
+                                   "lane0.steps",
+                                   "lane1.phase",
+                                   "lane0.iterations",
+                                   "walk_stage.state",
+                                   "walk_stage.tri",
+                                   "walk_stage.row",
+                                   "walk_stage.stall",
+                                   "walk_stage.push",
+                                   "span.valid",
+                                   "span.ready",
+                                   "span.tri",
+                                   "span.y",
+                                   "span.x_begin",
+                                   "span.x_end",
+                                   "span_fifo.count",
+                                   "span_sink.take"};
 
 // The whole run of mixed (2 objects) traced, both corner forms, a 2-deep FIFO and a stalling
 // sink: every signal exists and changes; the span port's accepts (span_sink.take) rise in each
@@ -351,7 +375,20 @@ TEST(ScImproved2, TraceShowsTheCornerRuns) {
     const std::vector<uint64_t> up = rises(v, busy);
     if (up.empty()) continue;
     EXPECT_EQ(up.front(), run[3].first + 1) << busy;
-    L = std::max(L, v.values.at(v.id_of.at(busy)).back().first - up.front());
+    const uint64_t Le = v.values.at(v.id_of.at(busy)).back().first - up.front();
+    L = std::max(L, Le);
+    // Its phases: Slope (or a horizontal edge's Traverse) from r_C + 1, then (an entering edge)
+    // Entry for m_e = 2 (saturated) .. Q iterations, Idle when it is done.
+    const std::string phase = "lane" + std::to_string(e) + ".phase";
+    const auto& ph = v.values.at(v.id_of.at(phase));
+    ASSERT_GE(ph.size(), 3u) << phase;
+    EXPECT_EQ(ph[1].first, up.front()) << phase;
+    EXPECT_TRUE(ph[1].second == "1" || ph[1].second == "11") << phase;
+    EXPECT_EQ(ph.back(), std::make_pair(up.front() + Le, std::string("0"))) << phase;
+    if (ph.size() == 4) {
+      EXPECT_EQ(ph[2].second, "10") << phase;  // Entry
+      EXPECT_GE(ph[3].first - ph[2].first, 2u) << phase;
+    }
   }
   EXPECT_GT(L, 0u);
   EXPECT_EQ(r.cycles[0].setup_done_cycle, run[3].first + 1 + L);
