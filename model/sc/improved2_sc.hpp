@@ -12,6 +12,11 @@
 // the datapath of model/unit/improved2_unit.hpp, stamps the spans with their push cycles into the
 // shared span FIFO (span_fifo.hpp, which knows each pop cycle), and keeps SystemC time through a
 // quantum keeper as the first generation's setup stage does (stage_skeleton.hpp).
+//
+// The trace (--trace, docs/gen2-design.md section 8, "Trace"): the same process reports each
+// stage's signal changes, stamped with their cycles, to the run's VcdRecorder (vcd_trace.hpp): per
+// stage a busy bit and the tag it holds, the corner unit's runs, each lane's busy cycles, the walk
+// stage's state and rows; the span port, FIFO and sink through the shared SpanFifo.
 #pragma once
 #include <cstdint>
 #include <map>
@@ -93,6 +98,14 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   SC_HAS_PROCESS(Improved2UnitSc);
   explicit Improved2UnitSc(sc_core::sc_module_name name);
 
+  // The walk stage's trace states (walk_stage.state): idle, a lane job's rows, a tiny job's rows.
+  enum WalkTraceState : uint64_t { kWalkIdle = 0, kWalkLanes = 1, kWalkTiny = 2 };
+  // The corner unit's trace states (corner_unit.run).
+  // A lane's trace phases (laneK.phase): the slope division with the traversal beside it (its
+  // set-up cycle included), the entry division, a horizontal edge's traversal.
+  enum LanePhase : uint64_t { kLaneIdle = 0, kLaneSlope = 1, kLaneEntry = 2, kLaneTraverse = 3 };
+  enum CornerRun : uint64_t { kCornerIdle = 0, kRunL = 1, kRunR = 2, kProducts = 3 };
+
   void run(RunState& r) override;
   void add_counters(std::map<std::string, uint64_t>& work) const override;
 
@@ -106,8 +119,27 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
  private:
   void thread();
   void process_run();
-  // Walks job x (setup position pos) loaded in h; returns its last row's cycle.
-  uint64_t walk(const Improved2Triangle& x, size_t pos, uint64_t h, TriangleCycles& rec);
+  // Walks job x (setup position pos) loaded in h; returns its last row's cycle. Reports the walk
+  // stage's signals to tr when not null.
+  uint64_t walk(const Improved2Triangle& x, size_t pos, uint64_t h, TriangleCycles& rec,
+                VcdRecorder* tr);
+  // Declares the unit's trace signals (scopes box_stage .. walk_stage, then span, span_fifo,
+  // span_sink); returns the span port's handles for the FIFO.
+  SpanTraceSignals add_trace(VcdRecorder& tr);
+  // Reports the stages' signal changes of a non-empty triangle (accepted in a, B -> C in k, C's
+  // values ready in cr, C -> L in m, job ready in ready, handed off in h).
+  void trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint64_t k, uint64_t cr, uint64_t m,
+                 uint64_t ready, uint64_t h);
+
+  struct TraceSignals {
+    int accept = -1, b_busy = -1, b_tri = -1, b_stall = -1, b_retire = -1;
+    int c_busy = -1, c_tri = -1, c_stall = -1, c_run = -1, c_digits = -1;
+    int l_busy = -1, l_tri = -1, l_tiny = -1, l_stall = -1;
+    int lane_busy[3] = {-1, -1, -1}, lane_phase[3] = {-1, -1, -1}, lane_steps[3] = {-1, -1, -1},
+        lane_iter[3] = {-1, -1, -1};
+    int w_state = -1, w_tri = -1, w_row = -1, w_stall = -1, w_push = -1;
+  };
+  TraceSignals sig_;
 
   RunState* run_ = nullptr;
   std::unique_ptr<Improved2Unit> unit_;

@@ -95,6 +95,7 @@ void write_trace(Unit unit, const SetupResult& setup, const RasterConfig& cfg,
   }
   rec.write(cfg.trace_path, unit == Unit::Improved    ? "improved"
                             : unit == Unit::Halfspace ? "halfspace"
+                            : unit == Unit::Improved2 ? "improved2"
                                                       : "trad");
 }
 
@@ -111,8 +112,6 @@ class ScEngine : public Engine {
       if (cfg.endpoints != 1)
         throw std::invalid_argument("--endpoints: improved2-sc models N = 1 only (got " +
                                     std::to_string(cfg.endpoints) + ")");
-      if (!cfg.trace_path.empty())
-        throw std::invalid_argument("--trace: improved2-sc has no trace yet");
       Improved2Unit check(cfg);
     }
     const double secs = simulate(unit_, setup, cfg, out, nullptr);
