@@ -10,10 +10,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
-#include <map>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,9 +18,18 @@
 #include "golden/golden.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
+#include "support/run_command.hpp"
+#include "support/vcd_reader.hpp"
 
 namespace trirast {
 namespace {
+
+using test::read_vcd;
+using test::rises;
+using test::slurp;
+using test::value_at;
+using test::Vcd;
+using test::vcd_bin;
 
 EngineResult run_model(const SetupResult& setup, const RasterConfig& cfg) {
   EngineResult r;
@@ -100,101 +105,6 @@ TEST(ScImproved2, RefusesOtherEndpoints) {
 }
 
 // ---- the trace ---------------------------------------------------------------------------------
-
-// A VCD read back: "scope.name" -> id, and each id's (time, value) changes, $dumpvars included.
-struct Vcd {
-  std::string top;
-  std::map<std::string, std::string> id_of;
-  std::map<std::string, std::vector<std::pair<uint64_t, std::string>>> values;
-  uint64_t first_time = 0, last_time = 0;
-  bool timescale_1ns = false;
-};
-
-Vcd read_vcd(const std::string& path) {
-  Vcd v;
-  std::ifstream in(path);
-  EXPECT_TRUE(in.good()) << path;
-  std::string line;
-  std::vector<std::string> scopes;
-  uint64_t t = 0;
-  bool seen_time = false, in_timescale = false;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string w;
-    ls >> w;
-    if (w == "$timescale") {
-      std::string unit;
-      ls >> unit;
-      in_timescale = unit.empty();
-      if (unit == "1ns") v.timescale_1ns = true;
-    } else if (in_timescale) {
-      if (w == "1ns") v.timescale_1ns = true;
-      in_timescale = false;
-    } else if (w == "$scope") {
-      std::string kind, name;
-      ls >> kind >> name;
-      if (scopes.empty()) v.top = name;
-      scopes.push_back(name);
-    } else if (w == "$upscope") {
-      scopes.pop_back();
-    } else if (w == "$var") {
-      std::string type, width, id, name;
-      ls >> type >> width >> id >> name;
-      v.id_of[scopes.back() + "." + name] = id;
-    } else if (!w.empty() && w[0] == '#') {
-      t = std::stoull(w.substr(1));
-      if (!seen_time) v.first_time = t;
-      seen_time = true;
-      v.last_time = t;
-    } else if (!w.empty() && (w[0] == 'b' || w[0] == '0' || w[0] == '1' || w[0] == 'x')) {
-      std::string id, val;
-      if (w[0] == 'b') {
-        val = w.substr(1);
-        ls >> id;
-      } else {
-        val = w.substr(0, 1);
-        id = w.substr(1);
-      }
-      v.values[id].push_back({t, val});
-    }
-  }
-  return v;
-}
-
-// The value of a signal at time t (binary text; "?" before its first value).
-std::string value_at(const Vcd& v, const std::string& sig, uint64_t t) {
-  const auto& ch = v.values.at(v.id_of.at(sig));  // in time order
-  const auto it = std::upper_bound(ch.begin(), ch.end(), t,
-                                   [](uint64_t x, const auto& tv) { return x < tv.first; });
-  return it == ch.begin() ? "?" : std::prev(it)->second;
-}
-
-// The times at which a 1-bit signal rises to 1 (its $dumpvars value at the first time included).
-std::vector<uint64_t> rises(const Vcd& v, const std::string& sig) {
-  std::vector<uint64_t> r;
-  std::string prev = "?";
-  for (const auto& tv : v.values.at(v.id_of.at(sig))) {
-    if (tv.second == "1" && prev != "1") r.push_back(tv.first);
-    prev = tv.second;
-  }
-  return r;
-}
-
-std::string bin(uint64_t x) {
-  std::string s;
-  do {
-    s.insert(s.begin(), char('0' + (x & 1)));
-    x >>= 1;
-  } while (x);
-  return s;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 const char* kImproved2Signals[] = {"box_stage.tri_accept",
                                    "box_stage.busy",
@@ -283,15 +193,15 @@ TEST(ScImproved2, TraceAgreesWithTheCycles) {
       if (!c.spans) continue;
       EXPECT_EQ(value_at(v, "span_sink.take", c.first_span_cycle), "1") << c.tri;
       EXPECT_EQ(value_at(v, "span.valid", c.first_span_cycle), "1") << c.tri;
-      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), bin(c.tri)) << c.tri;
-      EXPECT_EQ(value_at(v, "span.tri", c.done_cycle), bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), vcd_bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "span.tri", c.done_cycle), vcd_bin(c.tri)) << c.tri;
       // The walk stage holds it from the hand-off's next cycle to its last row; the job stage
       // in the hand-off cycle; the box stage in the cycle after the accept.
-      EXPECT_EQ(value_at(v, "walk_stage.tri", c.walk_start_cycle), bin(c.tri)) << c.tri;
-      EXPECT_EQ(value_at(v, "walk_stage.tri", c.walk_end_cycle), bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "walk_stage.tri", c.walk_start_cycle), vcd_bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "walk_stage.tri", c.walk_end_cycle), vcd_bin(c.tri)) << c.tri;
       EXPECT_NE(value_at(v, "walk_stage.state", c.walk_end_cycle), "0") << c.tri;
-      EXPECT_EQ(value_at(v, "job_stage.tri", c.handoff_cycle), bin(c.tri)) << c.tri;
-      EXPECT_EQ(value_at(v, "box_stage.tri", c.accept_cycle + 1), bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "job_stage.tri", c.handoff_cycle), vcd_bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "box_stage.tri", c.accept_cycle + 1), vcd_bin(c.tri)) << c.tri;
       ++checked;
     }
     EXPECT_GT(checked, 50u);
@@ -421,12 +331,12 @@ TEST(ScImproved2, TraceWindow) {
   size_t pos = 0;
   while (r.cycles[pos].accept_cycle != lo) ++pos;
   ASSERT_GT(pos, 0u);
-  EXPECT_EQ(value_at(v, "box_stage.tri", lo), bin(r.cycles[pos - 1].tri));
+  EXPECT_EQ(value_at(v, "box_stage.tri", lo), vcd_bin(r.cycles[pos - 1].tri));
   EXPECT_EQ(value_at(v, "box_stage.busy", lo), "1");
   size_t checked = 0;
   for (const TriangleCycles& c : r.cycles)
     if (c.tri >= 3000 && c.tri <= 3099 && c.spans) {
-      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), bin(c.tri)) << c.tri;
+      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), vcd_bin(c.tri)) << c.tri;
       EXPECT_EQ(value_at(v, "span_sink.take", c.first_span_cycle), "1") << c.tri;
       ++checked;
     }

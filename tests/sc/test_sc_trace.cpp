@@ -4,101 +4,27 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include <cstdio>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/setup.hpp"
 #include "sc/sc_engine.hpp"
 #include "scene/scene.hpp"
+#include "support/run_command.hpp"
+#include "support/vcd_reader.hpp"
 
 namespace trirast {
 namespace {
 
-struct Vcd {
-  std::map<std::string, std::string> id_of;  // "scope.name" -> id
-  std::map<std::string, int> changes;        // id -> value changes after $dumpvars
-  // id -> (time, value) of every change, $dumpvars included
-  std::map<std::string, std::vector<std::pair<uint64_t, std::string>>> values;
-  uint64_t first_time = 0, last_time = 0;
-};
-
-Vcd read_vcd(const std::string& path) {
-  Vcd v;
-  std::ifstream in(path);
-  std::string line;
-  std::vector<std::string> scopes;
-  uint64_t t = 0;
-  bool dump = false, seen_time = false;
-  while (std::getline(in, line)) {
-    std::istringstream ls(line);
-    std::string w;
-    ls >> w;
-    if (w == "$scope") {
-      std::string kind, name;
-      ls >> kind >> name;
-      scopes.push_back(name);
-    } else if (w == "$upscope") {
-      scopes.pop_back();
-    } else if (w == "$var") {
-      std::string type, width, id, name;
-      ls >> type >> width >> id >> name;
-      v.id_of[scopes.back() + "." + name] = id;
-    } else if (w == "$dumpvars") {
-      dump = true;
-    } else if (w == "$end") {
-      dump = false;
-    } else if (!w.empty() && w[0] == '#') {
-      t = std::stoull(w.substr(1));
-      if (!seen_time) v.first_time = t;
-      seen_time = true;
-      v.last_time = t;
-    } else if (!w.empty() && (w[0] == 'b' || w[0] == '0' || w[0] == '1' || w[0] == 'x')) {
-      std::string id, val;
-      if (w[0] == 'b') {
-        val = w.substr(1);
-        ls >> id;
-      } else {
-        val = w.substr(0, 1);
-        id = w.substr(1);
-      }
-      v.values[id].push_back({t, val});
-      if (!dump) ++v.changes[id];
-    }
-  }
-  return v;
-}
-
-// The value of a signal at time t (binary text).
-std::string value_at(const Vcd& v, const std::string& sig, uint64_t t) {
-  std::string val = "?";
-  for (const auto& tv : v.values.at(v.id_of.at(sig)))
-    if (tv.first <= t) val = tv.second;
-  return val;
-}
-
-std::string bin(uint64_t x) {
-  std::string s;
-  do {
-    s.insert(s.begin(), char('0' + (x & 1)));
-    x >>= 1;
-  } while (x);
-  return s;
-}
+using test::read_vcd;
+using test::slurp;
+using test::value_at;
+using test::Vcd;
+using test::vcd_bin;
 
 uint64_t file_size(const std::string& path) {
   struct stat st {};
   return stat(path.c_str(), &st) == 0 ? uint64_t(st.st_size) : 0;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
 }
 
 const char* kDocumented[] = {"setup.tri",  "setup.state",    "setup.tri_accept", "walk.tri",
@@ -133,7 +59,7 @@ TEST(ScTrace, DocumentedSignalsExistAndChange) {
       const TriangleCycles& c = r.cycles[i];
       if (!c.spans) continue;
       EXPECT_EQ(value_at(v, "span.valid", c.first_span_cycle), "1");
-      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), bin(c.tri));
+      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), vcd_bin(c.tri));
       EXPECT_EQ(value_at(v, "setup.tri_accept", c.accept_cycle), "1");
     }
     // The GTKWave save file beside it, one group per module.
@@ -145,7 +71,8 @@ TEST(ScTrace, DocumentedSignalsExistAndChange) {
     // state by name through a filter file beside it.
     const std::string base = trad ? "sc_trace_trad" : "sc_trace_model";
     EXPECT_NE(gtkw.find("[dumpfile] \"" + base + ".vcd\"\n[savefile] \"" + base + ".gtkw\"\n"),
-              std::string::npos) << gtkw.substr(0, 300);
+              std::string::npos)
+        << gtkw.substr(0, 300);
     EXPECT_NE(gtkw.find("[timestart] 0\n"), std::string::npos);
     EXPECT_NE(gtkw.find("\n*-"), std::string::npos);  // a zoom out to the whole run
     EXPECT_NE(gtkw.find("^1 " + base + ".setup_state.filter\n@2024\n"), std::string::npos);
@@ -192,7 +119,7 @@ TEST(ScTrace, WindowKeepsA100kSceneSmall) {
   // The values at the window's start are the run's (a triangle is already in the unit).
   for (const TriangleCycles& c : r.cycles) {
     if (c.tri == 50000 && c.spans) {
-      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), bin(c.tri));
+      EXPECT_EQ(value_at(v, "span.tri", c.first_span_cycle), vcd_bin(c.tri));
     }
   }
 }
