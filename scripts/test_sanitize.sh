@@ -4,7 +4,8 @@
 # ctest (e.g. -R fuzz). scripts/test.sh (CI) runs it after the normal suite.
 #
 # Every test program runs under both sanitizers, the SystemC ones included; only the benchmark
-# programs are not built, and the libFuzzer test (sanitized itself) runs in the normal suite only.
+# programs are not built, and the libFuzzer test (sanitized itself) and the gen2 model-vs-RTL
+# prototype check (a Verilator testbench; tests/sc/CMakeLists.txt) run in the normal suite only.
 # The Verilated models' generated C++ is compiled without instrumentation (Verilator's code, not
 # ours; dv/verilator/CMakeLists.txt); the harnesses around them are checked.
 # SystemC switches stacks between its coroutines (QuickThreads in Debian's libsystemc, not
