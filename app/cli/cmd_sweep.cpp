@@ -602,16 +602,19 @@ int cmd_sweep(int argc, char** argv) {
                                                 : "estimates only (no synthesis CSV)");
   std::printf("  %-40s %12s %10s %10s %8s  %s\n", "Pareto, hardware (error, cycles)", "error ppm",
               "cyc/tri", "LUTs", "cracks", "");
+  // One row of a front; `no_area` says why a point without a synthesized area has none.
+  auto front_row = [&](size_t p, const char* no_area) {
+    std::printf("  %-40s %12.3f %10.3f %10s %8s  %s\n", points[p].label().c_str(),
+                summaries[p].error_ppm, summaries[p].cycles_per_triangle,
+                summaries[p].area.known() ? std::to_string(int64_t(summaries[p].area.luts)).c_str()
+                                          : "-",
+                summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
+                summaries[p].area.estimate() ? "(area estimate)"
+                : summaries[p].area.known()  ? ""
+                                             : no_area);
+  };
   for (size_t p = 0; p < points.size(); ++p)
-    if (summaries[p].pareto_cycles)
-      std::printf("  %-40s %12.3f %10.3f %10s %8s  %s\n", points[p].label().c_str(),
-                  summaries[p].error_ppm, summaries[p].cycles_per_triangle,
-                  summaries[p].area.known() ? std::to_string(int64_t(summaries[p].area.luts)).c_str()
-                                            : "-",
-                  summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
-                  summaries[p].area.estimate() ? "(area estimate)"
-                  : summaries[p].area.known()  ? ""
-                                               : "(area not synthesized)");
+    if (summaries[p].pareto_cycles) front_row(p, "(area not synthesized)");
   // The model-only front (quotient truncation; the second-generation unit, whose RTL is not in
   // rtl/): configurations no other one dominates.
   bool whatif_header = false;
@@ -619,14 +622,7 @@ int cmd_sweep(int argc, char** argv) {
     if (summaries[p].whatif_cycles) {
       if (!whatif_header) std::printf("  Pareto, model only (error, cycles)\n");
       whatif_header = true;
-      std::printf("  %-40s %12.3f %10.3f %10s %8s  %s\n", points[p].label().c_str(),
-                  summaries[p].error_ppm, summaries[p].cycles_per_triangle,
-                  summaries[p].area.known() ? std::to_string(int64_t(summaries[p].area.luts)).c_str()
-                                            : "-",
-                  summaries[p].cracks < 0 ? "-" : std::to_string(summaries[p].cracks).c_str(),
-                  summaries[p].area.estimate() ? "(area estimate)"
-                  : summaries[p].area.known()  ? ""
-                                               : "(area unknown)");
+      front_row(p, "(area unknown)");
     }
   if (failures) std::printf("  %d point(s) failed: see the error column of sweep.csv\n", failures);
   if (!missing.empty())
