@@ -1,10 +1,13 @@
 #include "sc/vcd_trace.hpp"
 
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <map>
 #include <stdexcept>
-#include <cstdlib>
 
 #include "core/gtkw_save.hpp"
 #include "core/temporary_files.hpp"
@@ -86,8 +89,14 @@ void write_file(const std::string& path, const std::string& text) {
   }
   const std::string fst_tmp = path + ".tmp.fst";
   TemporaryPath fst_guard(fst_tmp);
+  TemporaryPath hier_guard(fst_tmp + ".hier");  // vcd2fst's own scratch file
   const std::string cmd = "vcd2fst '" + tmp + "' '" + fst_tmp + "' >/dev/null 2>&1";
   const int rc = std::system(cmd.c_str());
+  // system() ignores SIGINT in this process while vcd2fst runs: a Ctrl-C or SIGTERM to the
+  // process group ends vcd2fst only. Pass it on, so the run ends as interrupted (the handler of
+  // core/temporary_files removes the temporaries) instead of reporting a failed conversion.
+  if (rc != -1 && WIFSIGNALED(rc) && (WTERMSIG(rc) == SIGINT || WTERMSIG(rc) == SIGTERM))
+    std::raise(WTERMSIG(rc));
   if (rc != 0 || std::rename(fst_tmp.c_str(), path.c_str()) != 0)
     throw std::runtime_error("--trace " + path + ": vcd2fst (gtkwave) failed" +
                              std::string(rc == 127 * 256 ? " (not installed)" : "") +
