@@ -13,6 +13,7 @@
 #include "unit/improved_unit.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "verilator/rtl_hs_engine.hpp"
+#include "verilator/rtl_improved2_engine.hpp"
 #include "verilator/rtl_trad_engine.hpp"
 
 namespace trirast {
@@ -37,6 +38,10 @@ const std::vector<EngineInfo>& engine_registry() {
        "second-generation improved unit, SystemC model: its spans plus cycles, N = 1 "
        "(docs/gen2-design.md)",
        true, make_improved2_model_engine, /*timed=*/true},
+      {"improved2-rtl",
+       "second-generation improved unit, Verilated RTL (rtl/trirast_improved2.f): improved2-sc's "
+       "spans and cycles, N = 1",
+       true, make_rtl_improved2_engine, /*timed=*/true},
       {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "
        "coverage, not the rule",

@@ -64,7 +64,7 @@ values, no multipliers: the iCE40 form); "DSP corner" is the form with the corne
 multipliers in one cycle. "vs trad" is \`(trad - gen2) / trad\` and "vs gen1" \`(gen1 - gen2) /
 gen1\`: positive when the second generation needs fewer cycles. The paper reports the improved
 unit about 32% faster than the traditional one. The model's cycles equal those of the RTL
-prototype \`scripts/gen2_study/g2_unit.sv\` triangle for triangle
+prototype \`rtl/trirast_improved2_top.sv\` triangle for triangle
 (\`scripts/gen2_study/unit_cycles_check.sh\`; docs/gen2-design.md lists the scenes compared);
 that RTL is a study prototype, not yet a unit of rtl/.
 

@@ -9,21 +9,21 @@
 #   scripts/gen2_study.sh --check [WORKDIR]    (only the functional cross-check: Verilator --binary
 #       of scripts/gen2_study/g2_check_tb.sv, random inputs: the corner-value prototypes (LSB-first
 #       radix 2, 4, 16 with E_L and E_R; MSB-first radix 4, 16; narrow 13-bit; full-width `*`) against
-#       the formula, g2_walker_cs against rtl/trirast_edge_walker.sv row by row, g2_span_gen_par
-#       against rtl/trirast_span_generator.sv, g2_box2x2 against the sign tests written out; then
+#       the formula, trirast_edge_walker2 against rtl/trirast_edge_walker.sv row by row, trirast_span_generator2
+#       against rtl/trirast_span_generator.sv, trirast_direct_test_2x2 against the sign tests written out; then
 #       scripts/gen2_study/g2_walk_check_tb.sv: g2_walk_slice as a whole against rtl/'s walk stage
 #       and span port on the same random hand-offs and sink pattern (spans equal; one cycle later
 #       each with an always-ready sink); then
-#       scripts/gen2_study/g2_fifo_check_tb.sv: g2_span_fifo_ram (block RAM) against
+#       scripts/gen2_study/g2_fifo_check_tb.sv: trirast_span_fifo_ram (block RAM) against
 #       rtl/trirast_span_fifo.sv on random pushes and pops, depths 2 to 32; then
-#       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane g2_lane against gen1's normalizer + lane
+#       scripts/gen2_study/g2_lane_tb.sv: the redesigned lane trirast_edge_lane2 against gen1's normalizer + lane
 #       on random and hard edges and on the edges of the scenes LANE_SCENES (default builtin:highpoly-far
 #       builtin:mixed, exported by TRIRAST, default build/trirast; skipped when it is missing), with the
-#       cycles per edge and per triangle of both, for g2_lane's PreIter = 0 and 1; then
+#       cycles per edge and per triangle of both, for trirast_edge_lane2's PreIter = 0 and 1; then
 #       scripts/gen2_study/g2_box_check_tb.sv: g2_box_stage (one cycle) and g2_box_stage3 (both
 #       variants) against rtl/trirast_interface.sv's box and empty flag and the operands' formula,
 #       random triangles of the box's hard cases under random offer and stall patterns; then
-#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype g2_unit (both corner forms, and
+#       scripts/gen2_study/g2_unit_tb.sv: the whole-unit prototype trirast_improved2_top (both corner forms, and
 #       the radix-16 form with the iCE40 fit's build choices) against rtl/trirast_top.sv on the scenes UNIT_SCENES (exported by TRIRAST; skipped when it
 #       is missing), spans equal span for span, both units' cycles; then
 #       scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first corner units, pipelined
@@ -90,15 +90,15 @@ DESIGNS=(
 "g2.box_stage2|g2_box_stage|$S/g2_box_stage.sv|Split=1|gen2 box stage B in two pipelined cycles (min/max; clip, empty, operands): triangle register (no C), box, operands abs(dxL), abs(dy) into the corner stage's register"
 "g2.box_stage3|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=0|gen2 box stage B in three pipelined steps with valid/ready (per-vertex first/last pixel and min/max; clip and empty beside each other; operands): triangle register, two more copies, empty registered"
 "g2.box_stage3p|g2_box_stage3|$S/g2_box_stage3.sv|PortMinMax=1|the same with step 1 on the port's data before the triangle register: two copies of the triangle, the latency of g2.box_stage2"
-"g2.corner_mul|g2_corner_mul|$S/g2_corner_mul.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
+"g2.corner_mul|trirast_corner_products|$R/trirast_corner_products.sv||vertex-relative E_L, six full-width 25x26 products written as *, 1 cycle"
 "g2.corner_narrow13|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=13|vertex-relative E_L, E_R, 13x13 multipliers (extent < 16 px), 1 cycle"
 "g2.corner_narrow11|g2_corner_narrow|$S/g2_corner_narrow.sv|NarrowBits=11|vertex-relative E_L, E_R, 11x11 multipliers (extent < 4 px), 1 cycle"
 "g2.corner_r2_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=1,WithER=1|shift-add radix 2, E_L and E_R, ceil(bits/1) cycles"
 "g2.corner_r4_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=1|shift-add radix 4, E_L and E_R, ceil(bits/2) cycles"
 "g2.corner_r4_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=0|shift-add radix 4, E_L only, ceil(bits/2) cycles"
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
-"g2.corner_msb4|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
-"g2.corner_msb16|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
+"g2.corner_msb4|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
+"g2.corner_msb16|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
 "g2.corner_msb16p|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=0|MSB-first radix 16 pipelined: +-A, 3A, -+B, 3B registered at the start, s = A*digit + B*digit registered, E_L only, 1 + ceil(bits/4) + 1 cycles"
 "g2.corner_msb16p2|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=1|the same with the digit select registered too, 1 + ceil(bits/4) + 2 cycles"
 "g2.corner_msb16ps|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegStart=1|g2.corner_msb16p with the operand magnitudes, signs, A, B registered first (B2's registers in the unit), 1 + 1 + ceil(bits/4) + 1 cycles"
@@ -107,34 +107,34 @@ DESIGNS=(
 "g1.lanes_step|g1_lanes|$R/trirast_adder_divider.sv $R/trirast_edge_lane.sv $R/trirast_edge_normalizer.sv $S/g1_lanes.sv|TieMode=1|the same, boundary mode tied to step and the divider to adaptive (build parameters instead of runtime inputs)"
 "g1.adder_divider|trirast_adder_divider|$R/trirast_adder_divider.sv||gen1 adder divider alone (restoring, 1 quotient bit per cycle, 50-bit numerator)"
 "g1.normalizer|trirast_edge_normalizer|$R/trirast_edge_normalizer.sv||gen1 edge normalizer (combinational), one per edge"
-"g2.lane|g2_lane|$S/g2_lane.sv||redesigned lane with its normalizer (step mode; registered operation, set-up cycle, 25-bit remainder arithmetic), one per edge"
-"g2.lanes|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=1|3 redesigned lanes with normalizers as in the setup stage (step mode, adaptive divider)"
-"g2.lanes_fixed|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=0|the same with the fixed divider (m = Q: no numerator shifter)"
-"g2.lanes_pre|g2_lanes|$S/g2_lane.sv $S/g2_lanes.sv|Adaptive=1,PreIter=1|3 lanes, adaptive, with the pre-iteration (saturation through the trial subtractor, dir - e without an output adder; one more cycle per division)"
+"g2.lane|trirast_edge_lane2|$R/trirast_edge_lane2.sv||redesigned lane with its normalizer (step mode; registered operation, set-up cycle, 25-bit remainder arithmetic), one per edge"
+"g2.lanes|g2_lanes|$R/trirast_edge_lane2.sv $S/g2_lanes.sv|Adaptive=1|3 redesigned lanes with normalizers as in the setup stage (step mode, adaptive divider)"
+"g2.lanes_fixed|g2_lanes|$R/trirast_edge_lane2.sv $S/g2_lanes.sv|Adaptive=0|the same with the fixed divider (m = Q: no numerator shifter)"
+"g2.lanes_pre|g2_lanes|$R/trirast_edge_lane2.sv $S/g2_lanes.sv|Adaptive=1,PreIter=1|3 lanes, adaptive, with the pre-iteration (saturation through the trial subtractor, dir - e without an output adder; one more cycle per division)"
 "g1.span_fifo|trirast_span_fifo|$R/trirast_span_fifo.sv|EntryBits=78|gen1 span FIFO, 8 entries of {tag, y, x_begin, x_end} (flip-flops)"
 "g1.walker|trirast_edge_walker|$R/trirast_edge_walker.sv|NumEndpoints=1|gen1 edge walker, N = 1 (serial add-compare-subtract)"
-"g2.walker_cs|g2_walker_cs|$S/g2_walker_cs.sv||carry-select edge walker, parallel leave test, bound register"
+"g2.walker_cs|trirast_edge_walker2|$R/trirast_edge_walker2.sv||carry-select edge walker, parallel leave test, bound register"
 "g1.span_gen|trirast_span_generator|$R/trirast_span_generator.sv||gen1 span generator (serial compare-selects), combinational"
-"g2.span_gen_par|g2_span_gen_par|$S/g2_span_gen_par.sv||span generator, 6 parallel compares, combinational"
+"g2.span_gen_par|trirast_span_generator2|$R/trirast_span_generator2.sv||span generator, 6 parallel compares, combinational"
 "g1.walk_fifo|g1_walk_fifo|$R/trirast_edge_walker.sv $R/trirast_span_generator.sv $R/trirast_walk_stage.sv $R/trirast_span_fifo.sv $S/g1_walk_fifo.sv||gen1 walk stage + span FIFO (combinational push)"
-"g2.walk_fifo|g2_walk_slice|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
-"g2.box2x2_w50|g2_box2x2|$S/g2_box2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
-"g2.box2x2_w26|g2_box2x2|$S/g2_box2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
-"g2.unit|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
-"g2.unit_msb16|g2_unit_msb16|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
-"g2.unit_xc7|g2_unit|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv|TestHi=1,WalkerCs=0|g2.unit (DSP corner) with the two iCE40 fit choices that apply to it: the 2x2 test on E_L >> F and the walkers' carry-in step (same spans and cycles)"
-"g2.unit_ice40|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
-"g2.unit_ice40_pre|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (g2_lane PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
-"g2.unit_ice40c|g2_unit_ice40c|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40c.sv||g2.unit_ice40 with E2Sum: E_2 = C_0 + C_1 + C_2 - biases - E_0 - E_1 from the port's C, two corner accumulators (same spans and cycles; the port keeps tri_c_i)|bram"
-"g2.unit_ice40_ff|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
-"g2.unit_ice40_cs|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
-"g2.unit_ice40_nosf|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
-"g2.unit_ice40_notest|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
-"g2.unit_ice40_noel|g2_unit_ice40|$S/g2_corner_mul.sv $S/g2_corner_msb.sv $S/g2_box2x2.sv $S/g2_lane.sv $S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv $S/g2_unit.sv $S/g2_unit_ice40.sv|ElReg=0|g2.unit_ice40 without ElReg: E_L for the lanes through the 150-bit select|bram"
-"g2.walk_ice40|g2_unit_walk|$S/g2_walker_cs.sv $S/g2_span_gen_par.sv $R/trirast_span_fifo.sv $S/g2_span_fifo_ram.sv $S/g2_unit_walk.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (g2_unit_walk: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
-"g2.walker_ci|g2_walker_cs|$S/g2_walker_cs.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
-"g2.corner_msb16f|g2_corner_msb|$S/g2_corner_msb.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
-"g2.span_fifo_ram|g2_span_fifo_ram|$S/g2_span_fifo_ram.sv|EntryBits=78|span FIFO, 8 entries, storage in block RAM (registered read, bypass register): the same cycles as g1.span_fifo|bram"
+"g2.walk_fifo|g2_walk_slice|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
+"g2.box2x2_w50|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
+"g2.box2x2_w26|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
+"g2.unit|trirast_improved2_top|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv||whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
+"g2.unit_msb16|g2_unit_msb16|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
+"g2.unit_xc7|trirast_improved2_top|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv|TestHi=1,WalkerCs=0|g2.unit (DSP corner) with the two iCE40 fit choices that apply to it: the 2x2 test on E_L >> F and the walkers' carry-in step (same spans and cycles)"
+"g2.unit_ice40|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, E_L for the lanes from its register, 2x2 test on E_L >> F; no tri_c_i port|bram"
+"g2.unit_ice40_pre|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (trirast_edge_lane2 PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
+"g2.unit_ice40c|g2_unit_ice40c|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40c.sv||g2.unit_ice40 with E2Sum: E_2 = C_0 + C_1 + C_2 - biases - E_0 - E_1 from the port's C, two corner accumulators (same spans and cycles; the port keeps tri_c_i)|bram"
+"g2.unit_ice40_ff|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
+"g2.unit_ice40_cs|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
+"g2.unit_ice40_nosf|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
+"g2.unit_ice40_notest|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
+"g2.unit_ice40_noel|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|ElReg=0|g2.unit_ice40 without ElReg: E_L for the lanes through the 150-bit select|bram"
+"g2.walk_ice40|trirast_walk_stage2|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (trirast_walk_stage2: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
+"g2.walker_ci|trirast_edge_walker2|$R/trirast_edge_walker2.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
+"g2.corner_msb16f|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
+"g2.span_fifo_ram|trirast_span_fifo_ram|$R/trirast_span_fifo_ram.sv|EntryBits=78|span FIFO, 8 entries, storage in block RAM (registered read, bypass register): the same cycles as g1.span_fifo|bram"
 )
 
 count() {  # count CELL-REGEX STATFILE: sum of the cells matching in Yosys's last stat
@@ -280,26 +280,26 @@ if [ "$CHECK" = 1 ]; then
   rm -f "$WORK"/scene_*.tri
   tb_build g2_check_tb check \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
-    "$S/g2_corner_digit.sv" "$S/g2_corner_msb.sv" "$S/g2_corner_mul.sv" "$S/g2_walker_cs.sv" \
-    "$S/g2_span_gen_par.sv" "$S/g2_box2x2.sv" "$S/g2_check_tb.sv"
+    "$S/g2_corner_digit.sv" "$R/trirast_corner_serial.sv" "$R/trirast_corner_products.sv" "$R/trirast_edge_walker2.sv" \
+    "$R/trirast_span_generator2.sv" "$R/trirast_direct_test_2x2.sv" "$S/g2_check_tb.sv"
   tb_run g2_check_tb check g2_check_tb ""
   # The retimed walk stage as a whole against gen1's walk stage and span port.
   tb_build g2_walk_check_tb check_walk \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$R/trirast_span_fifo.sv" \
-    "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$S/g2_walker_cs.sv" \
-    "$S/g2_span_gen_par.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
+    "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$R/trirast_edge_walker2.sv" \
+    "$R/trirast_span_generator2.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
   tb_run g2_walk_check_tb check_walk g2_walk_check_tb ""
   # The span FIFO in block RAM (the iCE40 fit's) against gen1's, depths 2 to 32.
   tb_build g2_fifo_check_tb check_fifo \
-    "$R/trirast_span_fifo.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_fifo_check_tb.sv"
+    "$R/trirast_span_fifo.sv" "$R/trirast_span_fifo_ram.sv" "$S/g2_fifo_check_tb.sv"
   tb_run g2_fifo_check_tb check_fifo g2_fifo_check_tb ""
   # The redesigned lane against gen1's normalizer + lane: random and hard edges, then the edges of
   # the scenes in LANE_SCENES exported by TRIRAST (when it runs).
-  # Two builds: g2_lane as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).
+  # Two builds: trirast_edge_lane2 as measured (PreIter = 0) and with its pre-iteration (PreIter = 1).
   for pre in 0 1; do
     tb_build g2_lane_tb "check_lane$pre" -GPreIter=$pre \
       "$R/trirast_adder_divider.sv" "$R/trirast_edge_lane.sv" "$R/trirast_edge_normalizer.sv" \
-      "$R/trirast_edge_walker.sv" "$S/g2_lane.sv" "$S/g2_lane_tb.sv"
+      "$R/trirast_edge_walker.sv" "$R/trirast_edge_lane2.sv" "$S/g2_lane_tb.sv"
   done
   runs=("")
   if [ -x "$TRIRAST" ]; then
@@ -322,7 +322,7 @@ if [ "$CHECK" = 1 ]; then
   tb_build g2_box_check_tb check_box \
     "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv"
   tb_run g2_box_check_tb check_box g2_box_check_tb ""
-  # The whole-unit prototype g2_unit (both corner forms) against gen1's trirast_top on the scenes
+  # The whole-unit prototype trirast_improved2_top (both corner forms) against gen1's trirast_top on the scenes
   # UNIT_SCENES (default builtin:mixed builtin:highpoly-far, exported by TRIRAST; skipped when it
   # is missing): spans equal span for span (sinks always ready, then both ready in two cycles of
   # three), and both units' cycles.
@@ -348,9 +348,9 @@ if [ "$CHECK" = 1 ]; then
       esac
       tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit -DG2_E2SUM=$e2 \
         "${gen1_srcs[@]}" \
-        "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
-        "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_span_fifo_ram.sv" "$S/g2_unit_walk.sv" \
-        "$S/g2_unit.sv" "$S/g2_unit_tb.sv"
+        "$R/trirast_corner_products.sv" "$R/trirast_corner_serial.sv" "$R/trirast_direct_test_2x2.sv" "$R/trirast_edge_lane2.sv" \
+        "$R/trirast_edge_walker2.sv" "$R/trirast_span_generator2.sv" "$R/trirast_span_fifo_ram.sv" "$R/trirast_walk_stage2.sv" \
+        "$R/trirast_improved2_top.sv" "$S/g2_unit_tb.sv"
       for sc in $UNIT_SCENES; do
         hex="$WORK/unit_${sc#builtin:}.hex"
         for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
@@ -367,7 +367,7 @@ if [ "$CHECK" = 1 ]; then
   # The MSB-first corner units on independent full-width operands with the extremes, and
   # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
   tb_build g2_corner_check_tb check_corner \
-    "$S/g2_corner_msb.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv"
+    "$R/trirast_corner_serial.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv"
   tb_run g2_corner_check_tb check_corner g2_corner_check_tb ""
   exit 0
 fi

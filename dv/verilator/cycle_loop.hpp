@@ -19,7 +19,14 @@
 //
 // The stage breakdown (docs/timing.md, "Outputs") comes from the observation outputs both tops
 // have: setup_state_o (its first non-idle cycle, its first StHold cycle), handoff_o, and the walk
-// stage's walk_busy_o / walk_last_o with walk_tag_o.
+// stage's walk_busy_o / walk_last_o with walk_tag_o. A unit whose setup is a pipeline (several
+// triangles between their accept and hand-off: the second-generation unit) has no setup_state_o;
+// it says so with `static constexpr bool kPipelinedSetup = true` and observes its stages itself:
+//
+//   void observe_stages(const Top&, uint64_t c, std::vector<TriangleCycles>&)
+//                                                 every cycle: setup start, setup done, hand-off,
+//                                                 box size, lane work of the triangles inside
+//   bool idle(const Top&)                         no triangle inside the unit (the run's end)
 //
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
 // applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
@@ -67,6 +74,11 @@ template <class Unit, class = void>
 struct has_watchdog : std::false_type {};
 template <class Unit>
 struct has_watchdog<Unit, std::void_t<decltype(Unit::kWatchdogCycles)>> : std::true_type {};
+
+template <class Unit, class = void>
+struct has_pipelined_setup : std::false_type {};
+template <class Unit>
+struct has_pipelined_setup<Unit, std::void_t<decltype(Unit::kPipelinedSetup)>> : std::true_type {};
 
 template <class Top, class Unit>
 CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
@@ -186,7 +198,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     top->span_ready_i = sink.ready(c);
     top->eval();
     // Stop once every triangle went in and the unit is empty (cycle c is not part of the run).
-    if (next == n && top->tri_ready_o && !top->walk_busy_o && !top->span_valid_o) break;
+    if constexpr (has_pipelined_setup<Unit>::value) {
+      if (next == n && unit.idle(*top)) break;
+    } else {
+      if (next == n && top->tri_ready_o && !top->walk_busy_o && !top->span_valid_o) break;
+    }
 
     // Trace window: from the cycle the first triangle is on the port to the cycle after the last
     // one is done.
@@ -198,7 +214,9 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
 
     bool progress = false;
     // The setup stage's triangle (accepted in an earlier cycle).
-    if (in_setup < n) {
+    if constexpr (has_pipelined_setup<Unit>::value) {
+      unit.observe_stages(*top, c, out.cycles);
+    } else if (in_setup < n) {
       TriangleCycles& tc = out.cycles[in_setup];
       const unsigned state = unsigned(top->setup_state_o);
       if (state != 0 && !setup_started) {

@@ -81,12 +81,14 @@ void drive_edge_triangle(Top& top, const TriangleSetup& t) {
 // Before a run of a unit with edge-function ports: runs its bit-accurate model Unit on every
 // triangle, so that one the widths P do not hold raises the model's WidthError naming it (the RTL
 // assumes fitting inputs), and checks each edge's C against the port.
-template <class Unit, class P>
+// Output is what Unit::run_triangle writes (the first generation's spans; the second's triangle
+// record, which it reuses between calls).
+template <class Unit, class P, class Output = SpanList>
 void check_widths(const SetupResult& setup, const RasterConfig& cfg) {
   Unit unit(cfg);
-  SpanList scratch;
+  Output scratch;
   for (const TriangleSetup& t : setup.tris) {
-    scratch.clear();
+    if constexpr (std::is_same_v<Output, SpanList>) scratch.clear();
     unit.run_triangle(t, scratch);
     for (int k = 0; k < 3; ++k) check_signed(t.edge[k].C, P::kEdgeBits, t.index, "C", "edge value");
   }

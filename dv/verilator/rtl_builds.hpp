@@ -23,12 +23,15 @@ struct RtlBuild {
   // The half-space unit's build parameters StampSize, TileSize (0: none), WalkZigzag (0 otherwise).
   int stamp, tile;
   bool zigzag;
+  // The second-generation unit's CornerForm (RasterConfig::g2_corner_form; 0 otherwise).
+  int corner_form;
 };
 
 // Smallest first (by FIFO depth, then endpoints). Defined in the generated rtl_builds_list.cpp.
 const std::vector<RtlBuild>& improved_builds();
 const std::vector<RtlBuild>& trad_builds();
 const std::vector<RtlBuild>& halfspace_builds();
+const std::vector<RtlBuild>& improved2_builds();
 
 // "S:coord:box N<=4 DEPTH<=1024, ..." for error messages.
 std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box);

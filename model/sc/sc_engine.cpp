@@ -108,7 +108,7 @@ class ScEngine : public Engine {
     if (unit_ == Unit::Improved) ImprovedUnit check(cfg);  // the datapath's width limits
     if (unit_ == Unit::Halfspace) HalfspaceUnit check(cfg);
     if (unit_ == Unit::Improved2) {
-      // The whole-unit prototype it follows (scripts/gen2_study/g2_unit.sv) has one walk slice.
+      // The whole-unit prototype it follows (rtl/trirast_improved2_top.sv) has one walk slice.
       if (cfg.endpoints != 1)
         throw std::invalid_argument("--endpoints: improved2-sc models N = 1 only (got " +
                                     std::to_string(cfg.endpoints) + ")");

@@ -3,7 +3,7 @@
 // E vanishes at the edge's own vertex vx, vy), and E_R = E_L + Xmax*a. The same values as gen1's
 // interface (E(c) + bias, unit/interface.hpp); the hardware forms them either as DSP products in
 // one cycle or digit-serially, MSB first, 4 operand bits per cycle
-// (scripts/gen2_study/g2_corner_msb.sv, DigitBits 4), whose run length is digits().
+// (rtl/trirast_corner_serial.sv, DigitBits 4), whose run length is digits().
 #pragma once
 #include <cstdint>
 
@@ -19,7 +19,7 @@ class CornerUnit {
   // E_L of edge k at the pixel centre of (x0, y0), vertex-relative.
   int64_t corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const;
   // The digit-serial unit's run length at (x0, y0): the digits of 4 bits of the largest operand
-  // magnitude |cx0 - vx|, |cy0 - vy| over the three edges, at least 1 (g2_corner_msb's counter).
+  // magnitude |cx0 - vx|, |cy0 - vy| over the three edges, at least 1 (trirast_corner_serial's counter).
   int digits(const TriangleSetup& t, int64_t x0, int64_t y0) const;
   // Fills E_L and E_R of every edge of `box` (its a, b, x0, y0, Xmax already set) and checks them
   // against gen1's (`gen1`): a difference is a model bug (std::logic_error).

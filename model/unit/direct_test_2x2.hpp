@@ -1,4 +1,4 @@
-// The second-generation unit's direct 2x2 test (scripts/gen2_study/g2_box2x2.sv): a box of at most
+// The second-generation unit's direct 2x2 test (rtl/trirast_direct_test_2x2.sv): a box of at most
 // 2 x 2 pixel centres (Xmax <= 1, Ymax <= 1) is tested from the corner values alone, twelve sign
 // tests E_L, E_L + a, E_L + b, E_L + a + b >= 0, and each of its (at most two) rows gives at most
 // one span (a convex triangle covers a run). No lanes, no walkers.

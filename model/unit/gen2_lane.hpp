@@ -1,9 +1,9 @@
-// The second-generation unit's redesigned lane (scripts/gen2_study/g2_lane.sv: gen1's normalizer
+// The second-generation unit's redesigned lane (rtl/trirast_edge_lane2.sv: gen1's normalizer
 // folded into the load, boundary mode step, adaptive divider): its results are gen1's normalizer
 // + lane's wherever the walker reads them (the whole-unit prototype's check), so the model takes
 // those from gen1's classes; what is its own is the cycle count, computed here.
 //
-// From the cycle after the load to the first cycle the lane is done (g2_lane.sv's header):
+// From the cycle after the load to the first cycle the lane is done (trirast_edge_lane2.sv's header):
 //   horizontal edge:                       T + 1
 //   otherwise:  max(ms, T) + 1 + (enters ? me : 0)
 // with T the traversal's row steps (the column value u = T, dir +, or ~T1 = -T1 - 1, dir -, plus

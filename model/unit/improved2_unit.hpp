@@ -1,5 +1,5 @@
 // The second-generation improved unit (issue 13; docs/gen2-design.md, "The C++ datapath and
-// SystemC model"), bit-accurate, untimed: the whole-unit prototype scripts/gen2_study/g2_unit.sv
+// SystemC model"), bit-accurate, untimed: the whole-unit prototype rtl/trirast_improved2_top.sv
 // stage by stage.
 //
 //   [B] box stage: the box, clipped, and the empty test (gen1's interface computes the same box);

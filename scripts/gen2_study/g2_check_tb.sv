@@ -30,12 +30,12 @@ module g2_check_tb;
   logic start;
   logic busy2, busy4, busy16, busym4, busym16;
   logic [3*EB-1:0] m4_el, m16_el, mul_el;
-  g2_corner_mul u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+  trirast_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .el_o (mul_el));
-  g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busym4), .el_o (m4_el));
-  g2_corner_msb #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busym16), .el_o (m16_el));
   g2_corner_narrow #(.NarrowBits (13)) u_narrow (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b),
@@ -65,12 +65,12 @@ module g2_check_tb;
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
     .xmax_i (xmax), .row_i (row), .adv_i (adv), .adv_rows_i (3'd1), .mirror_o (m1),
     .row_state_o (st1), .row_x_o (x1));
-  g2_walker_cs u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
+  trirast_edge_walker2 u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
     .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
     .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee), .xmax_i (xmax),
     .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
   // The iCE40 fit's walker (carry-in step, no entry copies): the same rows.
-  g2_walker_cs #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
+  trirast_edge_walker2 #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
     .xmax_i (xmax), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
@@ -84,7 +84,7 @@ module g2_check_tb;
   logic [BB:0] b1, e1, b2, e2;
   trirast_span_generator u_g1 (.state_i (gst), .x_i (gx), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v1), .begin_o (b1), .end_o (e1));
-  g2_span_gen_par u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
+  trirast_span_generator2 u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v2), .begin_o (b2), .end_o (e2));
 
   // ---------------- 2x2 direct test ----------------
@@ -94,7 +94,7 @@ module g2_check_tb;
   logic [2*PB-1:0] t_y, t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   int tiny_spans = 0;
-  g2_box2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
+  trirast_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
     .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
 
   task automatic box_trial();

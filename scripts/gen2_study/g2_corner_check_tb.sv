@@ -1,4 +1,4 @@
-// gen2 study: a random cross-check of the MSB-first corner-value prototypes (g2_corner_msb radix
+// gen2 study: a random cross-check of the MSB-first corner-value prototypes (trirast_corner_serial radix
 // 4 and 16, radix 16 with SignFold, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
 // E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
 // (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
@@ -27,13 +27,13 @@ module g2_corner_check_tb;
   logic busy_m4, busy_m16, busy_m16s, busy_p0, busy_p1, busy_ps;
   logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_p0, el_p1, el_ps;
 
-  g2_corner_msb #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_m4), .el_o (el_m4));
-  g2_corner_msb #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_m16), .el_o (el_m16));
-  g2_corner_msb #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
+  trirast_corner_serial #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
     .start_i (start), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .busy_o (busy_m16s), .el_o (el_m16s));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),

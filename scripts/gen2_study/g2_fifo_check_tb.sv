@@ -1,4 +1,4 @@
-// gen2 study (scripts/gen2_study.sh --check): g2_span_fifo_ram (block-RAM storage, registered read,
+// gen2 study (scripts/gen2_study.sh --check): trirast_span_fifo_ram (block-RAM storage, registered read,
 // bypass) against rtl/trirast_span_fifo.sv (NumEndpoints 1) at depths 2, 4, 8, 16 and 32, on the same
 // random pushes (only when count < depth, as the walk stage admits them) and sink readiness, with
 // phases of mostly pushing, mostly popping and both. Every cycle count_o and valid_o must be equal,
@@ -18,7 +18,7 @@ module g2_fifo_check_tb;
     trirast_span_fifo #(.NumEndpoints (1), .FifoDepth (D), .EntryBits (EB)) u_ref (
       .clk_i (clk), .rst_ni (rst_n), .push_i (push), .data_i (din), .count_o (c1),
       .valid_o (v1), .ready_i (ready), .data_o (d1));
-    g2_span_fifo_ram #(.FifoDepth (D), .EntryBits (EB)) u_ram (
+    trirast_span_fifo_ram #(.FifoDepth (D), .EntryBits (EB)) u_ram (
       .clk_i (clk), .rst_ni (rst_n), .push_i (push), .data_i (din), .count_o (c2),
       .valid_o (v2), .ready_i (ready), .data_o (d2));
     initial begin

@@ -1,4 +1,4 @@
-// gen2 study: the redesigned lane (scripts/gen2_study/g2_lane.sv) against gen1's normalizer + lane
+// gen2 study: the redesigned lane (rtl/trirast_edge_lane2.sv) against gen1's normalizer + lane
 // (rtl/trirast_edge_normalizer.sv, rtl/trirast_edge_lane.sv, boundary mode step) on the same edges
 // (scripts/gen2_study.sh --check; Verilator --binary). Not part of the test suite.
 //
@@ -17,7 +17,7 @@
 // Cycles per edge: from the cycle after the load to the first cycle whose registers hold the
 // results (gen1: !busy_o, gen2: done_o).
 module g2_lane_tb #(
-  parameter int PreIter = 0  // g2_lane's PreIter
+  parameter int PreIter = 0  // trirast_edge_lane2's PreIter
 );
   localparam int CB = trirast_pkg::CoefBits;
   localparam int EB = trirast_pkg::EdgeBits;
@@ -80,7 +80,7 @@ module g2_lane_tb #(
   logic [WB-1:0] g2_je;
   logic [1:0] g2_est;
   logic signed [XB-1:0] g2_ex;
-  g2_lane #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
+  trirast_edge_lane2 #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
     .el_i (el), .er_i (er), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),
     .rs_o (g2_rs), .ssat_o (g2_ssat), .enters_o (g2_enters), .j_entry_o (g2_je),
@@ -141,7 +141,7 @@ module g2_lane_tb #(
       end
     end
     last1 = c1; last2 = c2;
-    // gen2's cycles as g2_lane.sv's header states them (T = the traversal's steps = j at its end;
+    // gen2's cycles as trirast_edge_lane2.sv's header states them (T = the traversal's steps = j at its end;
     // a saturated division takes 2 iterations), and gen1's.
     begin
       int tt, ms, cs, expect2;

@@ -1,18 +1,18 @@
 // gen2 study prototype (scripts/gen2_study.sh, rows g2.unit_ice40*; docs/gen2-design.md section 1,
-// "Fitting the HX8K"): g2_unit in its iCE40 HX form, the MSB-first radix-16 corner unit
+// "Fitting the HX8K"): trirast_improved2_top in its iCE40 HX form, the MSB-first radix-16 corner unit
 // (CornerForm 1, as g2_unit_msb16) with the fit's build choices, each a parameter here so a row can
 // leave one out (chparam): the span FIFO in block RAM, the walkers' carry-in step, the corner
 // unit's signs on the multiplicands, E_L for the lanes from its register, the 2x2 test on E_L's
 // bits above F. The same spans and cycles
 // as g2_unit_msb16. The triangle port has no C: the unit's corner values are vertex-relative and
-// g2_unit ignores tri_c_i (tied to zero here), so the wrapper does not register 150 unused bits.
+// trirast_improved2_top ignores tri_c_i (tied to zero here), so the wrapper does not register 150 unused bits.
 module g2_unit_ice40 #(
   parameter bit FifoRam  = 1'b1,
   parameter bit WalkerCs = 1'b0,
   parameter bit SignFold = 1'b1,
   parameter bit ElReg    = 1'b1,
   parameter bit TestHi   = 1'b1,
-  parameter int LanePreIter = 0   // 1: g2_lane's pre-iteration (fewer LUT4, more cycles)
+  parameter int LanePreIter = 0   // 1: trirast_edge_lane2's pre-iteration (fewer LUT4, more cycles)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -36,7 +36,7 @@ module g2_unit_ice40 #(
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   output logic                                  busy_o
 );
-  g2_unit #(
+  trirast_improved2_top #(
     .CornerForm (1), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .SignFold (SignFold),
     .ElReg (ElReg), .TestHi (TestHi), .LanePreIter (LanePreIter)
   ) u_unit (

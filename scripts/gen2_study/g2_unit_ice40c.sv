@@ -8,7 +8,7 @@ module g2_unit_ice40c #(
   parameter bit SignFold = 1'b1,
   parameter bit ElReg    = 1'b1,
   parameter bit TestHi   = 1'b1,
-  parameter int LanePreIter = 0   // 1: g2_lane's pre-iteration (fewer LUT4, more cycles)
+  parameter int LanePreIter = 0   // 1: trirast_edge_lane2's pre-iteration (fewer LUT4, more cycles)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -33,7 +33,7 @@ module g2_unit_ice40c #(
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   output logic                                  busy_o
 );
-  g2_unit #(
+  trirast_improved2_top #(
     .CornerForm (1), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .SignFold (SignFold),
     .ElReg (ElReg), .TestHi (TestHi), .LanePreIter (LanePreIter), .E2Sum (1'b1)
   ) u_unit (

@@ -1,4 +1,4 @@
-// gen2 study prototype (scripts/gen2_study.sh, row g2.unit_msb16): g2_unit with the MSB-first
+// gen2 study prototype (scripts/gen2_study.sh, row g2.unit_msb16): trirast_improved2_top with the MSB-first
 // radix-16 corner unit (CornerForm 1, the iCE40 HX form), as a top of its own (scripts/synth_wrap.py
 // finds a top by its plain name; a chparam'd top gets a derived one).
 module g2_unit_msb16 (
@@ -25,7 +25,7 @@ module g2_unit_msb16 (
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   output logic                                  busy_o
 );
-  g2_unit #(.CornerForm (1)) u_unit (
+  trirast_improved2_top #(.CornerForm (1)) u_unit (
     .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .tri_valid_i, .tri_ready_o, .tri_tag_i,
     .tri_vx_i, .tri_vy_i, .tri_a_i, .tri_b_i, .tri_c_i, .tri_bias_i, .span_valid_o,
     .span_ready_i, .span_tag_o, .span_y_o, .span_x_begin_o, .span_x_end_o, .box_retire_o,

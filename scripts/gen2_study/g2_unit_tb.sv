@@ -1,4 +1,4 @@
-// gen2 study (scripts/gen2_study.sh --check): the whole-unit prototype g2_unit against the first
+// gen2 study (scripts/gen2_study.sh --check): the whole-unit prototype trirast_improved2_top against the first
 // generation's unit rtl/trirast_top.sv (configured as dv/verilator/cycle_loop.hpp configures it for
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
 // divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
@@ -7,7 +7,7 @@
 // trirast's --sink-stall random:S:P, model/core/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
-// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). +cycles=FILE writes g2_unit's
+// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). +cycles=FILE writes trirast_improved2_top's
 // per-triangle cycles as CSV (index among the file's triangles = the tag, accept, first span,
 // done, spans; the definitions of docs/timing.md: a span's cycle is its pop, an empty box is done
 // in its retire cycle, a job without spans in its last walk cycle), for unit_cycles_check.sh.
@@ -100,7 +100,7 @@ module g2_unit_tb;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
   // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles).
-  g2_unit #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
+  trirast_improved2_top #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
             .WalkerCs (!`G2_FIT), .SignFold (`G2_FIT), .ElReg (`G2_FIT), .TestHi (`G2_FIT),
             .LaneFixedM (`G2_LANE_FIXEDM), .LanePreIter (`G2_LANE_PREITER),
             .E2Sum (`G2_E2SUM)) u_gen2 (
@@ -114,7 +114,7 @@ module g2_unit_tb;
     .span_x_begin_o (sxb2), .span_x_end_o (sxe2),
     .box_retire_o (retire2), .box_retire_tag_o (rtag2), .busy_o (busy2));
 
-  // g2_unit's per-triangle cycles (+cycles=FILE).
+  // trirast_improved2_top's per-triangle cycles (+cycles=FILE).
   longint acc2 [MaxTris], first2 [MaxTris], done2 [MaxTris], wlast2 [MaxTris];
   int nsp2 [MaxTris];
   string cycles_path;

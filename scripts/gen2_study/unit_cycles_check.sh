@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# gen2 study: the SystemC model improved2-sc against the whole-unit prototype g2_unit, cycle for
+# gen2 study: the SystemC model improved2-sc against the whole-unit prototype trirast_improved2_top, cycle for
 # cycle (docs/gen2-design.md, "The C++ datapath and SystemC model").
 #
 #   scripts/gen2_study/unit_cycles_check.sh [WORKDIR]
@@ -9,7 +9,7 @@
 # up to 8, both units' FifoDepth) and each sink (always ready; ready two cycles of three, the
 # testbench's +stall = --sink-stall periodic:2:1; and random:SEED:PERCENT for each SEED:PERCENT of
 # RSINKS, default none, the testbench's +rseed=SEED +rpct=PERCENT): the scene's triangles go through
-# scripts/gen2_study/g2_unit_tb.sv (Verilator; +cycles=FILE writes g2_unit's accept, first-span
+# scripts/gen2_study/g2_unit_tb.sv (Verilator; +cycles=FILE writes trirast_improved2_top's accept, first-span
 # and done cycle per triangle) and through `trirast raster --engine improved2-sc --cycles`, and the
 # two CSVs are compared row by row (the testbench's index is the triangle's position among the
 # non-degenerate ones, which is the model's row order). Prints one line per run and exits 1 on
@@ -44,8 +44,8 @@ for form in $FORMS; do
   rm -rf "$dir"
   verilator --binary -j 1 -Wno-fatal -Wno-lint -Wno-style --timing -I"$R" "$PKG" \
     -DG2_CORNER_FORM="$form" -DG2_FIFO_DEPTH="$depth" "${gen1_srcs[@]}" \
-    "$S/g2_corner_mul.sv" "$S/g2_corner_msb.sv" "$S/g2_box2x2.sv" "$S/g2_lane.sv" \
-    "$S/g2_walker_cs.sv" "$S/g2_span_gen_par.sv" "$S/g2_unit_walk.sv" "$S/g2_unit.sv" \
+    "$R/trirast_corner_products.sv" "$R/trirast_corner_serial.sv" "$R/trirast_direct_test_2x2.sv" "$R/trirast_edge_lane2.sv" \
+    "$R/trirast_edge_walker2.sv" "$R/trirast_span_generator2.sv" "$R/trirast_walk_stage2.sv" "$R/trirast_improved2_top.sv" \
     "$S/g2_unit_tb.sv" --top-module g2_unit_tb -Mdir "$dir" >"$dir.log" 2>&1 ||
     { echo "$ME: Verilator build failed ($dir.log)" >&2; exit 1; }
  done

@@ -2,7 +2,7 @@
 // products written as `*`, one cycle (combinational; the wrapper registers both sides): the
 // form for devices with multipliers (xc7 maps each 25 x 26 product onto DSP48E1 slices).
 //   E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias   per edge (no C: E vanishes at the edge's vertex).
-module g2_corner_mul (
+module trirast_corner_products (
   input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]   a_i,

@@ -1,5 +1,5 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): g2_walk_slice.sv (the retimed walk
-// stage, N = 1, with the span FIFO) extended for the whole-unit prototype g2_unit.sv with a tiny
+// stage, N = 1, with the span FIFO) extended for the whole-unit prototype trirast_improved2_top.sv with a tiny
 // job: a triangle whose box has at most 2 x 2 pixel centres comes with its rows' spans already
 // decided by the direct 2x2 test (hand_tiny_i, per row j a valid bit and begin / end relative to
 // x0: 0 or 1, 1 or 2). A tiny job takes the walk stage like any other (so spans leave in
@@ -7,12 +7,13 @@
 // it ends after row 0 when row 1 is empty or outside the box (a job without spans takes one cycle).
 // The walkers load stale hand-off values for a tiny job; their outputs are not read.
 // Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
-// FifoRam 1 keeps the span FIFO in block RAM (g2_span_fifo_ram.sv) instead of flip-flops;
-// WalkerCs 0 gives the walkers g2_walker_cs's carry-in step (one X' and one bound adder each).
-module g2_unit_walk #(
+// FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops;
+// WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder each).
+module trirast_walk_stage2 #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
   parameter bit FifoRam   = 1'b0,
-  parameter bit WalkerCs  = 1'b1
+  parameter bit WalkerCs  = 1'b1,
+  parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -38,10 +39,18 @@ module g2_unit_walk #(
   input  logic [1:0]                            hand_tiny_valid_i,  // row j has a span
   input  logic [1:0]                            hand_tiny_begin_i,  // row j: x_begin - x0 (0, 1)
   input  logic [1:0]                            hand_tiny_end1_i,   // row j: x_end - x0 - 1 (0, 1)
+  input  logic [CountBits-1:0]                  cfg_fifo_depth_i,   // room: entries + push < this
   input  logic                                  span_ready_i,
   output logic                                  span_valid_o,
   output logic [trirast_pkg::TagBits+3*trirast_pkg::PixBits:0] span_o,
-  output logic                                  busy_o
+  output logic                                  busy_o,
+  // ---- observation ----
+  output logic                                  walk_o,     // a job walks
+  output logic                                  stall_o,    // ... and its row waits for room
+  output logic                                  last_o,     // its last row goes
+  output logic                                  retire_o,   // ... and the job had no span
+  output logic [trirast_pkg::TagBits-1:0]       tag_o,
+  output logic [CountBits-1:0]                  fifo_count_o
 );
   localparam int SB = trirast_pkg::StepBits;
   localparam int QB = trirast_pkg::QuotBits;
@@ -52,7 +61,6 @@ module g2_unit_walk #(
   localparam int PB = trirast_pkg::PixBits;
   localparam int TB = trirast_pkg::TagBits;
   localparam int EntryBits = TB + 3 * PB + 1;
-  localparam int CountBits = $clog2(FifoDepth + 1);
 
   logic walk_q, walk_d, load, go, last;
   logic [TB-1:0] tag_q;
@@ -69,7 +77,7 @@ module g2_unit_walk #(
   assign load = !walk_q && hand_valid_i;
 
   for (genvar k = 0; k < 3; k++) begin : g_walker
-    g2_walker_cs #(.CarrySelect (WalkerCs)) u_walker (
+    trirast_edge_walker2 #(.CarrySelect (WalkerCs)) u_walker (
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       .load_i        (load),
@@ -94,7 +102,7 @@ module g2_unit_walk #(
 
   logic gvalid;
   logic [BB:0] gbegin, gend;
-  g2_span_gen_par u_gen (
+  trirast_span_generator2 u_gen (
     .state_i  (st),
     .bound_i  (bnd),
     .mirror_i (mirror),
@@ -111,7 +119,8 @@ module g2_unit_walk #(
   assign tv  = row_q[0] ? tvalid_q[1] : tvalid_q[0];
   assign tb  = row_q[0] ? tbegin_q[1] : tbegin_q[0];
   assign te1 = row_q[0] ? tend1_q[1] : tend1_q[0];
-  assign go   = walk_q && (32'(count) + 32'(push_q) + 1 <= FifoDepth);
+  assign go   = walk_q && ((CountBits + 1)'(count) + (CountBits + 1)'(push_q) <
+                           (CountBits + 1)'(cfg_fifo_depth_i));
   assign last = go && ((row_q == WB'(ymax_q)) || (tiny_q && !tvalid_q[1]));
   assign push_d = go && (tiny_q ? tv : gvalid);
   assign data_d = tiny_q ?
@@ -156,7 +165,7 @@ module g2_unit_walk #(
   end
 
   if (FifoRam) begin : g_fifo_ram
-    g2_span_fifo_ram #(
+    trirast_span_fifo_ram #(
       .FifoDepth (FifoDepth),
       .EntryBits (EntryBits)
     ) u_fifo (
@@ -185,6 +194,19 @@ module g2_unit_walk #(
       .data_o  (span_o)
     );
   end
+
+  // A job's first span (any_q: one went in an earlier row).
+  logic any_q;
+  always_ff @(posedge clk_i) begin
+    if (load) any_q <= 1'b0;
+    else if (push_d) any_q <= 1'b1;
+  end
+  assign walk_o       = walk_q;
+  assign stall_o      = walk_q && !go;
+  assign last_o       = last;
+  assign retire_o     = last && !any_q && !push_d;
+  assign tag_o        = tag_q;
+  assign fifo_count_o = count;
 
   assign hand_ready_o = !walk_q;
   assign busy_o = walk_q || push_q;   // a job walks, or its last span is in the push register

@@ -18,7 +18,7 @@
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
 // the bound from the running registers, which hold the values loaded with the job until then (no
 // copies ex, ee, bex).
-module g2_walker_cs #(
+module trirast_edge_walker2 #(
   parameter bit CarrySelect = 1'b1
 ) (
   input  logic                                 clk_i,
@@ -41,7 +41,6 @@ module g2_walker_cs #(
   output logic [1:0]                           row_state_o,
   output logic [trirast_pkg::BoxBits:0]        row_bound_o   // the restored bound (when bound)
 );
-  localparam int QB = trirast_pkg::QuotBits;
   localparam int RB = trirast_pkg::RemBits;
   localparam int WB = trirast_pkg::RowBits;
   localparam int XB = trirast_pkg::WalkerXBits;

@@ -1,53 +1,60 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh, docs/gen2-design.md section 1,
-// "Whole-unit prototype"): the first whole second-generation improved unit, built from the
-// study's prototypes. N = 1, boundary mode step, adaptive divider (build choices, not cfg ports).
-// Triangle port and span port as rtl/trirast_top.sv's (tri_c_i is ignored: the corner values are
-// vertex-relative, E = A*(cx - vx) + B*(cy - vy), docs/gen2-design.md section 2).
+// The improved unit, second generation (engine "improved2-rtl"; docs/gen2-design.md, section 8
+// for the cycle contract its SystemC model improved2-sc follows, and docs/rtl.md): the paper's
+// adder-based divider, boundary traversal, Bresenham stepping with remainder accumulation and span
+// generation, rebuilt as a pipeline of four stages so the next triangle's box and corner values are
+// formed while the lanes and the walk stage work. N = 1, boundary mode step, adaptive divider
+// (build choices here: no cfg ports for them). Triangle port and span port as rtl/trirast_top.sv's;
+// the corner values are vertex-relative, E = A*(cx - vx) + B*(cy - vy) (tri_c_i is read only with
+// E2Sum).
 //
-//   [B] triangle register (tag, vertices, A, B, bias); box, empty test (combinational, one cycle,
-//       as g2_box_stage.sv with Split = 0); an empty box retires here (box_retire_o)
+//   [B] triangle register (tag, vertices, A, B, bias); box and empty test in one cycle; an empty
+//       box retires here (box_retire_o)
 //   [C] corner-stage register (tag, box, vertices, A, B, bias); corner values E_L per edge:
-//       CornerForm 0: g2_corner_mul (DSP products, combinational: no extra cycle);
-//       CornerForm 1: g2_corner_msb (MSB-first digit-serial, DigitBits 4), started as the
-//       triangle enters C: C holds it ceil(bits / 4) + 1 cycles for E_L (bits as the prototype's
-//       header says); a box for the lanes then runs again, 1 + ceil(bits' / 4) more cycles, for
-//       E_R (the same unit started at x1 = x0 + Xmax; E_L waits in a register meanwhile).
-//       E_R = E_L + (A * Xmax) << F (CornerForm 0: one 25 x 14 product per edge, a DSP on xc7).
-//       The 2x2 direct test (g2_box2x2, 50-bit) reads E_L, a = A << F, b = B << F.
+//       CornerForm 0: trirast_corner_products (multipliers, DSPs on xc7; no extra cycle);
+//       CornerForm 1: trirast_corner_serial (MSB-first radix 16), started as the triangle enters
+//       C: C holds it ceil(bits / 4) + 1 cycles for E_L; a box for the lanes then runs again,
+//       1 + ceil(bits' / 4) more cycles, for E_R (the same unit at x1 = x0 + Xmax; E_L waits in a
+//       register meanwhile). CornerForm 0 forms E_R = E_L + (A * Xmax) << F directly.
+//       The direct 2x2 test (trirast_direct_test_2x2) reads E_L and the steps A, B.
 //   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
-//       pixel centres loads the three redesigned lanes (g2_lane.sv, as g2_lanes.sv: step, adaptive) in
-//       the same cycle; the job is handed off when the lanes are done (tiny: at once).
-//   [W] the retimed walk stage with the registered push and the span FIFO (g2_unit_walk.sv: the
-//       walk slice plus the tiny job's rows), span FIFO -> span port.
+//       pixel centres loads the three edge lanes (trirast_edge_lane2: normalizer, adder-based
+//       divider, boundary traversal) in the same cycle; the job is handed off when the lanes are
+//       done (a tiny box: at once).
+//   [W] the walk stage (trirast_walk_stage2: three edge walkers, the span generator, a registered
+//       push with its credit against cfg_fifo_depth_i), span FIFO -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
-// Build choices for the iCE40 HX8K fit (docs/gen2-design.md, "Fitting the HX8K"), all with the
-// same spans and cycles as the defaults: FifoRam 1, the span FIFO in block RAM
-// (g2_span_fifo_ram.sv); WalkerCs 0, the walkers' carry-in step (g2_walker_cs CarrySelect 0);
-// SignFold 1, g2_corner_msb's signs on the multiplicands; ElReg 1 (CornerForm 1 only), the lanes
-// load E_L from its register and the 2x2 test reads the accumulator (no 150-bit select); TestHi 1,
-// the 2x2 test on E_L >> F and A, B (its steps are A << F, B << F: the signs are the same, with
-// chains F bits shorter).
-module g2_unit #(
+// Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
+// FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram); WalkerCs 0, the walkers'
+// carry-in step; SignFold 1, the serial corner unit's signs on the multiplicands; ElReg 1
+// (CornerForm 1 only), the lanes load E_L from its register and the 2x2 test reads the
+// accumulator; TestHi 1, the 2x2 test on E_L >> F and A, B; E2Sum (CornerForm 1 only), edge 2's E
+// from the sum of the port's C values (two corner accumulators). The defaults are the iCE40 form;
+// scripts/synth.sh builds the xc7 form with CornerForm 0.
+`include "trirast_assert.svh"
+
+module trirast_improved2_top #(
   parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
-  parameter int CornerForm = 0,  // 0: DSP products (xc7); 1: MSB-first radix 16 (iCE40 HX)
-  parameter bit FifoRam    = 1'b0,
-  parameter bit WalkerCs   = 1'b1,
-  parameter bit SignFold   = 1'b0,
-  parameter bit ElReg      = 1'b0,
-  parameter bit TestHi     = 1'b0,
-  // g2_lane's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
+  parameter int CornerForm = 1,  // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
+  parameter bit FifoRam    = 1'b1,
+  parameter bit WalkerCs   = 1'b0,
+  parameter bit SignFold   = 1'b1,
+  parameter bit ElReg      = 1'b1,
+  parameter bit TestHi     = 1'b1,
+  // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
   // the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
   parameter int LanePreIter = 0,
   // 1 (CornerForm 1 only): E_2 = (C_0 + C_1 + C_2 - the biases) - E_0 - E_1, the corner unit
   // without edge 2's accumulator; reads tri_c_i (the sum of the edges' E is the same at every
   // point: the A and B of the three edges sum to 0). The same values and cycles.
-  parameter bit E2Sum = 1'b0
+  parameter bit E2Sum = 1'b0,
+  parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
   input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
   input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
+  input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   input  logic                                  tri_valid_i,
   output logic                                  tri_ready_o,
   input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
@@ -65,7 +72,28 @@ module g2_unit #(
   output logic [trirast_pkg::PixBits:0]         span_x_end_o,
   output logic                                  box_retire_o,      // an empty box retires (B)
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
-  output logic                                  busy_o             // a triangle is in the unit
+  output logic                                  busy_o,            // a triangle is in the unit
+  // ---- observation (the harness's per-triangle cycles and module counters; traces) ----
+  output logic                                  box_valid_o,       // B holds a triangle
+  output logic                                  box_stall_o,       // ... waiting for C
+  output logic [trirast_pkg::TagBits-1:0]       box_tag_o,
+  output logic                                  corner_valid_o,    // C holds a triangle
+  output logic                                  corner_stall_o,    // ... done, waiting for L
+  output logic                                  job_valid_o,       // L holds a job
+  output logic                                  job_ready_o,       // ... ready to hand off
+  output logic [trirast_pkg::TagBits-1:0]       job_tag_o,
+  output logic                                  handoff_o,         // the walk stage loads L's job
+  output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,        // L's box: Xmax, Ymax
+  output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o,
+  output logic [2:0]                            lane_busy_o,       // lane k works this cycle
+  output logic [2:0]                            lane_div_o,        // ... a divider iteration
+  output logic [2:0]                            lane_step_o,       // ... a traversal row step
+  output logic                                  walk_busy_o,       // the walk stage holds a job
+  output logic                                  walk_stall_o,      // ... no room for its row
+  output logic                                  walk_last_o,       // its last row goes
+  output logic                                  walk_retire_o,     // ... and it had no span
+  output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
+  output logic [CountBits-1:0]                  fifo_count_o       // occupancy at cycle start
 );
   localparam int F  = trirast_pkg::FracBits;
   localparam int P  = trirast_pkg::VertexBits;
@@ -181,7 +209,7 @@ module g2_unit #(
 
   if (CornerForm == 0) begin : g_mul
     // E_L from the products in one (combinational) step; E_R = E_L + (A * Xmax) << F.
-    g2_corner_mul u_corner (
+    trirast_corner_products u_corner (
       .vx_i (c_vx_q), .vy_i (c_vy_q), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
       .x0_i (c_x0_q), .y0_i (c_y0_q), .el_o (el));
     for (genvar k = 0; k < 3; k++) begin : g_er
@@ -209,7 +237,7 @@ module g2_unit #(
     assign s_vy  = start2_q ? c_vy_q : b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
     assign s_y0  = start2_q ? c_y0_q : PB'(fy);
-    g2_corner_msb #(.DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)) u_corner (
+    trirast_corner_serial #(.DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
       .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
@@ -273,9 +301,9 @@ module g2_unit #(
   logic [2*PB-1:0] t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   /* verilator lint_off PINCONNECTEMPTY */
-  g2_box2x2 #(.W (TW)) u_box2x2 (
+  trirast_direct_test_2x2 #(.W (TW)) u_box2x2 (
     .el_i (t_el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
-    .x0_i ('0), .y0_i ('0), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
+    .x0_i (PB'(0)), .y0_i (PB'(0)), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
   /* verilator lint_on PINCONNECTEMPTY */
 
   // ---------------------------------------------------------------- L: job register, lanes
@@ -335,12 +363,13 @@ module g2_unit #(
   end
   for (genvar k = 0; k < 3; k++) begin : g_edge
     /* verilator lint_off PINCONNECTEMPTY */
-    g2_lane #(.FixedM (LaneFixedM), .PreIter (LanePreIter)) u_lane (
+    trirast_edge_lane2 #(.FixedM (LaneFixedM), .PreIter (LanePreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
       .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
       .el_i (el_lane[k*EB +: EB]), .er_i (er[k*EB +: EB]),
       .xmax_i (l_xmax_q), .ymax_i (l_ymax_q),
-      .busy_o (), .done_o (lane_done[k]),
+      .busy_o (lane_busy_o[k]), .done_o (lane_done[k]),
+      .div_o (lane_div_o[k]), .step_o (lane_step_o[k]),
       .horiz_o (), .mirror_o (hand_mirror[k]), .dir_down_o (hand_dir_down[k]),
       .d_o (hand_d[k*SB +: SB]), .qs_o (hand_qs[k*QB +: QB]), .rs_o (hand_rs[k*RB +: RB]),
       .ssat_o (hand_ssat[k]), .enters_o (hand_enters[k]), .j_entry_o (hand_j_entry[k*WB +: WB]),
@@ -354,7 +383,7 @@ module g2_unit #(
   // ---------------------------------------------------------------- W: walk stage, FIFO
   logic walk_busy;
   logic [TB+3*PB:0] span;
-  g2_unit_walk #(.FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_walk (
+  trirast_walk_stage2 #(.FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_walk (
     .clk_i (clk_i), .rst_ni (rst_ni),
     .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
     .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),
@@ -366,11 +395,37 @@ module g2_unit #(
     .hand_entry_e_i (hand_entry_e),
     .hand_tiny_i (l_tiny_q), .hand_tiny_valid_i (l_tvalid_q),
     .hand_tiny_begin_i (l_tbegin_q), .hand_tiny_end1_i (l_tend1_q),
+    .cfg_fifo_depth_i (cfg_fifo_depth_i),
     .span_ready_i (span_ready_i), .span_valid_o (span_valid_o), .span_o (span),
-    .busy_o (walk_busy));
+    .busy_o (walk_busy), .walk_o (walk_busy_o), .stall_o (walk_stall_o), .last_o (walk_last_o),
+    .retire_o (walk_retire_o), .tag_o (walk_tag_o), .fifo_count_o (fifo_count_o));
 
   assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = span;
   assign busy_o = b_full_q || c_full_q || l_full_q || walk_busy || span_valid_o;
+
+  // Observation outputs.
+  assign box_valid_o    = b_full_q;
+  assign box_stall_o    = b_full_q && !b_retire && !b_take;
+  assign box_tag_o      = b_tag_q;
+  assign corner_valid_o = c_full_q;
+  assign corner_stall_o = c_full_q && c_ready && !l_free;
+  assign job_valid_o    = l_full_q;
+  assign job_ready_o    = hand_valid;
+  assign job_tag_o      = l_tag_q;
+  assign handoff_o      = hand_valid && hand_ready;
+  assign box_xmax_o     = l_xmax_q;
+  assign box_ymax_o     = l_ymax_q;
+
+  // Protocol assumptions and invariants.
+  `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i >= CountBits'(1) &&
+          32'(cfg_fifo_depth_i) <= FifoDepth, clk_i, !rst_ni)
+  `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
+                 {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i, !rst_ni)
+  `ASSERT(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o) |-> tri_valid_i, clk_i, !rst_ni)
+  // A job is handed off only when every lane it loaded is done; a tiny job loads none.
+  `ASSERT(HandoffLanesDone_A, handoff_o && !l_tiny_q |-> &lane_done, clk_i, !rst_ni)
+  `ASSERT(LaneLoadIdle_A, lane_load |-> &lane_done, clk_i, !rst_ni)
+  `ASSERT_KNOWN(HandshakesKnown_A, {tri_ready_o, box_retire_o, handoff_o, busy_o}, clk_i, !rst_ni)
 
   logic unused;
   assign unused = ^{tri_c_i, b_s_q, c_s_q};   // used when E2Sum

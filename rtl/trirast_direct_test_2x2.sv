@@ -4,7 +4,7 @@
 // E_L + a + b >= 0, a centre covered when all three edges pass, and per box row the span (a row of
 // two centres is one run: a convex triangle) with x0, y0 added. Width W: 50 (EdgeBits, any
 // triangle) or narrow (the corner values of g2_corner_narrow's narrow path).
-module g2_box2x2 #(
+module trirast_direct_test_2x2 #(
   parameter int W = trirast_pkg::EdgeBits
 ) (
   input  logic [3*W-1:0]                  el_i,

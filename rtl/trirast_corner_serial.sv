@@ -11,9 +11,9 @@
 // the held sign) instead of to the 50-bit partial product, and the bias enters the last digit's
 // B' * digit sum, so a digit costs two 26-bit negations and one 50-bit three-operand sum instead
 // of two 50-bit negations, their selects and a four-operand sum.
-// AccEdges 2 (g2_unit's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the caller forms
+// AccEdges 2 (trirast_improved2_top's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the caller forms
 // it from the other two), but its magnitudes still set the digit count (the same cycles).
-module g2_corner_msb #(
+module trirast_corner_serial #(
   parameter int DigitBits = 4,
   parameter bit SignFold  = 1'b0,
   parameter int AccEdges  = 3
@@ -62,21 +62,21 @@ module g2_corner_msb #(
   logic [ND*DB-1:0] mag_k [3][2];
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [DW-1:0] dxl, dy;
-    logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
-    logic sx_q, sx_d, sy_q, sy_d;
-    logic signed [CB-1:0] ak, bk;
-    logic signed [EB-1:0] acc_q, acc_d, tx, ty;
-    logic [DB-1:0] dgx, dgy;
     assign dxl = cx0 - DW'($signed(vx_i[k*P +: P]));
     assign dy  = cy0 - DW'($signed(vy_i[k*P +: P]));
-    assign ak  = $signed(a_i[k*CB +: CB]);
-    assign bk  = $signed(b_i[k*CB +: CB]);
     logic [MW-1:0] amx, amy;
     assign amx = dxl[DW-1] ? MW'(-dxl) : MW'(dxl);
     assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
     assign mag_k[k][0] = (ND * DB)'(amx);
     assign mag_k[k][1] = (ND * DB)'(amy);
     if (k < AccEdges) begin : g_acc
+      logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
+      logic sx_q, sx_d, sy_q, sy_d;
+      logic signed [CB-1:0] ak, bk;
+      logic signed [EB-1:0] acc_q, acc_d, tx, ty;
+      logic [DB-1:0] dgx, dgy;
+      assign ak  = $signed(a_i[k*CB +: CB]);
+      assign bk  = $signed(b_i[k*CB +: CB]);
       // The current digit of each operand: a ND-way select by the counter.
       always_comb begin
         dgx = '0;
@@ -136,6 +136,8 @@ module g2_corner_msb #(
       assign el_o[k*EB +: EB] = acc_q;
     end else begin : g_noacc
       assign el_o[k*EB +: EB] = '0;
+      logic unused;   // the edge's coefficients and bias (its E is formed outside)
+      assign unused = ^{a_i[k*CB +: CB], b_i[k*CB +: CB], bias_i[k]};
     end
   end
 

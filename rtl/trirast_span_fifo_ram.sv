@@ -6,7 +6,7 @@
 // The read register is loaded every cycle from the next cycle's head (rptr + pop); when the push of
 // the same cycle writes that address (an empty FIFO, or one entry being popped), the memory's read
 // returns the old word, so the pushed span is also kept in a bypass register and shown instead.
-module g2_span_fifo_ram #(
+module trirast_span_fifo_ram #(
   parameter int FifoDepth = 8,     // entries (a power of two)
   parameter int EntryBits = 8,     // bits of one span
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override

@@ -1,10 +1,10 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): the span generator of one row with
-// parallel compares. Takes the three walkers' restored bounds (g2_walker_cs keeps them in
+// parallel compares. Takes the three walkers' restored bounds (trirast_edge_walker2 keeps them in
 // registers), computes the six ordered compares b_i < b_j at once and derives from them, in one
 // level of selection each: begin = max(0, mirrored bounds), end = min(Xmax + 1, other bounds),
 // and valid = no edge out and every mirrored bound < every other bound (= begin < end, since a
 // bound edge's bound lies in [0, Xmax + 1]).
-module g2_span_gen_par (
+module trirast_span_generator2 (
   input  logic [5:0]                          state_i,
   input  logic [3*(trirast_pkg::BoxBits+1)-1:0] bound_i,
   input  logic [2:0]                          mirror_i,

@@ -30,7 +30,7 @@
 // load to the first cycle with done_o): a horizontal edge T + 1; otherwise
 // max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
 // (a saturated division stops after 2 of its m + P iterations). gen1: T, T + 2m, T + m.
-module g2_lane #(
+module trirast_edge_lane2 #(
   parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
   // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
   // trial subtractor (the saturation test) and, for a dir - entry, continues from D - 1 - R_0
@@ -54,6 +54,8 @@ module g2_lane #(
   // ---- progress ----
   output logic                                    busy_o,
   output logic                                    done_o,   // results valid (registered state)
+  output logic                                    div_o,    // observation: a divider iteration
+  output logic                                    step_o,   // ... a traversal row step
   // ---- results (as rtl/trirast_edge_lane.sv) ----
   output logic                                    horiz_o,
   output logic                                    mirror_o,
@@ -73,7 +75,6 @@ module g2_lane #(
   localparam int EB = trirast_pkg::EdgeBits;
   localparam int SB = trirast_pkg::StepBits;
   localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
   localparam int WB = trirast_pkg::RowBits;
   localparam int XB = trirast_pkg::WalkerXBits;
   localparam int BB = trirast_pkg::BoxBits;
@@ -156,7 +157,7 @@ module g2_lane #(
   // R's bit F - 1 in the iteration that makes quotient bit c is the numerator's bit c + F:
   // s's (bit c of |B|) or the column value's, which stays put while the entry division runs (the
   // traversal is over).
-  assign nbit    = (op_q == OpSlope) ? sh_q[cnt_q] : u_q[cnt_q];
+  assign nbit    = (op_q == OpSlope) ? sh_q[$clog2(MB)'(cnt_q)] : u_q[$clog2(EB - F)'(cnt_q)];
   assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
   assign fits    = !trial[MB+1];
   if (Pre) begin : g_pre
@@ -276,6 +277,8 @@ module g2_lane #(
 
   assign busy_o     = op_q != OpDone;
   assign done_o     = op_q == OpDone;
+  assign div_o      = op_q == OpSlope || op_q == OpEntry;
+  assign step_o     = busy_o && !trav_done;
   assign horiz_o    = horiz_q;
   assign mirror_o   = mirror_q;
   assign dir_down_o = dir_q;
@@ -297,5 +300,10 @@ module g2_lane #(
     assign entry_e_o = {dir_q ? rh_q : ~r_minus_d[MB-1:0],
                         elo_q};
   end
+
+  // Bits no result reads: |A|, |B|'s top bit (they are < 2^p), the column value's F low bits
+  // (E's, kept in elo_q), the complement flag without the pre-iteration.
+  logic unused;
+  assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl};
 
 endmodule

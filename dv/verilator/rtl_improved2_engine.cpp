@@ -1,0 +1,82 @@
+// The engine "improved2-rtl": picks the Verilated build of trirast_improved2_top of the run's
+// corner form with the smallest FIFO that covers its --fifo-depth (rtl_builds.hpp) and runs it
+// (improved2_harness.hpp: the ports; cycle_loop.hpp: the cycles).
+#include "rtl_improved2_engine.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/sink_pattern.hpp"
+#include "rtl_builds.hpp"
+#include "sim_clock.hpp"
+
+namespace trirast {
+namespace rtl {
+
+namespace {
+
+const char* form_name(int form) { return form == 0 ? "products (dsp)" : "radix16"; }
+
+const RtlBuild& pick_build(const RasterConfig& cfg) {
+  const std::vector<RtlBuild>& builds = improved2_builds();
+  auto fail = [&](const std::string& opt, const std::string& got,
+                  const std::string& how) -> const RtlBuild& {
+    throw std::invalid_argument(opt + ": " + got +
+                                " is not covered by the improved2-rtl engine's Verilated models (" +
+                                how + "; built: " + describe_builds(builds, true) +
+                                "; add one in cmake/trirast_rtl_builds.cmake)");
+  };
+  if (cfg.endpoints != 1)
+    return fail("--endpoints", std::to_string(cfg.endpoints), "the unit walks one row per cycle, N = 1");
+  const RtlBuild* widths = nullptr;
+  for (const RtlBuild& b : builds) {
+    if (b.subpixel_bits != cfg.subpixel_bits || b.coord_int_bits != cfg.coord_int_bits ||
+        b.box_bits != cfg.box_bits)
+      continue;
+    widths = &b;
+    if (b.corner_form == cfg.g2_corner_form && cfg.fifo_depth >= 1 &&
+        cfg.fifo_depth <= b.fifo_depth)
+      return b;
+  }
+  if (!widths)
+    return fail("--subpixel-bits/--coord-bits/--box-bits",
+                std::to_string(cfg.subpixel_bits) + ":" + std::to_string(cfg.coord_int_bits) +
+                    ":" + std::to_string(cfg.box_bits),
+                "the default widths only");
+  for (const RtlBuild& b : builds)
+    if (b.corner_form == cfg.g2_corner_form)
+      return fail("--fifo-depth", std::to_string(cfg.fifo_depth),
+                  "from 1 up to " + std::to_string(b.fifo_depth));
+  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form");
+}
+
+}  // namespace
+
+void run_rtl_improved2(const SetupResult& setup, const RasterConfig& cfg,
+                       const RtlRunOptions& opt, EngineResult& out) {
+  cfg.validate();
+  const RtlBuild& build = pick_build(cfg);
+  (void)SinkPattern::parse(cfg.sink_stall);  // a bad pattern fails before anything runs
+  build.run(setup, cfg, opt.x_seed, out);
+  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+}
+
+}  // namespace rtl
+
+namespace {
+
+class RtlImproved2Engine : public Engine {
+ public:
+  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
+    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_improved2(setup, cfg, {seed}, out); });
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Engine> make_rtl_improved2_engine() {
+  return std::make_unique<RtlImproved2Engine>();
+}
+
+}  // namespace trirast
