@@ -37,7 +37,7 @@ module g2_unit_ice40c #(
     .CornerForm (1), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .SignFold (SignFold),
     .ElReg (ElReg), .TestHi (TestHi), .LanePreIter (LanePreIter), .E2Sum (1'b1)
   ) u_unit (
-    .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .tri_valid_i, .tri_ready_o, .tri_tag_i,
+    .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .cfg_fifo_depth_i (4'd8), .tri_valid_i, .tri_ready_o, .tri_tag_i,
     .tri_vx_i, .tri_vy_i, .tri_a_i, .tri_b_i, .tri_c_i, .tri_bias_i, .span_valid_o,
     .span_ready_i, .span_tag_o, .span_y_o, .span_x_begin_o, .span_x_end_o, .box_retire_o,
     .box_retire_tag_o, .busy_o);

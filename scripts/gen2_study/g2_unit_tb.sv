@@ -106,6 +106,7 @@ module g2_unit_tb;
             .E2Sum (`G2_E2SUM)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
+    .cfg_fifo_depth_i ($clog2(`G2_FIFO_DEPTH + 1)'(`G2_FIFO_DEPTH)),
     .tri_valid_i (v2), .tri_ready_o (r2), .tri_tag_i (TB'(i2)),
     .tri_vx_i (t2[0 +: 3*P]), .tri_vy_i (t2[3*P +: 3*P]),
     .tri_a_i (t2[6*P +: 3*CB]), .tri_b_i (t2[6*P+3*CB +: 3*CB]),
