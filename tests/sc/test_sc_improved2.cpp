@@ -3,8 +3,8 @@
 // sink; an empty box retires in the box stage; N > 1 is refused; its trace (--trace) is a VCD
 // whose signals agree with the cycles, with the .gtkw grouped by module, and tracing changes no
 // cycle. Its cycles against
-// the whole-unit prototype's RTL (rtl/trirast_improved2_top.sv) are the ctest
-// sc_improved2_vs_rtl_prototype (tests/sc/CMakeLists.txt).
+// the unit's RTL (rtl/trirast_improved2.f, engine improved2-rtl) are
+// tests/rtl/test_rtl_improved2_engine.cpp's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
