@@ -40,11 +40,12 @@ function(trirast_rtl_build_specs out_var endpoints depth)
   foreach(_c small wide tiny)
     list(APPEND _builds
       "improved:trirast_top:TRIRAST_RTL_SOURCES:_${_c}:${_c}:${endpoints}:${depth}"
-      "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_${_c}:${_c}:1:${depth}")
+      "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_${_c}:${_c}:1:${depth}"
+      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_${_c}:${_c}:1:${depth}:1")
   endforeach()
-  # The second-generation unit (engine improved2-rtl; N = 1, default widths): both corner forms
-  # (the entry's 8th field, CornerForm: 1 radix 16, 0 products), at the synthesized depth and at
-  # DEPTH.
+  # The second-generation unit (engine improved2-rtl; N = 1): at the default widths both corner
+  # forms (the entry's 8th field, CornerForm: 1 radix 16, 0 products), at the synthesized depth
+  # and at DEPTH; at the other widths (above) its default form, radix 16, at DEPTH.
   list(APPEND _builds
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES::default:1:${depth}:1"

@@ -3,6 +3,7 @@
 // (improved2_harness.hpp: the ports; cycle_loop.hpp: the cycles).
 #include "rtl_improved2_engine.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -43,12 +44,15 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     return fail("--subpixel-bits/--coord-bits/--box-bits",
                 std::to_string(cfg.subpixel_bits) + ":" + std::to_string(cfg.coord_int_bits) +
                     ":" + std::to_string(cfg.box_bits),
-                "the default widths only");
+                "no build of these widths");
+  int depth = 0;  // the deepest build of these widths and this form
   for (const RtlBuild& b : builds)
-    if (b.corner_form == cfg.g2_corner_form)
-      return fail("--fifo-depth", std::to_string(cfg.fifo_depth),
-                  "from 1 up to " + std::to_string(b.fifo_depth));
-  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form");
+    if (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
+        b.box_bits == cfg.box_bits && b.corner_form == cfg.g2_corner_form)
+      depth = std::max(depth, b.fifo_depth);
+  if (depth > 0)
+    return fail("--fifo-depth", std::to_string(cfg.fifo_depth), "from 1 up to " + std::to_string(depth));
+  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form at these widths");
 }
 
 }  // namespace
