@@ -509,9 +509,9 @@ OUT="$ROOT/docs/synth.md"
   done
   echo
   echo "Units: \`trirast_top\` (improved)$([[ " $UNITS " == *" trad "* ]] && echo ", \`trirast_trad_top\` (traditional, \`trad\`)")$([ -n "$HS_UNITS" ] && echo " and \`trirast_hs_top\` (half-space, \`halfspace-sS\` at stamp size S, TileSize $HS_TILE, WalkZigzag $HS_ZIGZAG; default configuration only)"), NumEndpoints = 1,"
-  [ -n "$I2_UNITS" ] && echo "The second-generation improved unit \`trirast_improved2_top\` (N = 1, boundary mode step and the adaptive divider built in) at the default configuration only: \`improved2\`, its iCE40 form (the defaults: radix-16 digit-serial corner unit, span FIFO in block RAM), and \`improved2-products\`, its xc7 form (CornerForm 0: corner values from multipliers, DSPs; FifoRam 0). Both forms have the same spans; their cycles differ by the corner stage (docs/cycles-improved-vs-trad.md)."
   echo "FifoDepth = 8. The runtime configuration inputs (viewport, boundary and divider mode,"
   echo "endpoints, FIFO depth) are free ports, so every mode is in the counts (docs/rtl.md)."
+  [ -n "$I2_UNITS" ] && echo "The second-generation improved unit \`trirast_improved2_top\` (NumEndpoints = 1, boundary mode step and the adaptive divider built in) at the default configuration only: \`improved2\`, its iCE40 form (the defaults: radix-16 digit-serial corner unit, span FIFO in block RAM), and \`improved2-products\`, its xc7 form (CornerForm 0: corner values from multipliers, DSPs; FifoRam 0). Both forms have the same spans; their cycles differ by the corner stage (docs/cycles-improved-vs-trad.md)."
   [[ " $UNITS " == *" trad "* ]] || echo "The traditional unit's RTL (rtl/trirast_trad_top.sv) was not in the tree: improved only."
   echo
   echo "## Area"
