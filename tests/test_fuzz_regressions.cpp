@@ -261,9 +261,11 @@ TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
   EXPECT_GT(triangles, 60000u);
   EXPECT_GT(pixels, 1000000u);
   // Only the engines built for fixed widths skip (the half-space one never for its stamp, tile
-  // or walk: they are drawn among its builds); they still run a good share of the scenes.
+  // or walk: they are drawn among its builds; improved2-rtl has the default widths only, and
+  // every N and depth); they still run a good share of the scenes.
   for (const auto& [engine, n] : skipped) {
-    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl") << engine;
+    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl" || engine == "improved2-rtl")
+        << engine;
     EXPECT_LT(n, 3000 * 7 / 10) << engine;
   }
   EXPECT_GT(hs_scenes, 600u);
