@@ -59,6 +59,19 @@ module trirast_corner_serial #(
     pp = sum;
   endfunction
 
+  // init + m * digit (SignFold: the multiplicand carries the sign; a function, so that no
+  // always_comb block reads the variable it accumulates: Icarus re-runs such a block forever).
+  function automatic logic signed [PW:0] pp_sum(input logic signed [PW:0] m,
+                                                input logic [DB-1:0] digit,
+                                                input logic signed [PW:0] init);
+    logic signed [PW:0] sum;
+    sum = init;
+    for (int i = 0; i < DB; i++) begin
+      if (digit[i]) sum = sum + (m <<< i);
+    end
+    pp_sum = sum;
+  endfunction
+
   logic [ND*DB-1:0] mag_k [3][2];
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [DW-1:0] dxl, dy;
@@ -105,14 +118,8 @@ module trirast_corner_serial #(
         assign pye = bs;
         /* verilator lint_on WIDTH */
         assign nb  = (cnt_q == NB'(1) && bias_i[k]) ? '1 : '0;   // -bias on the last digit
-        always_comb begin
-          px = '0;
-          py = nb;
-          for (int i = 0; i < DB; i++) begin
-            if (dgx[i]) px = px + (pxe <<< i);
-            if (dgy[i]) py = py + (pye <<< i);
-          end
-        end
+        assign px = pp_sum(pxe, dgx, '0);
+        assign py = pp_sum(pye, dgy, nb);
         assign tx = EB'(px);
         assign ty = EB'(py);
       end

@@ -37,7 +37,14 @@
 #     * the whole half-space unit (trirast_synth_hs_sS) at the default configuration, per stamp
 #       size; its setup stage (trirast_synth_hs_setup) and its tile walker with the stamp tester
 #       (trirast_synth_hs_walker_sS, per stamp size) alone, which say which part does not fit;
-#       and the whole half-space unit per stamp size at FIT_CONFIG, as the improved unit.
+#       and the whole half-space unit per stamp size at FIT_CONFIG, as the improved unit;
+#     * the whole second-generation improved unit (trirast_synth_improved2) at the default
+#       configuration in its iCE40 form (CornerForm 1, the span FIFO in block RAM: this job alone
+#       synthesizes without -nobram).
+# - The second-generation improved unit (trirast_improved2_top, rtl/trirast_improved2.f) at the
+#   default configuration only, in two forms: "improved2" (its defaults: radix-16 corner unit,
+#   span FIFO in block RAM; the iCE40 form) and "improved2-products" (CornerForm 0: corner values
+#   from multipliers, DSPs on xc7; FifoRam 0, the FIFO in LUT RAM / flip-flops; the xc7 form).
 #   PNR_TIMEOUT=SECONDS in the environment stops a place and route that takes longer (its router
 #   can stop converging on a nearly full device: the half-space unit at stamp 4, FIT_CONFIG).
 #   --timing-allow-fail only so that a report is written; a design that does not reach the 12 MHz
@@ -96,6 +103,9 @@ HS_STAMPS="1 2 4"
 HS_TILE=8     # TileSize (the CLI's --tile default)
 HS_ZIGZAG=1   # WalkZigzag (the CLI's --hs-walk default, zigzag)
 HS_UNITS=""
+# The second-generation improved unit: synthesized at the default configuration only, both forms.
+I2_UNITS=""
+[ -f "$ROOT/rtl/trirast_improved2.f" ] && I2_UNITS="improved2 improved2-products"
 if [ -f "$ROOT/rtl/trirast_halfspace.f" ]; then
   for st in $HS_STAMPS; do HS_UNITS="$HS_UNITS halfspace-s$st"; done
   HS_UNITS="${HS_UNITS# }"
@@ -105,6 +115,7 @@ top_of() {
   case "$1" in
     trad) echo trirast_trad_top ;;
     halfspace-*) echo trirast_hs_top ;;
+    improved2*) echo trirast_improved2_top ;;
     *) echo trirast_top ;;
   esac
 }
@@ -115,6 +126,7 @@ hs_params() {  # hs_params UNIT: "StampSize TileSize WalkZigzag" of a half-space
 filelist() {  # filelist UNIT: the unit's sources, rtl/trirast_UNIT.f (one path a line, relative to rtl/)
   local f="$1"
   [[ "$f" == halfspace-* ]] && f=halfspace
+  [[ "$f" == improved2* ]] && f=improved2
   sed 's#//.*##' "$ROOT/rtl/trirast_$f.f" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}'
 }
 sources() {  # sources UNIT CONFIG: the unit's file list with CONFIG's generated package
@@ -154,20 +166,23 @@ yosys_stat() {  # yosys_stat UNIT CONFIG TARGET
     read -r s t z <<< "$(hs_params "$unit")"
     pre="chparam -set StampSize $s -set TileSize $t -set WalkZigzag $z $top;"
   fi
+  [ "$unit" = improved2-products ] && pre="chparam -set CornerForm 0 -set FifoRam 0 $top;"
   rm -f "$WORK/$cfg/$unit.$target.stat"
   yosys -q -l "$WORK/$cfg/$unit.$target.log" -p "read_verilog -sv -I $ROOT/rtl $(sources "$unit" "$cfg");
     $pre $synth; tee -o $WORK/$cfg/$unit.$target.stat stat" >/dev/null
 }
 
-pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
-  local name="$1" unit="$2" cfg="$3" top="$4" pre="${5:-}" extra="${6:-}"
+pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE] [bram]
+  local name="$1" unit="$2" cfg="$3" top="$4" pre="${5:-}" extra="${6:-}" nobram="-nobram"
+  [ "${7:-}" = bram ] && nobram=""
   local d="$WORK/pnr/$name"
   mkdir -p "$d"
   rm -f "$d/nextpnr.log" "$d/design.json"
   # -nobram: the span FIFO stays in flip-flops and LUTs, as in the area table (a FIFO read is
-  # combinational in the unit, so block RAM would change its timing).
+  # combinational in the first-generation units, so block RAM would change their timing); the
+  # second generation's FIFO is built for block RAM (a registered read, FifoRam 1): "bram".
   yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl $(sources "$unit" "$cfg") $extra;
-    $pre synth_ice40 -nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
+    $pre synth_ice40 $nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
   # PNR_TIMEOUT (seconds, environment; 0 or unset = none) stops a router that no longer converges.
   timeout "${PNR_TIMEOUT:-0}" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" --pcf-allow-unconstrained \
     --freq "$PNR_FREQ" --seed 1 --timing-allow-fail --log "$d/nextpnr.log" >/dev/null 2>&1
@@ -269,6 +284,11 @@ for unit in $HS_UNITS; do
     --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
     echo "synth.sh: half-space walker wrapper (stamp $s) failed" >&2; }
 done
+if [ -n "$I2_UNITS" ] && wanted pnr.improved2.default; then
+  # shellcheck disable=SC2086
+  gen_wrapper trirast_synth_improved2 trirast_improved2_top improved2 default $TIE_DEPTH ||
+    echo "synth.sh: improved2 wrapper failed" >&2
+fi
 if [ -n "$HS_UNITS" ] && wanted pnr.halfspace.setup; then
   gen_wrapper trirast_synth_hs_setup trirast_hs_setup_stage "${HS_UNITS%% *}" default ||
     echo "synth.sh: half-space setup wrapper failed" >&2
@@ -292,11 +312,14 @@ for cfg in $CONFIGS; do
     done
   done
 done
-for unit in $HS_UNITS; do
+for unit in $HS_UNITS $I2_UNITS; do
   for target in ice40 xilinx; do
     run_job "$unit.default.$target" yosys_stat "$unit" default "$target"
   done
 done
+[ -f "$WORK/default/trirast_synth_improved2.sv" ] &&
+  run_job pnr.improved2.default pnr improved2.default improved2 default trirast_synth_improved2 "" \
+    "$SHELL_SV $WORK/default/trirast_synth_improved2.sv" bram
 for unit in $HS_UNITS; do
   s="${unit#halfspace-s}"
   [ -f "$WORK/default/trirast_synth_hs_walker_s$s.sv" ] &&
@@ -445,8 +468,9 @@ CSV="$ROOT/docs/synth.csv"
   for cfg in $CONFIGS; do
     for unit in $UNITS; do csv_unit_rows "$unit" "${cfg%%:*}"; done
   done
-  # The half-space unit at the default configuration, one unit name per stamp size.
-  for unit in $HS_UNITS; do csv_unit_rows "$unit" default; done
+  # The half-space unit at the default configuration, one unit name per stamp size; the
+  # second-generation improved unit in its two forms.
+  for unit in $HS_UNITS $I2_UNITS; do csv_unit_rows "$unit" default; done
   # Stages in their wrappers (iCE40, wrapper flip-flops included): the improved unit's, the
   # half-space unit's set-up and walkers.
   for st in improved.setup improved.walk improved.walk_fifo improved.fifo halfspace.setup \
@@ -485,6 +509,7 @@ OUT="$ROOT/docs/synth.md"
   done
   echo
   echo "Units: \`trirast_top\` (improved)$([[ " $UNITS " == *" trad "* ]] && echo ", \`trirast_trad_top\` (traditional, \`trad\`)")$([ -n "$HS_UNITS" ] && echo " and \`trirast_hs_top\` (half-space, \`halfspace-sS\` at stamp size S, TileSize $HS_TILE, WalkZigzag $HS_ZIGZAG; default configuration only)"), NumEndpoints = 1,"
+  [ -n "$I2_UNITS" ] && echo "The second-generation improved unit \`trirast_improved2_top\` (N = 1, boundary mode step and the adaptive divider built in) at the default configuration only: \`improved2\`, its iCE40 form (the defaults: radix-16 digit-serial corner unit, span FIFO in block RAM), and \`improved2-products\`, its xc7 form (CornerForm 0: corner values from multipliers, DSPs; FifoRam 0). Both forms have the same spans; their cycles differ by the corner stage (docs/cycles-improved-vs-trad.md)."
   echo "FifoDepth = 8. The runtime configuration inputs (viewport, boundary and divider mode,"
   echo "endpoints, FIFO depth) are free ports, so every mode is in the counts (docs/rtl.md)."
   [[ " $UNITS " == *" trad "* ]] || echo "The traditional unit's RTL (rtl/trirast_trad_top.sv) was not in the tree: improved only."
@@ -502,7 +527,7 @@ OUT="$ROOT/docs/synth.md"
       done
     done
     if [ "$name" = default ]; then
-      for unit in $HS_UNITS; do
+      for unit in $HS_UNITS $I2_UNITS; do
         for t in ice40 xilinx7; do
           tn="iCE40"; [ "$t" = xilinx7 ] && tn="Xilinx 7"
           echo "| $unit | $name (S=$s, coord $c, box $b) | $tn | $(cell "$unit" "$name" "$t" 4) | $(cell "$unit" "$name" "$t" 5) | $(cell "$unit" "$name" "$t" 6) | $(cell "$unit" "$name" "$t" 7) | $(cell "$unit" "$name" "$t" 8) |"
@@ -523,6 +548,10 @@ OUT="$ROOT/docs/synth.md"
   echo "| improved, this RTL, Xilinx 7 default | $(cell improved default xilinx7 5) | $(cell improved default xilinx7 4) |"
   if [[ " $UNITS " == *" trad "* ]]; then
     echo "| traditional, this RTL, Xilinx 7 default | $(cell trad default xilinx7 5) | $(cell trad default xilinx7 4) |"
+  fi
+  if [ -n "$I2_UNITS" ]; then
+    echo "| improved, second generation (xc7 form, improved2-products), Xilinx 7 default | $(cell improved2-products default xilinx7 5) | $(cell improved2-products default xilinx7 4) (+ $(cell improved2-products default xilinx7 8) DSP) |"
+    echo "| improved, second generation (iCE40 form, improved2), Xilinx 7 default | $(cell improved2 default xilinx7 5) | $(cell improved2 default xilinx7 4) (+ $(cell improved2 default xilinx7 8) DSP) |"
   fi
   if [[ " $UNITS " == *" trad "* ]]; then
     li=$(cell improved default xilinx7 4); lt=$(cell trad default xilinx7 4)
@@ -558,6 +587,8 @@ OUT="$ROOT/docs/synth.md"
   lut_def=$(cell improved default ice40 4)
   echo "| whole improved unit | default | not placed: $lut_def LUT4 alone (area table) > 7680 | $lut_def | $(cell improved default ice40 5) | does not fit the HX8K | - | |"
   pnr_row "improved.$FIT_CONFIG" "whole improved unit" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
+  [ -f "$WORK/jobs/pnr.improved2.default.status" ] &&
+    pnr_row improved2.default "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" default
   if [[ " $UNITS " == *" trad "* ]]; then
     for cfg in $CONFIGS; do
       name="${cfg%%:*}"
@@ -578,7 +609,7 @@ OUT="$ROOT/docs/synth.md"
   echo
   echo "Critical paths (nextpnr's first source and last sink cell of the worst path):"
   echo
-  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done) $(for u in $HS_UNITS; do echo "$u.$FIT_CONFIG"; done); do
+  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" improved2.default $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done) $(for u in $HS_UNITS; do echo "$u.$FIT_CONFIG"; done); do
     p=$(pnr_path "$d")
     [ -n "$p" ] && echo "- \`$d\`: \`$p\`"
   done
@@ -690,6 +721,8 @@ OUT="$ROOT/docs/synth.md"
   echo "((p + 1) x PixBits bits, docs/unit.md section 1) are LUTs there; on Xilinx they map to DSP48E1."
   echo "Flip-flops include the 32-bit triangle tag carried with every span (TagBits) and the 8-entry"
   echo "span FIFO. Place and route uses \`synth_ice40 -nobram\` (the FIFO in flip-flops, as in the area"
-  echo "table: its read is combinational in the unit)."
+  echo "table: its read is combinational in the unit); the second-generation unit's place and route"
+  echo "keeps block RAM (its FIFO is built for it: a registered read). LUT counts on Xilinx 7 do not"
+  echo "include LUT RAM cells (RAM32M: the span FIFO's storage where Yosys maps it there)."
 } > "$OUT"
 echo "synth.sh: wrote $OUT ($ELAPSED s)" >&2

@@ -1,9 +1,11 @@
 // Writes the vectors of the Icarus testbench (dv/icarus/tb_trirast.sv): the set-up triangles of a
 // scene, and the spans with their pop cycles and the accept cycles that the Verilated model
 // produces for them at the default hardware (N = 1, DEPTH = 8) with a periodic sink.
-//   trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK]]
+//   trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK] | improved2:FORM]
 // (the half-space unit's vectors from the halfspace-rtl engine, at --stamp STAMP --tile TILE
-// (0: none) --hs-walk WALK (row | zigzag); default 2:8:zigzag, trirast_hs_top's defaults)
+// (0: none) --hs-walk WALK (row | zigzag); default 2:8:zigzag, trirast_hs_top's defaults; the
+// second-generation unit's from the improved2-rtl engine in corner form FORM, 1 radix 16, 0
+// products)
 // OUTDIR gets tris.hex, spans.hex, accept.hex, done.hex and plusargs.txt.
 #include <cstdio>
 #include <fstream>
@@ -16,6 +18,7 @@
 #include "core/setup.hpp"
 #include "verilator/rtl_engine.hpp"
 #include "verilator/rtl_hs_engine.hpp"
+#include "verilator/rtl_improved2_engine.hpp"
 #include "scene/scene.hpp"
 #include "verilator/trirast_rtl_params.hpp"
 
@@ -49,8 +52,10 @@ struct HexBits {
 
 int main(int argc, char** argv) {
   const std::string unit = argc == 6 ? argv[5] : "";
-  if (argc != 5 && !(argc == 6 && unit.rfind("halfspace", 0) == 0)) {
-    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK]]\n";
+  const bool halfspace = unit.rfind("halfspace", 0) == 0, improved2 = unit.rfind("improved2:", 0) == 0;
+  if (argc != 5 && !(argc == 6 && (halfspace || improved2))) {
+    std::cerr << "usage: trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK] | "
+                 "improved2:FORM]\n";
     return 2;
   }
   try {
@@ -62,7 +67,12 @@ int main(int argc, char** argv) {
     cfg.endpoints = 1;
     cfg.fifo_depth = 8;
     cfg.sink_stall = "periodic:" + std::to_string(ready) + ":" + std::to_string(stall);
-    if (unit.size() > 9) {  // halfspace:STAMP:TILE:WALK
+    if (improved2) {  // improved2:FORM
+      const std::string form = unit.substr(10);
+      if (form != "0" && form != "1")
+        throw std::invalid_argument("improved2:FORM: '" + unit + "': FORM is 0 or 1");
+      cfg.g2_corner_form = std::stoi(form);
+    } else if (unit.size() > 9) {  // halfspace:STAMP:TILE:WALK
       std::istringstream in(unit.substr(10));
       std::string stamp, tile, walk;
       if (unit[9] != ':' || !std::getline(in, stamp, ':') || !std::getline(in, tile, ':') ||
@@ -78,7 +88,9 @@ int main(int argc, char** argv) {
                             : read_tri_file(spec);
     const SetupResult setup = setup_scene(scene.tris, cfg);
     EngineResult res;
-    if (argc == 6)  // the half-space unit at trirast_hs_top's default build parameters
+    if (improved2)
+      rtl::run_rtl_improved2(setup, cfg, rtl::RtlRunOptions{}, res);
+    else if (halfspace)  // the half-space unit at the build parameters above
       rtl::run_rtl_halfspace(setup, cfg, 1, res);
     else
       rtl::run_rtl(setup, cfg, rtl::RtlRunOptions{}, res);

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Runs the Icarus testbench dv/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
-#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK]]
+#   dv/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK] | improved2[:FORM]]
 # (halfspace: the half-space unit, rtl/trirast_halfspace.f, at StampSize STAMP, TileSize TILE
 # (0: none), walk row | zigzag (default 2:8:zigzag, trirast_hs_top's defaults), against the
-# halfspace-rtl engine's vectors of the same build parameters)
+# halfspace-rtl engine's vectors of the same build parameters; improved2: the second-generation
+# unit, rtl/trirast_improved2.f, in CornerForm FORM (1 radix 16, the default; 0 products), against
+# the improved2-rtl engine's vectors)
 # For each scene, trirast_rtl_vectors writes the set-up triangles and the Verilated model's spans
 # and cycles; Icarus runs the RTL at its default parameters (NumEndpoints = 1, FifoDepth = 8)
 # and must agree span for span and cycle for cycle. Exit status 0 only if every scene passes.
@@ -25,7 +27,15 @@ case "$UNIT" in
     LIST=trirast_halfspace.f
     DEFINES="-DTRIRAST_TB_HALFSPACE -Ptb_trirast.HsStamp=$stamp -Ptb_trirast.HsTile=$tile -Ptb_trirast.HsZigzag=$zig"
     ;;
-  *) echo "run.sh: unit '$UNIT' is not halfspace[:STAMP:TILE:WALK]" >&2; exit 2 ;;
+  improved2|improved2:*)
+    IFS=: read -r _ form _rest <<< "$UNIT::"
+    form=${form:-1}
+    case "$form" in 0|1) ;; *) echo "run.sh: corner form '$form' is not 0 or 1" >&2; exit 2 ;; esac
+    UNIT="improved2:$form"
+    LIST=trirast_improved2.f
+    DEFINES="-DTRIRAST_TB_IMPROVED2 -Ptb_trirast.I2CornerForm=$form"
+    ;;
+  *) echo "run.sh: unit '$UNIT' is not halfspace[:STAMP:TILE:WALK] or improved2[:FORM]" >&2; exit 2 ;;
 esac
 # The unit's file list (rtl/*.f: one path a line, relative to rtl/).
 SOURCES="$(sed 's#//.*##' "$ROOT/rtl/$LIST" | awk -v d="$ROOT/rtl" 'NF {print d "/" $1}')

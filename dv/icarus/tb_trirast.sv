@@ -1,5 +1,7 @@
 // Icarus Verilog testbench (iverilog -g2012): runs trirast_top at its default parameters
 // (NumEndpoints = 1, FifoDepth = 8) on vectors from trirast_rtl_vectors (dv/icarus/run.sh) and
+// (TRIRAST_TB_HALFSPACE) the half-space unit trirast_hs_top, (TRIRAST_TB_IMPROVED2) the
+// second-generation unit trirast_improved2_top in the corner form I2CornerForm; it
 // checks every span (in pop order), every accept cycle and every triangle's first_span_cycle and
 // done_cycle against the Verilated model's, with a periodic sink (+ready=R +stall=S).
 `timescale 1ns / 1ps
@@ -7,7 +9,9 @@ module tb_trirast #(
   // The half-space unit's build parameters (TRIRAST_TB_HALFSPACE; run.sh sets them with -P).
   parameter int HsStamp = 2,
   parameter int HsTile = 8,
-  parameter bit HsZigzag = 1'b1
+  parameter bit HsZigzag = 1'b1,
+  // The second-generation unit's corner form (TRIRAST_TB_IMPROVED2): 1 radix 16, 0 products.
+  parameter int I2CornerForm = 1
 );
   localparam int P = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -37,7 +41,11 @@ module tb_trirast #(
   logic box_retire, walk_busy, walk_stall, walk_last, walk_retire;
   logic [CountBits-1:0] fifo_count;
   logic [PB-1:0] vpx, vpy;
+  logic unit_idle;  // no triangle inside the unit (the run's end once every span left)
 
+`ifndef TRIRAST_TB_IMPROVED2
+  assign unit_idle = tri_ready && !walk_busy && !span_valid;
+`endif
 `ifdef TRIRAST_TB_HALFSPACE
   // The half-space unit at the build parameters HsStamp, HsTile, HsZigzag: same ports but no
   // boundary, divider or endpoints configuration.
@@ -50,6 +58,18 @@ module tb_trirast #(
     .rst_ni           (rst_n),
     .cfg_vp_xmax_i    (vpx),
     .cfg_vp_ymax_i    (vpy),
+`elsif TRIRAST_TB_IMPROVED2
+  // The second-generation unit: its setup is a pipeline, so "idle" is its busy_o.
+  logic i2_busy;
+  assign unit_idle = !i2_busy;
+  trirast_improved2_top #(
+    .CornerForm (I2CornerForm)
+  ) u_dut (
+    .clk_i            (clk),
+    .rst_ni           (rst_n),
+    .cfg_vp_xmax_i    (vpx),
+    .cfg_vp_ymax_i    (vpy),
+    .busy_o           (i2_busy),
 `else
   trirast_top u_dut (
     .clk_i            (clk),
@@ -125,7 +145,7 @@ module tb_trirast #(
       cur = (next < ntris) ? tris[next] : '0;
       span_ready = (c % (ready_n + stall_n)) < ready_n;
       #1;
-      if (next == ntris && si == nspans && tri_ready && !walk_busy && !span_valid) begin
+      if (next == ntris && si == nspans && unit_idle) begin
         c = last + 100;  // done
       end else begin
         if (tri_valid && tri_ready) begin

@@ -7,10 +7,8 @@
 // trirast's --sink-stall random:S:P, model/core/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
-// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). +cycles=FILE writes trirast_improved2_top's
-// per-triangle cycles as CSV (index among the file's triangles = the tag, accept, first span,
-// done, spans; the definitions of docs/timing.md: a span's cycle is its pop, an empty box is done
-// in its retire cycle, a job without spans in its last walk cycle), for unit_cycles_check.sh.
+// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). (Per-triangle cycles against the
+// SystemC model: the improved2-rtl engine, tests/rtl/test_rtl_improved2_engine.cpp.)
 // Both units' span FIFO depth: 8 unless built with -DG2_FIFO_DEPTH=D (a power of two, 1..8).
 `ifndef G2_FIFO_DEPTH
 `define G2_FIFO_DEPTH 8
@@ -115,11 +113,6 @@ module g2_unit_tb;
     .span_x_begin_o (sxb2), .span_x_end_o (sxe2),
     .box_retire_o (retire2), .box_retire_tag_o (rtag2), .busy_o (busy2));
 
-  // trirast_improved2_top's per-triangle cycles (+cycles=FILE).
-  longint acc2 [MaxTris], first2 [MaxTris], done2 [MaxTris], wlast2 [MaxTris];
-  int nsp2 [MaxTris];
-  string cycles_path;
-
   logic [SpanBits-1:0] q1 [$], q2 [$];
   longint end1 = -1, end2 = -1, retires1 = 0, retires2 = 0;
   logic idle1, idle2;
@@ -132,17 +125,6 @@ module g2_unit_tb;
       if (v2 && r2) i2 <= i2 + 1;
       if (sv1 && sready) q1.push_back({stag1, sy1, sxb1, sxe1});
       if (sv2 && sready) q2.push_back({stag2, sy2, sxb2, sxe2});
-      if (v2 && r2) acc2[i2] = cyc;
-      if (sv2 && sready) begin
-        if (nsp2[stag2] == 0) first2[stag2] = cyc;
-        done2[stag2] = cyc;
-        nsp2[stag2]++;
-      end
-      if (retire2) begin
-        first2[rtag2] = cyc;
-        done2[rtag2] = cyc;
-      end
-      if (u_gen2.u_walk.last) wlast2[u_gen2.u_walk.tag_q] = cyc;
       if (retire1) retires1++;
       if (retire2) retires2++;
       if (idle1 && end1 < 0) end1 = cyc;
@@ -164,9 +146,6 @@ module g2_unit_tb;
     end
     stall = $test$plusargs("stall");
     rsink = $value$plusargs("rseed=%d", rseed) && $value$plusargs("rpct=%d", rpct);
-    for (int k = 0; k < n; k++) begin
-      acc2[k] = -1;  first2[k] = -1;  done2[k] = -1;  wlast2[k] = -1;  nsp2[k] = 0;
-    end
     $readmemh(path, tris, 0, n - 1);
     i1 = 0;
     i2 = 0;
@@ -201,24 +180,6 @@ module g2_unit_tb;
     if (retires1 != retires2) begin
       $display("g2_unit_tb: empty boxes retired: gen1 %0d, gen2 %0d", retires1, retires2);
       errors++;
-    end
-    if ($value$plusargs("cycles=%s", cycles_path)) begin
-      int fd;
-      fd = $fopen(cycles_path, "w");
-      if (fd == 0) begin
-        $display("g2_unit_tb: cannot write %s", cycles_path);
-        errors++;
-      end else begin
-        $fdisplay(fd, "index,accept_cycle,first_span_cycle,done_cycle,spans");
-        for (int k = 0; k < n; k++) begin
-          if (first2[k] < 0) begin   // walked, no span: done in its last walk cycle
-            first2[k] = wlast2[k];
-            done2[k] = wlast2[k];
-          end
-          $fdisplay(fd, "%0d,%0d,%0d,%0d,%0d", k, acc2[k], first2[k], done2[k], nsp2[k]);
-        end
-        $fclose(fd);
-      end
     end
     if (rsink) $write("g2_unit_tb: sink random:%0d:%0d: ", rseed, rpct);
     else if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");

@@ -4,8 +4,8 @@
 // one cycle per group of N rows; N = 3 is refused; its trace (--trace) is a VCD
 // whose signals agree with the cycles, with the .gtkw grouped by module, and tracing changes no
 // cycle. Its cycles against
-// the whole-unit prototype's RTL (rtl/trirast_improved2_top.sv) are the ctest
-// sc_improved2_vs_rtl_prototype (tests/sc/CMakeLists.txt).
+// the unit's RTL (rtl/trirast_improved2.f, engine improved2-rtl) are
+// tests/rtl/test_rtl_improved2_engine.cpp's.
 #include <gtest/gtest.h>
 
 #include <algorithm>
