@@ -82,8 +82,8 @@ module trirast_walk_stage2 #(
   logic [BB-1:0] xmax_q, ymax_q;
   logic [WB-1:0] row_q, row_d;
   logic [2:0] mirror;
-  logic [2*NB-1:0] st [3];
-  logic [NB*(BB+1)-1:0] bnd [3];
+  logic [3*2*NB-1:0] st;             // walker k, row r: [2*(k*NB + r) +: 2]
+  logic [3*NB*(BB+1)-1:0] bnd;        // walker k, row r: [(k*NB + r)*(BB+1) +: BB+1]
   logic tiny_q;
   logic [1:0] tvalid_q, tbegin_q, tend1_q;
   logic [2:0] n;          // rows per group
@@ -121,8 +121,8 @@ module trirast_walk_stage2 #(
       .adv_i         (go),
       .adv_rows_i    (n),
       .mirror_o      (mirror[k]),
-      .row_state_o   (st[k]),
-      .row_bound_o   (bnd[k])
+      .row_state_o   (st[k*2*NB +: 2*NB]),
+      .row_bound_o   (bnd[k*NB*(BB+1) +: NB*(BB+1)])
     );
   end
 
@@ -130,17 +130,35 @@ module trirast_walk_stage2 #(
   logic [NB-1:0] push_q, push_d;
   logic [NB*EntryBits-1:0] data_q, data_d;
   logic [CountBits-1:0] count;
-  logic [PushBits-1:0] pushes_q;   // the spans in the push register
-  always_comb begin
-    pushes_q = '0;
-    for (int r = 0; r < NB; r++) pushes_q = pushes_q + PushBits'(push_q[r]);
+  logic room;
+  if (NB == 1) begin : g_room1
+    // count + push < DEPTH (written as the N = 1 unit always was: Yosys maps the general form
+    // below, with its + 0, to some 500 more iCE40 LUTs in the whole unit).
+    assign room = (CountBits + 1)'(count) + (CountBits + 1)'(push_q) <
+                  (CountBits + 1)'(cfg_fifo_depth_i);
+    logic unused_n1;
+    assign unused_n1 = ^n1;
+  end else begin : g_roomn
+    // count + pushes_q + n <= DEPTH, as count + pushes_q + (n - 1) < DEPTH (pushes_q: the spans
+    // in the push register).
+    logic [PushBits-1:0] pushes_q;
+    always_comb begin
+      pushes_q = '0;
+      for (int r = 0; r < NB; r++) pushes_q = pushes_q + PushBits'(push_q[r]);
+    end
+    assign room = (CountBits + 1)'(count) + (CountBits + 1)'(pushes_q) + (CountBits + 1)'(n1) <
+                  (CountBits + 1)'(cfg_fifo_depth_i);
   end
-  // room: count + pushes_q + n <= DEPTH, as count + pushes_q + (n - 1) < DEPTH.
-  assign go   = walk_q && ((CountBits + 1)'(count) + (CountBits + 1)'(pushes_q) +
-                           (CountBits + 1)'(n1) < (CountBits + 1)'(cfg_fifo_depth_i));
-  // The last group reaches past Ymax (row j + n - 1 >= Ymax); a tiny job's ends after row 0
-  // when row 1 has no span.
-  assign last = go && ((WB'(row_q) + WB'(n1) >= WB'(ymax_q)) || (tiny_q && !tvalid_q[1]));
+  assign go = walk_q && room;
+  // The last group reaches past Ymax (row j + n - 1 >= Ymax; N = 1: row j = Ymax); a tiny job's
+  // ends after row 0 when row 1 has no span.
+  logic past;
+  if (NB == 1) begin : g_last1
+    assign past = row_q == WB'(ymax_q);
+  end else begin : g_lastn
+    assign past = row_q + WB'(n1) >= WB'(ymax_q);
+  end
+  assign last = go && (past || (tiny_q && !tvalid_q[1]));
 
   // One span generator per row of the group; row r is j + r.
   for (genvar r = 0; r < NB; r++) begin : g_row
@@ -148,8 +166,9 @@ module trirast_walk_stage2 #(
     logic [BB:0] gbegin, gend;
     logic [WB-1:0] row_r;
     trirast_span_generator2 u_gen (
-      .state_i  ({st[2][2*r +: 2], st[1][2*r +: 2], st[0][2*r +: 2]}),
-      .bound_i  ({bnd[2][r*(BB+1) +: BB+1], bnd[1][r*(BB+1) +: BB+1], bnd[0][r*(BB+1) +: BB+1]}),
+      .state_i  ({st[2*(2*NB + r) +: 2], st[2*(NB + r) +: 2], st[2*r +: 2]}),
+      .bound_i  ({bnd[(2*NB + r)*(BB+1) +: BB+1], bnd[(NB + r)*(BB+1) +: BB+1],
+                  bnd[r*(BB+1) +: BB+1]}),
       .mirror_i (mirror),
       .xmax_i   (xmax_q),
       .valid_o  (gvalid),
