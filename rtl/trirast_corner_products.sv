@@ -19,8 +19,8 @@ module trirast_corner_products (
   localparam int DW = P + 2;
 
   logic signed [DW-1:0] cx, cy;
-  assign cx = $signed(DW'({x0_i, 1'b1, (F - 1)'(0)}));
-  assign cy = $signed(DW'({y0_i, 1'b1, (F - 1)'(0)}));
+  assign cx = $signed(DW'({x0_i, 1'b1}) << (F - 1));
+  assign cy = $signed(DW'({y0_i, 1'b1}) << (F - 1));
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [DW-1:0] dx, dy;
     logic signed [CB-1:0] ak, bk;

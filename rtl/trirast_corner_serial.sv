@@ -43,8 +43,8 @@ module trirast_corner_serial #(
   localparam int PW = CB + DB + 1;                  // A * digit, signed
 
   logic signed [DW-1:0] cx0, cy0;
-  assign cx0 = $signed(DW'({x0_i, 1'b1, (F - 1)'(0)}));
-  assign cy0 = $signed(DW'({y0_i, 1'b1, (F - 1)'(0)}));
+  assign cx0 = $signed(DW'({x0_i, 1'b1}) << (F - 1));
+  assign cy0 = $signed(DW'({y0_i, 1'b1}) << (F - 1));
 
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
   logic [ND*DB-1:0] any_mag;          // OR of all start magnitudes (for the top digit)

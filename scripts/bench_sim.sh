@@ -5,17 +5,22 @@
 # it, and the Verilated RTL's time on the same scenes in the same run with the RTL/model wall-time
 # ratio (target: >= 20) and CPU-time ratio. Runs alternate model, trad, RTL, so that the load of a
 # shared machine hits all of them; each time is the best of its runs.
-# Usage: scripts/bench_sim.sh [--doc] [--repeat R] [--rtl-repeat R] [scene ...]
+# Usage: scripts/bench_sim.sh [--doc] [--unit improved|improved2] [--repeat R] [--rtl-repeat R] [scene ...]
 #   --doc  also rewrites the section "Model against RTL wall time" of docs/sc-model.md
-#          (the table of this run, the command and the date)
+#          (the table of this run, the command and the date); with --unit improved2 the section
+#          "The second generation: model against RTL wall time" (improved2-sc, improved2-rtl)
 # Build directory: $TRIRAST_BUILD_DIR, default build/.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${TRIRAST_BUILD_DIR:-$root/build}"
 doc=0
 args=()
+head="## Model against RTL wall time"
+prev=""
 for a in "$@"; do
   if [ "$a" = --doc ]; then doc=1; else args+=("$a"); fi
+  [ "$prev" = --unit ] && [ "$a" = improved2 ] && head="## The second generation: model against RTL wall time"
+  prev="$a"
 done
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
@@ -33,7 +38,7 @@ cmd="scripts/bench_sim.sh --doc${args[*]:+ ${args[*]}}"
 section="$(mktemp)"
 trap 'rm -f "$md" "$section"' EXIT
 {
-  echo "## Model against RTL wall time"
+  echo "$head"
   echo
   echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores shared with other jobs, load"
   echo "average $(cut -d' ' -f1 /proc/loadavg) at the end; Release build, 1024x768, S=8, N=1, FIFO 8, sink always"
@@ -46,11 +51,10 @@ trap 'rm -f "$md" "$section"' EXIT
   cat "$md"
   echo
 } > "$section"
-/usr/bin/python3 - "$root/docs/sc-model.md" "$section" <<'EOF'
+/usr/bin/python3 - "$root/docs/sc-model.md" "$section" "$head" <<'EOF'
 import sys
-path, sec = sys.argv[1], open(sys.argv[2]).read()
+path, sec, head = sys.argv[1], open(sys.argv[2]).read(), sys.argv[3]
 text = open(path).read()
-head = "## Model against RTL wall time"
 if head in text:
     a = text.index(head)
     b = text.find("\n## ", a + len(head))
@@ -60,4 +64,4 @@ else:
     text = (text[:a + 1] + sec + text[a + 1:]) if a >= 0 else (text.rstrip("\n") + "\n\n" + sec)
 open(path, "w").write(text)
 EOF
-echo "bench_sim.sh: wrote the section \"Model against RTL wall time\" of docs/sc-model.md" >&2
+echo "bench_sim.sh: wrote the section \"${head#\#\# }\" of docs/sc-model.md" >&2

@@ -293,17 +293,18 @@ TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
 // The second-generation unit in the sweep (--engines improved2-sc, improved2-datapath): the
 // improved unit's widths with N = 1 in both corner forms, exact where the widths are the
 // golden's, the same pixels as gen1 at every width (both follow the rule at their S), the DSP
-// corner form never slower than radix 16, and its area unknown (never gen1's synthesis or
-// estimate: scripts/synth.sh does not synthesize the gen2 study prototype).
-TEST(SweepImproved2, CornerFormsSweptExactWithUnknownArea) {
-  // The full sweep's points: 29 widths x 2 corner forms, with distinct names, none buildable
-  // (the prototype is not in rtl/).
+// corner form never slower than radix 16; its area the synthesis row of its corner form where one
+// covers the point ("improved2", "improved2-products"), never gen1's synthesis or estimate, and
+// unknown elsewhere.
+TEST(SweepImproved2, CornerFormsSweptExactWithTheirOwnArea) {
+  // The full sweep's points: 29 widths x 2 corner forms, with distinct names, all buildable
+  // (rtl/trirast_improved2.f is parametric in the widths).
   const std::vector<SweepPoint> full = sweep_points(false, {"improved2-sc"});
   ASSERT_EQ(full.size(), 58u);
   std::set<std::string> names;
   for (const SweepPoint& p : full) {
     EXPECT_EQ(p.kind(), UnitKind::Improved2);
-    EXPECT_FALSE(p.rtl()) << p.label();
+    EXPECT_TRUE(p.rtl()) << p.label();
     EXPECT_EQ(p.cfg.endpoints, 1) << p.label();
     names.insert(p.config_name());
   }
@@ -316,10 +317,13 @@ TEST(SweepImproved2, CornerFormsSweptExactWithUnknownArea) {
     EXPECT_NE(p.kind(), UnitKind::Improved2) << p.label();
 
   TempDir dir;
-  // A synthesized improved row at the default widths: gen2 must not take it.
+  // A synthesized improved row at the default widths: gen2 must not take it; its own rows, one
+  // per corner form, it takes.
   write_file(dir.file("synth.csv"),
              "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
-             "improved,default,xilinx7,6536,2320,818,0,9,\n");
+             "improved,default,xilinx7,6536,2320,818,0,9,\n"
+             "improved2,default,xilinx7,6100,2700,900,0,0,\n"
+             "improved2-products,default,xilinx7,4300,2360,748,0,15,\n");
   const std::string scenes = "builtin:hard-tiny;builtin:lowpoly-far;builtin:mixed:objects=2,tess=8";
   const CommandResult r = run_command(
       kBin + " sweep --quick --no-progress --engines golden,improved-sc,improved2-sc,"
@@ -332,9 +336,14 @@ TEST(SweepImproved2, CornerFormsSweptExactWithUnknownArea) {
     if (row.at("unit") != "improved2") continue;
     ++g2;
     EXPECT_EQ(row.at("failures"), "0") << row.at("config");
-    EXPECT_EQ(row.at("luts"), "") << row.at("config");
-    EXPECT_EQ(row.at("area_source"), "") << row.at("config");
-    EXPECT_EQ(row.at("rtl"), "0") << row.at("config");
+    const std::string& name = row.at("config");
+    const bool default_widths = name.rfind("S8 c16 b14 ", 0) == 0;
+    EXPECT_EQ(row.at("luts"), !default_widths                      ? ""
+                              : name.find(" dsp") != std::string::npos ? "4300"
+                                                                       : "6100")
+        << name;
+    EXPECT_EQ(row.at("area_source"), default_widths ? "synth:xilinx7" : "") << name;
+    EXPECT_EQ(row.at("rtl"), "1") << name;
     // The same pixels as the first generation at the same widths.
     std::string gen1 = row.at("config");
     gen1 = gen1.substr(0, gen1.find(" N1 gen2"));
@@ -367,19 +376,23 @@ TEST(SweepImproved2, CornerFormsSweptExactWithUnknownArea) {
     EXPECT_GE(std::stol(r16->at("total_cycles")), std::stol(dsp->at("total_cycles"))) << scene;
     EXPECT_EQ(r16->at("missing"), "0") << scene;
     EXPECT_EQ(r16->at("extra"), "0") << scene;
-    EXPECT_EQ(r16->at("luts"), "") << scene;
+    EXPECT_EQ(r16->at("luts"), "6100") << scene;
   }
   EXPECT_GT(std::stol(find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 radix16",
                                "builtin:lowpoly-far")->at("total_cycles")),
             std::stol(find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 dsp",
                                "builtin:lowpoly-far")->at("total_cycles")));
-  // The JSON names the corner form and gives no area.
+  // The JSON names the corner form and gives its synthesized area; a point of other widths none.
   const std::string json = slurp(dir.file("out/sweep.json"));
   const size_t at = json.find("\"config\": \"S8 c16 b14 N1 gen2 dsp\"");
   ASSERT_NE(at, std::string::npos);
   const std::string point = json.substr(at, json.find("\"scenes\"", at) - at);
   EXPECT_NE(point.find("\"corner_form\": \"dsp\""), std::string::npos) << point;
-  EXPECT_EQ(point.find("\"luts\""), std::string::npos) << point;
+  EXPECT_NE(point.find("\"luts\": 4300"), std::string::npos) << point;
+  const size_t other = json.find("\"config\": \"S4 c16 b14 N1 gen2 dsp\"");
+  ASSERT_NE(other, std::string::npos);
+  const std::string point2 = json.substr(other, json.find("\"scenes\"", other) - other);
+  EXPECT_EQ(point2.find("\"luts\""), std::string::npos) << point2;
 }
 
 TEST(SweepCli, BadUsageIsOneLine) {
@@ -555,7 +568,10 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   // The second-generation unit: never the improved unit's synthesis or estimate.
   EXPECT_FALSE(hs.area(UnitKind::Improved2, RasterConfig{}).known());
   EXPECT_FALSE(hs.estimate(UnitKind::Improved2, RasterConfig{}).known());
-  EXPECT_EQ(synth_unit_name(UnitKind::Improved2, RasterConfig{}), "");
+  RasterConfig products;
+  products.g2_corner_form = 0;
+  EXPECT_EQ(synth_unit_name(UnitKind::Improved2, RasterConfig{}), "improved2");
+  EXPECT_EQ(synth_unit_name(UnitKind::Improved2, products), "improved2-products");
   EXPECT_EQ(hs.fmax_mhz(UnitKind::Improved2, RasterConfig{}), 0);
   write_file(dir.file("bad.csv"), "unit,config,luts\nimproved,default,1\n");
   EXPECT_THROW(AreaModel(dir.file("bad.csv"), ""), std::runtime_error);

@@ -5,9 +5,11 @@
 // Runs alternate (model, trad, rtl, model, trad, rtl, ...) so that a change of the machine's load
 // hits all of them; each time is the best of its runs. Wall time and process CPU time are both
 // measured: on a shared machine the CPU-time ratio is the steadier of the two.
-// Usage: trirast_sc_bench [--repeat R] [--rtl-repeat R] [--model-only] [--md FILE] [scene ...]
-//        (default: the five seed-000 benchmark scenes, R = 5, RTL R = 3; --md also writes the
-//        table as Markdown, for docs/sc-model.md)
+// Usage: trirast_sc_bench [--unit improved|improved2] [--repeat R] [--rtl-repeat R] [--model-only]
+//                         [--md FILE] [scene ...]
+//        (default: the improved unit, the five seed-000 benchmark scenes, R = 5, RTL R = 3; --md
+//        also writes the table as Markdown, for docs/sc-model.md; --unit improved2: the
+//        second-generation unit's model improved2-sc and RTL improved2-rtl, the trad model beside)
 #include <time.h>
 
 #include <algorithm>
@@ -61,7 +63,7 @@ void time_once(Engine& e, const SetupResult& setup, const RasterConfig& cfg, Tim
 int sc_main(int argc, char** argv) {
   int repeat = 5, rtl_repeat = 3;
   bool model_only = false;
-  std::string md_path;
+  std::string md_path, unit = "improved";
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -73,6 +75,8 @@ int sc_main(int argc, char** argv) {
       model_only = true;
     else if (a == "--md" && i + 1 < argc)
       md_path = argv[++i];
+    else if (a == "--unit" && i + 1 < argc)
+      unit = argv[++i];
     else if (!a.empty() && a[0] == '-') {
       std::fprintf(stderr, "trirast_sc_bench: unknown option %s\n", a.c_str());
       return 2;
@@ -81,11 +85,15 @@ int sc_main(int argc, char** argv) {
   }
   if (scenes.empty())
     scenes = {"lowpoly-far", "lowpoly-near", "highpoly-far", "highpoly-near", "mixed"};
-  const EngineInfo* rtl = model_only ? nullptr : find_engine("improved-rtl");
+  if (unit != "improved" && unit != "improved2") {
+    std::fprintf(stderr, "trirast_sc_bench: --unit: '%s' is not improved or improved2\n", unit.c_str());
+    return 2;
+  }
+  const EngineInfo* rtl = model_only ? nullptr : find_engine(unit + "-rtl");
   RasterConfig cfg;
-  std::printf("SystemC model speed, 1024x768, S=8, N=1, FIFO 8, sink ready; best of %d runs (RTL %d), "
-              "runs alternating\n",
-              repeat, rtl ? rtl_repeat : 0);
+  std::printf("SystemC model speed (%s-sc), 1024x768, S=8, N=1, FIFO 8, sink ready; best of %d runs "
+              "(RTL %d), runs alternating\n",
+              unit.c_str(), repeat, rtl ? rtl_repeat : 0);
   std::printf("%-14s %7s %9s %8s %9s %10s %8s %10s", "scene", "tris", "cycles", "model s",
               "model tri/s", "model cyc/s", "trad s", "trad cyc/s");
   if (rtl)
@@ -111,7 +119,7 @@ int sc_main(int argc, char** argv) {
   for (const std::string& name : scenes) {
     const Scene scene = make_builtin(name, cfg, CameraOptions{});
     const SetupResult setup = setup_scene(scene.tris, cfg);
-    auto model = make_model_engine();
+    auto model = unit == "improved2" ? make_improved2_model_engine() : make_model_engine();
     auto trad = make_trad_model_engine();
     std::unique_ptr<Engine> r = rtl ? rtl->make() : nullptr;
     Timing m, t, rt;

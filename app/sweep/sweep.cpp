@@ -84,6 +84,8 @@ bool SweepPoint::rtl() const {
   // Stamp, tile and walk of the half-space unit are build parameters of its RTL.
   if (k == UnitKind::Trad || k == UnitKind::Halfspace)
     return cfg.fifo_depth == RasterConfig{}.fifo_depth;
+  // The second-generation unit's RTL is parametric in the widths; N = 1 is all its points have.
+  if (k == UnitKind::Improved2) return cfg.fifo_depth == RasterConfig{}.fifo_depth;
   return k == UnitKind::Improved && cfg.divider_quotient_bits == 0 &&
          cfg.fifo_depth == RasterConfig{}.fifo_depth;
 }

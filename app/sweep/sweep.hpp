@@ -40,8 +40,8 @@ struct SweepPoint {
   // traditional unit, and the improved unit without quotient truncation (K) and with the default
   // FIFO depth. An improved configuration with K is a C++-model-only what-if: no RTL, its area
   // stays an estimate, and it is never on a hardware front. The second-generation unit
-  // (improved2-*) is a what-if too: its RTL is the study prototype of scripts/gen2_study/, not a
-  // unit of rtl/.
+  // (improved2-*) is buildable at the default FIFO depth (rtl/trirast_improved2.f, both corner
+  // forms, any widths).
   bool rtl() const;
   // "S8 c16 b14 K- N1" plus "fixed" / "divide" when not the default; the second-generation unit
   // "S8 c16 b14 N1 gen2 radix16" (its corner form; the untimed improved2-datapath, whose spans

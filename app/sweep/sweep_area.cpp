@@ -27,6 +27,7 @@ std::string synth_unit_name(UnitKind k, const RasterConfig& cfg) {
     case UnitKind::Improved:
     case UnitKind::Trad: return unit_kind_name(k);
     case UnitKind::Halfspace: return "halfspace-s" + std::to_string(cfg.hs_stamp);
+    case UnitKind::Improved2: return cfg.g2_corner_form == 0 ? "improved2-products" : "improved2";
     default: return "";
   }
 }
@@ -246,9 +247,9 @@ double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
 
 Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
-  // No hardware, or hardware scripts/synth.sh does not synthesize (the second-generation unit:
-  // unknown, never the first generation's estimate).
-  if (kind != UnitKind::Improved && kind != UnitKind::Trad && kind != UnitKind::Halfspace)
+  // No hardware (the CPU baselines).
+  if (kind != UnitKind::Improved && kind != UnitKind::Trad && kind != UnitKind::Halfspace &&
+      kind != UnitKind::Improved2)
     return a;
   // What synthesis fixes: FIFO 8; no truncation (improved); TileSize and walk (half-space); N:
   // the row's.

@@ -9,14 +9,15 @@
 
 namespace trirast {
 
-// Improved2: the second-generation improved unit (improved2-* engines, docs/gen2-design.md); its
-// RTL is the study prototype of scripts/gen2_study/, which scripts/synth.sh does not synthesize and
-// which has no width formula: its area is unknown.
+// Improved2: the second-generation improved unit (improved2-* engines, rtl/trirast_improved2.f,
+// docs/gen2-design.md); scripts/synth.sh synthesizes it at the default widths (and the distributed
+// sweep's synthesis jobs at others); it has no width formula: elsewhere its area is unknown.
 enum class UnitKind { Improved, Trad, Halfspace, Improved2, Cpu, Golden };
 const char* unit_kind_name(UnitKind k);
-// The unit's name in docs/synth.csv for a configuration: "improved", "trad", or the half-space
-// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S); "" for no hardware
-// and for the second-generation unit (not synthesized by scripts/synth.sh).
+// The unit's name in docs/synth.csv for a configuration: "improved", "trad", the half-space
+// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S), the second-generation
+// unit's "improved2" (radix-16 corner form) or "improved2-products" (the products form); "" for no
+// hardware.
 std::string synth_unit_name(UnitKind k, const RasterConfig& cfg);
 
 struct Area {
@@ -58,8 +59,8 @@ class AreaModel {
   // Area of one configuration of a unit. Synthesis covers improved units with N = 1, FIFO 8 and no
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL), and the
   // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, zigzag), per
-  // stamp size. The half-space unit has no width formula: elsewhere its area is unknown. The
-  // second-generation unit's area is always unknown (its study prototype is not synthesized here).
+  // stamp size, and the second-generation unit per corner form (FIFO 8, N = 1). The half-space and
+  // second-generation units have no width formula: elsewhere their area is unknown.
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
   // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a

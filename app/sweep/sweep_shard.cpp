@@ -430,20 +430,23 @@ std::string synth_todo(const std::vector<SweepPoint>& points,
     const UnitKind k = points[p].kind();
     if (s.whatif_cycles || s.whatif_area) no_rtl.push_back(points[p].label());
     if (!points[p].rtl() || !s.area.known() || s.area.from_run) continue;
-    // The sweep's synthesis jobs build the improved and traditional units at given widths; the
-    // half-space unit's area comes from docs/synth.csv (scripts/synth.sh, per stamp size).
+    // The sweep's synthesis jobs build the improved, traditional and second-generation units at
+    // given widths; the half-space unit's area comes from docs/synth.csv (scripts/synth.sh, per
+    // stamp size).
+
     if (k == UnitKind::Halfspace) continue;
     // The default configurations of both units: the estimate's calibration point and the
     // improved-vs-traditional area comparison.
     const bool reference = c.subpixel_bits == def.subpixel_bits &&
                            c.coord_int_bits == def.coord_int_bits &&
                            (k == UnitKind::Trad ||
-                            (c.box_bits == def.box_bits && c.endpoints == 1));
+                            (c.box_bits == def.box_bits && c.endpoints == 1)) &&
+                           k != UnitKind::Improved2;  // a reference of the first generation
     if (!(s.pareto_cycles || s.pareto_area || reference)) continue;
-    const std::string line = std::string(unit_kind_name(k)) + ":" +
+    const std::string line = synth_unit_name(k, c) + ":" +
                              std::to_string(c.subpixel_bits) + ":" +
                              std::to_string(c.coord_int_bits) + ":" +
-                             std::to_string(k == UnitKind::Improved ? c.box_bits : 14) + ":" +
+                             std::to_string(k == UnitKind::Trad ? 14 : c.box_bits) + ":" +
                              std::to_string(k == UnitKind::Improved ? c.endpoints : 1);
     if (seen.insert(line).second) out += line + "\n";
   }

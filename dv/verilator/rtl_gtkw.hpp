@@ -37,7 +37,8 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
   save.window_start = start;
   save.window_end = end;
   save.time_factor = 100;  // timescale 100ps: GTKWave counts in ps
-  save.filters.push_back(GtkwSave::Filter{"setup_state", states.setup});
+  // (A unit without a setup state register, the second generation's pipelined setup, has none.)
+  if (!states.setup.empty()) save.filters.push_back(GtkwSave::Filter{"setup_state", states.setup});
   save.filters.push_back(GtkwSave::Filter{"walk_state", states.walk});
   // The edge lane's phase (rtl/trirast_edge_lane.sv, localparams).
   save.filters.push_back(GtkwSave::Filter{

@@ -43,10 +43,11 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     return fail("--subpixel-bits/--coord-bits/--box-bits",
                 std::to_string(cfg.subpixel_bits) + ":" + std::to_string(cfg.coord_int_bits) +
                     ":" + std::to_string(cfg.box_bits),
-                "the default widths only");
-  int max_n = 0, max_depth = 0;
+                "no build of these widths");
+  int max_n = 0, max_depth = 0;  // the largest N and depth of these widths and this form
   for (const RtlBuild& b : builds)
-    if (b.corner_form == cfg.g2_corner_form) {
+    if (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
+        b.box_bits == cfg.box_bits && b.corner_form == cfg.g2_corner_form) {
       max_n = std::max(max_n, b.endpoints);
       max_depth = std::max(max_depth, b.fifo_depth);
     }
@@ -55,7 +56,7 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
   if (max_n > 0)
     return fail("--fifo-depth", std::to_string(cfg.fifo_depth),
                 "from --endpoints up to " + std::to_string(max_depth));
-  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form");
+  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form at these widths");
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Opens the SystemC models' (improved-sc, improved2-sc) and the RTL's traces through their .gtkw save files in GTKWave,
+# Opens the SystemC models' (improved-sc, improved2-sc) and the RTLs' (improved-rtl, improved2-rtl)
+# traces through their .gtkw save files in GTKWave,
 # headless under Xvfb, FROM ANOTHER WORKING DIRECTORY than the one trirast wrote them in, and
 # checks that each loads: exit status 0, nothing on stderr about the dump or the translate
 # filters, and every signal the save file lists is displayed (a name GTKWave does not find is
@@ -7,7 +8,7 @@
 # path is broken must fail to load, and one whose filter path is broken must complain.
 #
 #   tests/gtkwave/gtkwave_open.sh TRIRAST                 # the test (ctest gtkwave_open_traces)
-#   tests/gtkwave/gtkwave_open.sh TRIRAST --screenshot DIR   # also DIR/gtkwave-{model,model2,rtl}.png
+#   tests/gtkwave/gtkwave_open.sh TRIRAST --screenshot DIR   # also DIR/gtkwave-{model,model2,rtl,rtl2}.png
 set -euo pipefail
 bin="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
 shots=""
@@ -26,6 +27,8 @@ mkdir -p "$work/run/traces" "$work/elsewhere"
  "$bin" raster --scene builtin:mixed --engine improved2-sc --trace traces/model2.vcd \
    --trace-tris 100:104 >/dev/null &&
  "$bin" raster --scene builtin:mixed --engine improved-rtl --trace traces/rtl.fst \
+   --trace-tris 100:104 >/dev/null &&
+ "$bin" raster --scene builtin:mixed --engine improved2-rtl --trace traces/rtl2.fst \
    --trace-tris 100:104 >/dev/null)
 
 cat >"$work/count.tcl" <<'EOF'
@@ -43,7 +46,7 @@ open_gtkw() {
   err="$(cat "$work/err")"
 }
 
-for name in model model2 rtl; do
+for name in model model2 rtl rtl2; do
   gtkw="../run/traces/$name.gtkw"
   open_gtkw "$gtkw"
   listed=$(grep -c -v -e '^[-@^[*]' "$work/run/traces/$name.gtkw" || true)
@@ -89,7 +92,7 @@ import -window root "$2"
 kill "$pid"
 EOF
   chmod +x "$work/shot.sh"
-  for name in model model2 rtl; do
+  for name in model model2 rtl rtl2; do
     (cd "$work/elsewhere" && timeout 120 xvfb-run -a -s "-screen 0 1280x800x24" \
        "$work/shot.sh" "../run/traces/$name.gtkw" "$shots/gtkwave-$name.png")
     echo "wrote $shots/gtkwave-$name.png"
