@@ -41,16 +41,17 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     list(APPEND _builds
       "improved:trirast_top:TRIRAST_RTL_SOURCES:_${_c}:${_c}:${endpoints}:${depth}"
       "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_${_c}:${_c}:1:${depth}"
-      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_${_c}:${_c}:1:${depth}:1")
+      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_${_c}:${_c}:${endpoints}:${depth}:1")
   endforeach()
-  # The second-generation unit (engine improved2-rtl; N = 1): at the default widths both corner
-  # forms (the entry's 8th field, CornerForm: 1 radix 16, 0 products), at the synthesized depth
-  # and at DEPTH; at the other widths (above) its default form, radix 16, at DEPTH.
+  # The second-generation unit (engine improved2-rtl): at the default widths both corner forms
+  # (the entry's 8th field, CornerForm: 1 radix 16, 0 products), at the synthesized size (N = 1,
+  # DEPTH = 8) and at the maximums (N = ENDPOINTS, DEPTH; cfg_endpoints_i picks n <= N); at the
+  # other widths (above) its default form, radix 16, at the maximums.
   list(APPEND _builds
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
-    "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES::default:1:${depth}:1"
+    "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES::default:${endpoints}:${depth}:1"
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
-    "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products:default:1:${depth}:0")
+    "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products:default:${endpoints}:${depth}:0")
   list(APPEND _builds
     "halfspace:trirast_hs_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1"
     "halfspace:trirast_hs_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0"
@@ -118,8 +119,13 @@ function(trirast_add_rtl_builds)
                   --probe probe_band_load_o 1 u_dut.band_load
                   --probe probe_push_o 1 u_dut.push)
     elseif(_unit_top STREQUAL "trirast_improved2_top")
-      # Whether L's job is tiny (the 2x2 test decided its rows): the model's tiny_boxes.
-      set(_probes --probe probe_job_tiny_o 1 u_dut.l_tiny_q)
+      # Whether L's job is tiny (the 2x2 test decided its rows): the model's tiny_boxes. The walk
+      # stage's group (its first row, the box's last row, whether its job is tiny and has a span
+      # in row 1): the rows each group goes through (rows_visited).
+      set(_probes --probe probe_job_tiny_o 1 u_dut.l_tiny_q
+                  --probe probe_walk_row_o trirast_pkg::RowBits u_dut.u_walk.row_q
+                  --probe probe_walk_ymax_o trirast_pkg::BoxBits u_dut.u_walk.ymax_q
+                  --probe probe_walk_tiny_o 2 "{u_dut.u_walk.tiny_q, u_dut.u_walk.tvalid_q[1]}")
     elseif(_unit_top STREQUAL "trirast_trad_top")
       set(_probes --probe probe_long_step_o 1 u_dut.u_walk.long_step
                   --probe probe_short_step_o 1 u_dut.u_walk.short_step)
@@ -179,7 +185,7 @@ function(trirast_add_rtl_builds)
     elseif(_unit STREQUAL "halfspace")
       list(APPEND _params -GStampSize=${_stamp} -GTileSize=${_tile} "-GWalkZigzag=1'b${_z}")
     elseif(_unit STREQUAL "improved2")
-      list(APPEND _params -GCornerForm=${_form})
+      list(APPEND _params -GCornerForm=${_form} -GNumEndpoints=${_n})
     endif()
     # -Wall: the build fails on any lint warning. --assert: the assertions of rtl/
     # (trirast_assert.svh) run, and a failing one stops the model with its name.

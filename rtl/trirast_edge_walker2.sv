@@ -18,8 +18,13 @@
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
 // the bound from the running registers, which hold the values loaded with the job until then (no
 // copies ex, ee, bex).
+// NumEndpoints N > 1 (the walk stage's N rows per cycle, docs/gen2-design.md section 8): the step
+// above is built N times in a chain, row r + 1 one step after row r (row 0: the registers), as
+// rtl/trirast_edge_walker.sv's chain; the walker presents rows j .. j + N - 1 and advances by the
+// runtime group size adv_rows_i (1..N; N = 1: one row, adv_rows_i unused).
 module trirast_edge_walker2 #(
-  parameter bit CarrySelect = 1'b1
+  parameter bit CarrySelect = 1'b1,
+  parameter int NumEndpoints = 1   // rows presented per cycle (hardware)
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -37,9 +42,11 @@ module trirast_edge_walker2 #(
   input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,
   input  logic [trirast_pkg::BoxBits-1:0]      xmax_i,
   input  logic                                 adv_i,
+  input  logic [2:0]                           adv_rows_i,   // rows per group (1..N)
   output logic                                 mirror_o,
-  output logic [1:0]                           row_state_o,
-  output logic [trirast_pkg::BoxBits:0]        row_bound_o   // the restored bound (when bound)
+  output logic [2*NumEndpoints-1:0]            row_state_o,  // row j + r: state
+  output logic [NumEndpoints*(trirast_pkg::BoxBits+1)-1:0] row_bound_o  // row j + r: the
+                                                                         // restored bound
 );
   localparam int RB = trirast_pkg::RemBits;
   localparam int WB = trirast_pkg::RowBits;
@@ -57,36 +64,93 @@ module trirast_edge_walker2 #(
   logic signed [RB+1:0] dea_q, deb_q, e_q, e_d;                // e in RB + 2 signed bits
   logic [RB-1:0] ee_q;
 
-  // ---- the step: all in parallel ----
-  logic signed [RB+1:0] ea, eb;
-  logic signed [XB-1:0] xs, bs;
-  logic ga, gb, selb, leave;
-  assign ea = e_q + dea_q;
-  assign eb = e_q + deb_q;
-  assign ga = x_q >= tha_q;          // the leave test of xa (dir -: negated)
-  assign gb = x_q >= thb_q;
-  assign selb = dir_q ? !eb[RB+1] : ea[RB+1];
-  assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
-  if (CarrySelect) begin : g_cs
-    logic signed [XB-1:0] xa, xb, ba, bb;
-    assign xa = x_q + inca_q;
-    assign xb = x_q + incb_q;
-    assign ba = bx_q + binca_q;
-    assign bb = bx_q + bincb_q;
-    assign xs = selb ? xb : xa;
-    assign bs = selb ? bb : ba;
-  end else begin : g_ci
-    // inca_q / binca_q hold inc_m; incb_q / bincb_q are unused (the carry-in below).
-    logic [XB:0] xsum, bsum;
-    logic tx, tbx;
-    assign tx   = dir_q ? selb : !selb;
-    assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
-    assign xsum = {x_q, 1'b1} + {inca_q, tx};
-    assign bsum = {bx_q, 1'b1} + {binca_q, tbx};
-    assign xs = $signed(xsum[XB:1]);
-    assign bs = $signed(bsum[XB:1]);
-    logic unused_ci;
-    assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
+  // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
+  logic [1:0] st_r [0:NumEndpoints] /* verilator split_var */;
+  logic signed [XB-1:0] x_r [0:NumEndpoints] /* verilator split_var */;
+  logic signed [XB-1:0] bx_r [0:NumEndpoints] /* verilator split_var */;
+  logic signed [RB+1:0] e_r [0:NumEndpoints] /* verilator split_var */;
+  logic [WB-1:0] cnt_r [0:NumEndpoints] /* verilator split_var */;
+  logic ent_r [0:NumEndpoints] /* verilator split_var */;
+  assign st_r[0]  = st_q;
+  assign x_r[0]   = x_q;
+  assign bx_r[0]  = bx_q;
+  assign e_r[0]   = e_q;
+  assign cnt_r[0] = cnt_q;
+  assign ent_r[0] = ent_q;
+
+  for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
+    logic signed [RB+1:0] ea, eb;
+    logic signed [XB-1:0] xs, bs;
+    logic ga, gb, selb, leave;
+    assign ea = e_r[r] + dea_q;
+    assign eb = e_r[r] + deb_q;
+    assign ga = x_r[r] >= tha_q;          // the leave test of xa (dir -: negated)
+    assign gb = x_r[r] >= thb_q;
+    assign selb = dir_q ? !eb[RB+1] : ea[RB+1];
+    assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
+    if (CarrySelect) begin : g_cs
+      logic signed [XB-1:0] xa, xb, ba, bb;
+      assign xa = x_r[r] + inca_q;
+      assign xb = x_r[r] + incb_q;
+      assign ba = bx_r[r] + binca_q;
+      assign bb = bx_r[r] + bincb_q;
+      assign xs = selb ? xb : xa;
+      assign bs = selb ? bb : ba;
+    end else begin : g_ci
+      // inca_q / binca_q hold inc_m; incb_q / bincb_q are unused (the carry-in below).
+      logic [XB:0] xsum, bsum;
+      logic tx, tbx;
+      assign tx   = dir_q ? selb : !selb;
+      assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
+      assign xsum = {x_r[r], 1'b1} + {inca_q, tx};
+      assign bsum = {bx_r[r], 1'b1} + {binca_q, tbx};
+      assign xs = $signed(xsum[XB:1]);
+      assign bs = $signed(bsum[XB:1]);
+      logic unused_ci;
+      assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
+    end
+
+    logic [1:0] st_n;
+    logic signed [XB-1:0] x_n, bx_n;
+    logic signed [RB+1:0] e_n;
+    always_comb begin
+      st_n = st_r[r];  x_n = x_r[r];  e_n = e_r[r];  bx_n = bx_r[r];
+      if (ent_r[r]) begin
+        // CarrySelect 0: X', e and the bound still hold the entry values loaded with the job
+        // (before its entry row an edge is out or clear, and only a bound row steps them).
+        st_n = est_q;
+        if (CarrySelect) begin
+          x_n = ex_q;  e_n = $signed({2'b00, ee_q});  bx_n = bex_q;
+        end
+      end else if (st_r[r] == RowBound) begin
+        x_n  = xs;
+        e_n  = selb ? eb : ea;
+        bx_n = bs;
+        st_n = leave ? (dir_q ? RowClear : RowOut) : RowBound;
+      end
+    end
+    assign st_r[r+1]  = st_n;
+    assign x_r[r+1]   = x_n;
+    assign bx_r[r+1]  = bx_n;
+    assign e_r[r+1]   = e_n;
+    assign cnt_r[r+1] = cnt_r[r] - 1'b1;
+    assign ent_r[r+1] = enters_q && (cnt_r[r] == WB'(1));
+  end
+  // Rows 1 .. N again, read by the advance's select (the chain above is indexed statically only,
+  // so Verilator splits it).
+  logic [1:0] st_c [1:NumEndpoints];
+  logic signed [XB-1:0] x_c [1:NumEndpoints];
+  logic signed [XB-1:0] bx_c [1:NumEndpoints];
+  logic signed [RB+1:0] e_c [1:NumEndpoints];
+  logic [WB-1:0] cnt_c [1:NumEndpoints];
+  logic ent_c [1:NumEndpoints];
+  for (genvar r = 1; r <= NumEndpoints; r++) begin : g_copy
+    assign st_c[r]  = st_r[r];
+    assign x_c[r]   = x_r[r];
+    assign bx_c[r]  = bx_r[r];
+    assign e_c[r]   = e_r[r];
+    assign cnt_c[r] = cnt_r[r];
+    assign ent_c[r] = ent_r[r];
   end
 
   always_comb begin
@@ -100,20 +164,12 @@ module trirast_edge_walker2 #(
       bx_d  = mirror_i ? $signed(XB'(xmax_i)) - entry_x_i : entry_x_i + 1'b1;
       st_d  = (enters_i && j_entry_i == '0) ? entry_state_i : (dir_down_i ? RowOut : RowClear);
     end else if (adv_i) begin
-      cnt_d = cnt_q - 1'b1;
-      ent_d = enters_q && (cnt_q == WB'(1));
-      if (ent_q) begin
-        // CarrySelect 0: X', e and the bound still hold the entry values loaded with the job
-        // (before its entry row an edge is out or clear, and only a bound row steps them).
-        st_d = est_q;
-        if (CarrySelect) begin
-          x_d = ex_q;  e_d = $signed({2'b00, ee_q});  bx_d = bex_q;
+      // Advance by the group: row j + adv_rows (N = 1: row j + 1).
+      for (int r = 1; r <= NumEndpoints; r++) begin
+        if (NumEndpoints == 1 || 32'(adv_rows_i) == r) begin
+          st_d = st_c[r];  x_d = x_c[r];  e_d = e_c[r];  bx_d = bx_c[r];
+          cnt_d = cnt_c[r];  ent_d = ent_c[r];
         end
-      end else if (st_q == RowBound) begin
-        x_d  = xs;
-        e_d  = selb ? eb : ea;
-        bx_d = bs;
-        st_d = leave ? (dir_q ? RowClear : RowOut) : RowBound;
       end
     end
   end
@@ -172,8 +228,12 @@ module trirast_edge_walker2 #(
     end
   end
 
-  assign mirror_o    = mirror_q;
-  assign row_state_o = st_q;
-  assign row_bound_o = bx_q[BB:0];
+  assign mirror_o = mirror_q;
+  for (genvar r = 0; r < NumEndpoints; r++) begin : g_out
+    assign row_state_o[2*r +: 2]       = st_r[r];
+    assign row_bound_o[r*(BB+1) +: BB+1] = bx_r[r][BB:0];
+  end
+  logic unused_rows;
+  assign unused_rows = ^adv_rows_i;   // N = 1: one row per advance
 
 endmodule

@@ -2,8 +2,10 @@
 // for the cycle contract its SystemC model improved2-sc follows, and docs/rtl.md): the paper's
 // adder-based divider, boundary traversal, Bresenham stepping with remainder accumulation and span
 // generation, rebuilt as a pipeline of four stages so the next triangle's box and corner values are
-// formed while the lanes and the walk stage work. N = 1, boundary mode step, adaptive divider
-// (build choices here: no cfg ports for them). Triangle port and span port as rtl/trirast_top.sv's;
+// formed while the lanes and the walk stage work. Boundary mode step, adaptive divider (build
+// choices here: no cfg ports for them). NumEndpoints N: the walk stage's rows per cycle (1, 2, 4;
+// cfg_endpoints_i = n <= N at run time, as rtl/trirast_top.sv's; with N = 1 cfg_endpoints_i is
+// unused). Triangle port and span port as rtl/trirast_top.sv's;
 // the corner values are vertex-relative, E = A*(cx - vx) + B*(cy - vy) (tri_c_i is read only with
 // E2Sum).
 //
@@ -20,11 +22,12 @@
 //       pixel centres loads the three edge lanes (trirast_edge_lane2: normalizer, adder-based
 //       divider, boundary traversal) in the same cycle; the job is handed off when the lanes are
 //       done (a tiny box: at once).
-//   [W] the walk stage (trirast_walk_stage2: three edge walkers, the span generator, a registered
-//       push with its credit against cfg_fifo_depth_i), span FIFO -> span port.
+//   [W] the walk stage (trirast_walk_stage2: three edge walkers presenting n rows, a span
+//       generator per row, a registered push of up to n spans with its credit against
+//       cfg_fifo_depth_i), span FIFO (n push ports) -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
-// FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram); WalkerCs 0, the walkers'
+// FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has flip-flops); WalkerCs 0, the walkers'
 // carry-in step; SignFold 1, the serial corner unit's signs on the multiplicands; ElReg 1
 // (CornerForm 1 only), the lanes load E_L from its register and the 2x2 test reads the
 // accumulator; TestHi 1, the 2x2 test on E_L >> F and A, B; E2Sum (CornerForm 1 only), edge 2's E
@@ -33,6 +36,7 @@
 `include "trirast_assert.svh"
 
 module trirast_improved2_top #(
+  parameter int NumEndpoints = trirast_pkg::DefaultEndpoints,  // rows per cycle (hardware)
   parameter int FifoDepth  = trirast_pkg::DefaultFifoDepth,
   parameter int CornerForm = 1,  // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
   parameter bit FifoRam    = 1'b1,
@@ -55,6 +59,7 @@ module trirast_improved2_top #(
   input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
   input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
+  input  logic [2:0]                            cfg_endpoints_i,  // --endpoints (<= NumEndpoints)
   input  logic                                  tri_valid_i,
   output logic                                  tri_ready_o,
   input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
@@ -383,7 +388,9 @@ module trirast_improved2_top #(
   // ---------------------------------------------------------------- W: walk stage, FIFO
   logic walk_busy;
   logic [TB+3*PB:0] span;
-  trirast_walk_stage2 #(.FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_walk (
+  trirast_walk_stage2 #(
+    .FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .NumEndpoints (NumEndpoints)
+  ) u_walk (
     .clk_i (clk_i), .rst_ni (rst_ni),
     .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
     .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),
@@ -395,7 +402,7 @@ module trirast_improved2_top #(
     .hand_entry_e_i (hand_entry_e),
     .hand_tiny_i (l_tiny_q), .hand_tiny_valid_i (l_tvalid_q),
     .hand_tiny_begin_i (l_tbegin_q), .hand_tiny_end1_i (l_tend1_q),
-    .cfg_fifo_depth_i (cfg_fifo_depth_i),
+    .cfg_fifo_depth_i (cfg_fifo_depth_i), .cfg_endpoints_i (cfg_endpoints_i),
     .span_ready_i (span_ready_i), .span_valid_o (span_valid_o), .span_o (span),
     .busy_o (walk_busy), .walk_o (walk_busy_o), .stall_o (walk_stall_o), .last_o (walk_last_o),
     .retire_o (walk_retire_o), .tag_o (walk_tag_o), .fifo_count_o (fifo_count_o));
@@ -419,6 +426,11 @@ module trirast_improved2_top #(
   // Protocol assumptions and invariants.
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i >= CountBits'(1) &&
           32'(cfg_fifo_depth_i) <= FifoDepth, clk_i, !rst_ni)
+  // N > 1: 1 <= n <= N and n <= DEPTH (a larger n would overflow the walk stage or the FIFO).
+  `ASSERT(CfgEndpointsInRange_A, NumEndpoints == 1 || (cfg_endpoints_i >= 3'd1 &&
+          32'(cfg_endpoints_i) <= NumEndpoints && 32'(cfg_fifo_depth_i) >= 32'(cfg_endpoints_i)),
+          clk_i, !rst_ni)
+  `ASSERT_INIT(NumEndpointsInRange_A, NumEndpoints >= 1 && NumEndpoints <= 4)
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
                  {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i, !rst_ni)
   `ASSERT(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o) |-> tri_valid_i, clk_i, !rst_ni)

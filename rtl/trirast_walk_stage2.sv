@@ -9,10 +9,20 @@
 // Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
 // FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops;
 // WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder each).
+// NumEndpoints N (docs/gen2-design.md section 8, "W"): each walk cycle processes a group of
+// n = cfg_endpoints_i rows (1..N; N = 1: one row, cfg_endpoints_i unused), as
+// rtl/trirast_walk_stage.sv does: the walkers present rows j .. j + N - 1 (a chain of steps), one
+// span generator per row, and the registered push holds up to n spans, pushed together through the
+// span FIFO's n push ports (trirast_span_fifo, rows packed in order). A group goes in a cycle when
+// count + (the spans in the push register) + n <= DEPTH (N = 1: count + push < DEPTH). The last
+// group is the one reaching past Ymax; its rows past Ymax push nothing. A tiny job's rows 0 and 1
+// are one group when n >= 2 (n = 1: as above, row 1 only when it has a span). FifoRam applies
+// to N = 1 only (the block RAM FIFO has one write port): with N > 1 the FIFO is in flip-flops.
 module trirast_walk_stage2 #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
   parameter bit FifoRam   = 1'b0,
   parameter bit WalkerCs  = 1'b1,
+  parameter int NumEndpoints = 1,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
   input  logic                                  clk_i,
@@ -40,14 +50,15 @@ module trirast_walk_stage2 #(
   input  logic [1:0]                            hand_tiny_begin_i,  // row j: x_begin - x0 (0, 1)
   input  logic [1:0]                            hand_tiny_end1_i,   // row j: x_end - x0 - 1 (0, 1)
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i,   // room: entries + push < this
+  input  logic [2:0]                            cfg_endpoints_i,    // n: rows per group (1..N)
   input  logic                                  span_ready_i,
   output logic                                  span_valid_o,
   output logic [trirast_pkg::TagBits+3*trirast_pkg::PixBits:0] span_o,
   output logic                                  busy_o,
   // ---- observation ----
   output logic                                  walk_o,     // a job walks
-  output logic                                  stall_o,    // ... and its row waits for room
-  output logic                                  last_o,     // its last row goes
+  output logic                                  stall_o,    // ... and its group waits for room
+  output logic                                  last_o,     // its last group goes
   output logic                                  retire_o,   // ... and the job had no span
   output logic [trirast_pkg::TagBits-1:0]       tag_o,
   output logic [CountBits-1:0]                  fifo_count_o
@@ -62,22 +73,36 @@ module trirast_walk_stage2 #(
   localparam int TB = trirast_pkg::TagBits;
   localparam int EntryBits = TB + 3 * PB + 1;
 
+  localparam int NB = NumEndpoints;
+  localparam int PushBits = $clog2(NB + 1);
+
   logic walk_q, walk_d, load, go, last;
   logic [TB-1:0] tag_q;
   logic [PB-1:0] x0_q, y0_q;
   logic [BB-1:0] xmax_q, ymax_q;
   logic [WB-1:0] row_q, row_d;
   logic [2:0] mirror;
-  logic [5:0] st;
-  logic [3*(BB+1)-1:0] bnd;
+  logic [3*2*NB-1:0] st;             // walker k, row r: [2*(k*NB + r) +: 2]
+  logic [3*NB*(BB+1)-1:0] bnd;        // walker k, row r: [(k*NB + r)*(BB+1) +: BB+1]
   logic tiny_q;
   logic [1:0] tvalid_q, tbegin_q, tend1_q;
-  logic tv, tb, te1;
+  logic [2:0] n;          // rows per group
+  logic [1:0] n1;         // n - 1
+
+  if (NB == 1) begin : g_n1
+    assign n  = 3'd1;
+    assign n1 = 2'd0;
+    logic unused_n;
+    assign unused_n = ^cfg_endpoints_i;
+  end else begin : g_nn
+    assign n  = cfg_endpoints_i;
+    assign n1 = 2'(cfg_endpoints_i - 3'd1);
+  end
 
   assign load = !walk_q && hand_valid_i;
 
   for (genvar k = 0; k < 3; k++) begin : g_walker
-    trirast_edge_walker2 #(.CarrySelect (WalkerCs)) u_walker (
+    trirast_edge_walker2 #(.CarrySelect (WalkerCs), .NumEndpoints (NB)) u_walker (
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       .load_i        (load),
@@ -94,38 +119,73 @@ module trirast_walk_stage2 #(
       .entry_e_i     (hand_entry_e_i[k*RB +: RB]),
       .xmax_i        (hand_xmax_i),
       .adv_i         (go),
+      .adv_rows_i    (n),
       .mirror_o      (mirror[k]),
-      .row_state_o   (st[2*k +: 2]),
-      .row_bound_o   (bnd[k*(BB+1) +: BB+1])
+      .row_state_o   (st[k*2*NB +: 2*NB]),
+      .row_bound_o   (bnd[k*NB*(BB+1) +: NB*(BB+1)])
     );
   end
 
-  logic gvalid;
-  logic [BB:0] gbegin, gend;
-  trirast_span_generator2 u_gen (
-    .state_i  (st),
-    .bound_i  (bnd),
-    .mirror_i (mirror),
-    .xmax_i   (xmax_q),
-    .valid_o  (gvalid),
-    .begin_o  (gbegin),
-    .end_o    (gend)
-  );
-
-  // The registered push and its credit.
-  logic push_q, push_d;
-  logic [EntryBits-1:0] data_q, data_d;
+  // The registered push (up to n spans) and its credit.
+  logic [NB-1:0] push_q, push_d;
+  logic [NB*EntryBits-1:0] data_q, data_d;
   logic [CountBits-1:0] count;
-  assign tv  = row_q[0] ? tvalid_q[1] : tvalid_q[0];
-  assign tb  = row_q[0] ? tbegin_q[1] : tbegin_q[0];
-  assign te1 = row_q[0] ? tend1_q[1] : tend1_q[0];
-  assign go   = walk_q && ((CountBits + 1)'(count) + (CountBits + 1)'(push_q) <
-                           (CountBits + 1)'(cfg_fifo_depth_i));
-  assign last = go && ((row_q == WB'(ymax_q)) || (tiny_q && !tvalid_q[1]));
-  assign push_d = go && (tiny_q ? tv : gvalid);
-  assign data_d = tiny_q ?
-      {tag_q, y0_q + PB'(row_q), x0_q + PB'(tb), {1'b0, x0_q} + (PB + 1)'({te1, ~te1})} :
-      {tag_q, y0_q + PB'(row_q), x0_q + PB'(gbegin), {1'b0, x0_q} + (PB + 1)'(gend)};
+  logic room;
+  if (NB == 1) begin : g_room1
+    // count + push < DEPTH (written as the N = 1 unit always was: Yosys maps the general form
+    // below, with its + 0, to some 500 more iCE40 LUTs in the whole unit).
+    assign room = (CountBits + 1)'(count) + (CountBits + 1)'(push_q) <
+                  (CountBits + 1)'(cfg_fifo_depth_i);
+    logic unused_n1;
+    assign unused_n1 = ^n1;
+  end else begin : g_roomn
+    // count + pushes_q + n <= DEPTH, as count + pushes_q + (n - 1) < DEPTH (pushes_q: the spans
+    // in the push register).
+    logic [PushBits-1:0] pushes_q;
+    always_comb begin
+      pushes_q = '0;
+      for (int r = 0; r < NB; r++) pushes_q = pushes_q + PushBits'(push_q[r]);
+    end
+    assign room = (CountBits + 1)'(count) + (CountBits + 1)'(pushes_q) + (CountBits + 1)'(n1) <
+                  (CountBits + 1)'(cfg_fifo_depth_i);
+  end
+  assign go = walk_q && room;
+  // The last group reaches past Ymax (row j + n - 1 >= Ymax; N = 1: row j = Ymax); a tiny job's
+  // ends after row 0 when row 1 has no span.
+  logic past;
+  if (NB == 1) begin : g_last1
+    assign past = row_q == WB'(ymax_q);
+  end else begin : g_lastn
+    assign past = row_q + WB'(n1) >= WB'(ymax_q);
+  end
+  assign last = go && (past || (tiny_q && !tvalid_q[1]));
+
+  // One span generator per row of the group; row r is j + r.
+  for (genvar r = 0; r < NB; r++) begin : g_row
+    logic gvalid, tv, tb, te1, inbox;
+    logic [BB:0] gbegin, gend;
+    logic [WB-1:0] row_r;
+    trirast_span_generator2 u_gen (
+      .state_i  ({st[2*(2*NB + r) +: 2], st[2*(NB + r) +: 2], st[2*r +: 2]}),
+      .bound_i  ({bnd[(2*NB + r)*(BB+1) +: BB+1], bnd[(NB + r)*(BB+1) +: BB+1],
+                  bnd[r*(BB+1) +: BB+1]}),
+      .mirror_i (mirror),
+      .xmax_i   (xmax_q),
+      .valid_o  (gvalid),
+      .begin_o  (gbegin),
+      .end_o    (gend)
+    );
+    assign row_r = row_q + WB'(r);
+    assign tv  = row_r[0] ? tvalid_q[1] : tvalid_q[0];
+    assign tb  = row_r[0] ? tbegin_q[1] : tbegin_q[0];
+    assign te1 = row_r[0] ? tend1_q[1] : tend1_q[0];
+    // Rows of the group inside the box (N = 1: the row always is).
+    assign inbox = (NB == 1) || ((r < 32'(n)) && (row_r <= WB'(ymax_q)));
+    assign push_d[r] = go && inbox && (tiny_q ? tv : gvalid);
+    assign data_d[r*EntryBits +: EntryBits] = tiny_q ?
+        {tag_q, y0_q + PB'(row_r), x0_q + PB'(tb), {1'b0, x0_q} + (PB + 1)'({te1, ~te1})} :
+        {tag_q, y0_q + PB'(row_r), x0_q + PB'(gbegin), {1'b0, x0_q} + (PB + 1)'(gend)};
+  end
 
   always_comb begin
     walk_d = walk_q;
@@ -134,7 +194,7 @@ module trirast_walk_stage2 #(
       walk_d = 1'b1;
       row_d  = '0;
     end else if (go) begin
-      row_d = row_q + 1'b1;
+      row_d = row_q + WB'(n);
       if (last) walk_d = 1'b0;
     end
   end
@@ -142,7 +202,7 @@ module trirast_walk_stage2 #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       walk_q <= 1'b0;
-      push_q <= 1'b0;
+      push_q <= '0;
     end else begin
       walk_q <= walk_d;
       push_q <= push_d;
@@ -164,14 +224,14 @@ module trirast_walk_stage2 #(
     end
   end
 
-  if (FifoRam) begin : g_fifo_ram
+  if (FifoRam && NB == 1) begin : g_fifo_ram
     trirast_span_fifo_ram #(
       .FifoDepth (FifoDepth),
       .EntryBits (EntryBits)
     ) u_fifo (
       .clk_i   (clk_i),
       .rst_ni  (rst_ni),
-      .push_i  (push_q),
+      .push_i  (push_q[0]),
       .data_i  (data_q),
       .count_o (count),
       .valid_o (span_valid_o),
@@ -180,7 +240,7 @@ module trirast_walk_stage2 #(
     );
   end else begin : g_fifo_ff
     trirast_span_fifo #(
-      .NumEndpoints (1),
+      .NumEndpoints (NB),
       .FifoDepth    (FifoDepth),
       .EntryBits    (EntryBits)
     ) u_fifo (
@@ -199,16 +259,16 @@ module trirast_walk_stage2 #(
   logic any_q;
   always_ff @(posedge clk_i) begin
     if (load) any_q <= 1'b0;
-    else if (push_d) any_q <= 1'b1;
+    else if (push_d != '0) any_q <= 1'b1;
   end
   assign walk_o       = walk_q;
   assign stall_o      = walk_q && !go;
   assign last_o       = last;
-  assign retire_o     = last && !any_q && !push_d;
+  assign retire_o     = last && !any_q && (push_d == '0);
   assign tag_o        = tag_q;
   assign fifo_count_o = count;
 
   assign hand_ready_o = !walk_q;
-  assign busy_o = walk_q || push_q;   // a job walks, or its last span is in the push register
+  assign busy_o = walk_q || (push_q != '0);   // a job walks, or its last spans are in the push register
 
 endmodule

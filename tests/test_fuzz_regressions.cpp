@@ -261,18 +261,17 @@ TEST(FuzzDifferential, GeneratedScenesOnEveryExactEngine) {
   EXPECT_GT(triangles, 60000u);
   EXPECT_GT(pixels, 1000000u);
   // Only the engines built for fixed widths skip (the half-space one never for its stamp, tile
-  // or walk: they are drawn among its builds), and the gen2 model and RTL, built for N = 1 only
-  // (the scenes drawn with N = 2, 4); they still run a good share of the scenes.
+  // or walk: they are drawn among its builds; improved2-rtl has the widths of improved-rtl's
+  // builds, at every N and depth); they still run a good share of the scenes.
   for (const auto& [engine, n] : skipped) {
-    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl" || engine == "improved2-sc" ||
-                engine == "improved2-rtl")
+    EXPECT_TRUE(engine == "improved-rtl" || engine == "halfspace-rtl" || engine == "improved2-rtl")
         << engine;
-    // improved2-rtl: its builds' widths (two scenes in five and some of the rest) at N = 1 (a
-    // third of those).
-    EXPECT_LT(n, 3000 * (engine == "improved2-rtl" ? 9 : 7) / 10) << engine;
+    EXPECT_LT(n, 3000 * 7 / 10) << engine;
   }
   EXPECT_GT(hs_scenes, 600u);
   EXPECT_LT(skipped["halfspace-rtl"], hs_scenes * 7 / 10);
+  // improved2-rtl covers every N and depth: it skips the scenes improved-rtl skips, no more.
+  EXPECT_EQ(skipped["improved2-rtl"], skipped["improved-rtl"]);
 }
 
 TEST(FuzzDifferential, CheckerCatchesWrongEnginesAndReducesToTheCulprit) {
@@ -359,11 +358,10 @@ TEST(FuzzCli, ShortRunOverAllEnginesAgreesAndReportsProgress) {
   EXPECT_GE(count_lines(r.err), 3);
   EXPECT_NE(r.out.find("0 disagreements"), std::string::npos) << r.out;
   EXPECT_EQ(dir.entry_count(), 0);
-  // With improved-rtl among the engines, the widths are its builds': no scene skips it. Only
-  // improved2-sc and improved2-rtl (N = 1 only) skip the scenes drawn with N = 2, 4.
+  // With improved-rtl among the engines, the widths are its builds': no scene skips it, nor any
+  // other engine (improved2-rtl has builds of the same widths, at every N).
   EXPECT_NE(r.err.find("widths of the RTL builds"), std::string::npos) << r.err;
-  EXPECT_FALSE(std::regex_search(r.out, std::regex("skipped +(?! |improved2-sc:|improved2-rtl:)")))
-      << r.out;
+  EXPECT_FALSE(std::regex_search(r.out, std::regex("skipped +[^ ]"))) << r.out;
 }
 
 TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {

@@ -29,7 +29,10 @@ struct Improved2Ports {
   // No setup state register; the walk stage's walk_q (idle, walking).
   static inline const UnitStates kStates = {{}, kWalkStageStates};
 
-  void configure(Top&, const RasterConfig&) {}
+  void configure(Top& top, const RasterConfig& cfg) {
+    top.cfg_endpoints_i = uint32_t(cfg.endpoints);
+    endpoints_ = unsigned(cfg.endpoints);
+  }
   void offer(Top& top, const TriangleSetup& t) const { drive_edge_triangle<P>(top, t); }
 
   TriangleCycles& at(std::vector<TriangleCycles>& cycles, uint64_t tag, const char* what) const {
@@ -92,6 +95,14 @@ struct Improved2Ports {
     for (int k = 0; k < 3; ++k) m.busy[kI2Lane0 + k] += (lanes >> k) & 1u;
     m.busy[kI2Walk] += top.walk_busy_o && !top.walk_stall_o;
     m.stall[kI2Walk] += top.walk_stall_o;
+    if (top.walk_busy_o && !top.walk_stall_o) {
+      // The rows the group goes through (the model's rows_visited): rows j .. j + n - 1 up to the
+      // job's last row, Ymax, or for a tiny job row 1 when it has a span, else row 0.
+      const unsigned tiny = top.probe_walk_tiny_o;  // {tiny job, row 1 has a span}
+      const uint64_t row = top.probe_walk_row_o;
+      const uint64_t last = (tiny & 2u) ? uint64_t(tiny & 1u) : uint64_t(top.probe_walk_ymax_o);
+      rows_ += std::min<uint64_t>(endpoints_, last + 1 - row);
+    }
   }
   void add_counters(const ModuleCycles& m, std::map<std::string, uint64_t>& work) const {
     work["busy_cycles.box_stage"] += m.busy[kI2Box];
@@ -107,13 +118,14 @@ struct Improved2Ports {
     work["empty_boxes"] += empty_;
     work["tiny_boxes"] += tiny_;
     work["lane_boxes"] += lanes_;
-    work["rows_visited"] += m.busy[kI2Walk];  // a row visited: one that goes
+    work["rows_visited"] += rows_;
   }
 
  private:
   enum : uint8_t { kSeenBox = 1, kSeenReady = 2 };
   std::vector<uint8_t> seen_;
-  uint64_t empty_ = 0, tiny_ = 0, lanes_ = 0;
+  uint64_t empty_ = 0, tiny_ = 0, lanes_ = 0, rows_ = 0;
+  unsigned endpoints_ = 1;  // n: rows per group (cfg_endpoints_i)
 };
 
 // Runs a scene through a fresh instance of build Top (widths P): checks every triangle against

@@ -1,5 +1,6 @@
 // The engine "improved2-rtl": picks the Verilated build of trirast_improved2_top of the run's
-// corner form with the smallest FIFO that covers its --fifo-depth (rtl_builds.hpp) and runs it
+// corner form with the smallest FIFO and N that cover its --fifo-depth and --endpoints
+// (rtl_builds.hpp; cfg_endpoints_i sets the run's N within the build's) and runs it
 // (improved2_harness.hpp: the ports; cycle_loop.hpp: the cycles).
 #include "rtl_improved2_engine.hpp"
 
@@ -28,16 +29,14 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
                                 how + "; built: " + describe_builds(builds, true) +
                                 "; add one in cmake/trirast_rtl_builds.cmake)");
   };
-  if (cfg.endpoints != 1)
-    return fail("--endpoints", std::to_string(cfg.endpoints), "the unit walks one row per cycle, N = 1");
   const RtlBuild* widths = nullptr;
   for (const RtlBuild& b : builds) {
     if (b.subpixel_bits != cfg.subpixel_bits || b.coord_int_bits != cfg.coord_int_bits ||
         b.box_bits != cfg.box_bits)
       continue;
     widths = &b;
-    if (b.corner_form == cfg.g2_corner_form && cfg.fifo_depth >= 1 &&
-        cfg.fifo_depth <= b.fifo_depth)
+    if (b.corner_form == cfg.g2_corner_form && cfg.fifo_depth >= cfg.endpoints &&
+        cfg.fifo_depth <= b.fifo_depth && cfg.endpoints >= 1 && cfg.endpoints <= b.endpoints)
       return b;
   }
   if (!widths)
@@ -45,13 +44,18 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
                 std::to_string(cfg.subpixel_bits) + ":" + std::to_string(cfg.coord_int_bits) +
                     ":" + std::to_string(cfg.box_bits),
                 "no build of these widths");
-  int depth = 0;  // the deepest build of these widths and this form
+  int max_n = 0, max_depth = 0;  // the largest N and depth of these widths and this form
   for (const RtlBuild& b : builds)
     if (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
-        b.box_bits == cfg.box_bits && b.corner_form == cfg.g2_corner_form)
-      depth = std::max(depth, b.fifo_depth);
-  if (depth > 0)
-    return fail("--fifo-depth", std::to_string(cfg.fifo_depth), "from 1 up to " + std::to_string(depth));
+        b.box_bits == cfg.box_bits && b.corner_form == cfg.g2_corner_form) {
+      max_n = std::max(max_n, b.endpoints);
+      max_depth = std::max(max_depth, b.fifo_depth);
+    }
+  if (max_n > 0 && cfg.endpoints > max_n)
+    return fail("--endpoints", std::to_string(cfg.endpoints), "up to " + std::to_string(max_n));
+  if (max_n > 0)
+    return fail("--fifo-depth", std::to_string(cfg.fifo_depth),
+                "from --endpoints up to " + std::to_string(max_depth));
   return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form at these widths");
 }
 

@@ -179,24 +179,34 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
     tr->value(sig_.w_state, h + 1, x.tiny ? kWalkTiny : kWalkLanes);
     tr->value(sig_.w_tri, h + 1, rec.tri);
   }
-  uint64_t t = h + 1, last = h;
-  for (const Improved2Row& row : x.rows) {
-    // The admission test: the FIFO's entries plus the push in flight (pushed in cycle t, whose
-    // span the FIFO model already holds) leave room for one more.
-    const uint64_t go = fifo.first_room(t, 1);
+  // Groups of N rows (--endpoints): rows g*N .. g*N + N - 1 of x.rows (a prefix of rows 0, 1, ...)
+  // go in one cycle and their spans are pushed together.
+  const int64_t N = int64_t(run_->cfg.endpoints);
+  uint64_t t = h + 1, last = h, groups = 0;
+  for (size_t i = 0; i < x.rows.size();) {
+    // The admission test: the FIFO's entries plus the spans in flight (pushed in cycle t, which
+    // the FIFO model already holds) leave room for N more.
+    const int64_t group = x.rows[i].row / N;
+    const uint64_t go = fifo.first_room(t, uint64_t(N));
     rec.stall_cycles += go - t;
+    bool pushed = false;
     if (tr) {
       if (go != t) {
         tr->value(sig_.w_stall, t, 1);
         tr->value(sig_.w_stall, go, 0);
       }
-      tr->value(sig_.w_row, go, uint64_t(row.row));
-      if (row.valid) {
-        tr->value(sig_.w_push, go + 1, 1);
-        tr->value(sig_.w_push, go + 2, 0);  // overridden by the next row's push in go + 2
-      }
+      tr->value(sig_.w_row, go, uint64_t(group * N));
     }
-    if (row.valid) fifo.push(row.span, pos, go + 1);  // registered, pushed in go + 1
+    for (; i < x.rows.size() && x.rows[i].row / N == group; ++i)
+      if (x.rows[i].valid) {
+        fifo.push(x.rows[i].span, pos, go + 1);  // registered, pushed in go + 1
+        pushed = true;
+      }
+    if (tr && pushed) {
+      tr->value(sig_.w_push, go + 1, 1);
+      tr->value(sig_.w_push, go + 2, 0);  // overridden by the next group's push in go + 2
+    }
+    ++groups;
     last = go;
     t = go + 1;
   }
@@ -205,7 +215,7 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
     tr->value(sig_.w_tri, last + 1, VcdRecorder::kX);
     tr->value(sig_.w_row, last + 1, VcdRecorder::kX);
   }
-  walk_stage.counters.busy += x.rows.size();
+  walk_stage.counters.busy += groups;
   walk_stage.counters.stall += rec.stall_cycles;
   rows_ += x.rows.size();
   return last;

@@ -1,6 +1,6 @@
 // The SystemC model of the second-generation improved unit (issue 13; docs/gen2-design.md, "The
 // C++ datapath and SystemC model"), cycle for cycle the whole-unit prototype
-// rtl/trirast_improved2_top.sv (N = 1):
+// rtl/trirast_improved2_top.sv (N = 1, 2, 4 rows per walk cycle):
 //
 //   source -> [B] box stage -> [C] corner stage (DSP or digit-serial) -> [L] job register + three
 //             lanes (or the direct 2x2 test's row spans) -> [W] walk stage, registered push ->
@@ -83,10 +83,12 @@ class G2JobStage : public sc_core::sc_module {
   uint64_t lane_busy[3] = {0, 0, 0};
 };
 
-// [W] The retimed walk stage (trirast_walk_stage2.sv): loaded in h, it processes one row per cycle from
-// h + 1, a row in the first cycle t in which count + push + 1 <= DEPTH (count: the FIFO's
-// occupancy at the start of t; push: the span registered in t - 1, pushed in t); a row's span is
-// registered and pushed into the FIFO in t + 1. Idle from the cycle after its last row.
+// [W] The retimed walk stage (trirast_walk_stage2.sv): loaded in h, it processes one group of N
+// rows (--endpoints; rows g*N .. g*N + N - 1) per cycle from h + 1, a group in the first cycle t in
+// which count + push + N <= DEPTH (count: the FIFO's occupancy at the start of t; push: the spans
+// registered in t - 1, pushed in t); a group's spans are registered and pushed into the FIFO
+// together in t + 1. A tiny job's rows 0 and 1 are one group when N >= 2. Idle from the cycle after
+// its last group.
 class G2WalkStage : public sc_core::sc_module {
  public:
   explicit G2WalkStage(sc_core::sc_module_name name) : sc_core::sc_module(name) {}

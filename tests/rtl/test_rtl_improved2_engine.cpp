@@ -3,7 +3,8 @@
 // triangle's cycles (accept, first span, done, stalls, the stage breakdown, the lanes' work, the
 // box) and the run's statistics equal its SystemC model improved2-sc's (docs/gen2-design.md,
 // section 8), in both corner forms, with the sink always ready and stalled, at several FIFO
-// depths, on the hard cases, the cycles table's scenes, random triangles and meshes. Nothing here
+// depths, at N = 1, 2 and 4 rows per walk cycle, on the hard cases, the cycles table's scenes,
+// random triangles and meshes. Nothing here
 // is a stored result: every expectation comes from running the golden and the model.
 #include <gtest/gtest.h>
 
@@ -34,11 +35,12 @@ EngineResult run_rtl(const SetupResult& setup, const RasterConfig& cfg, uint32_t
   return r;
 }
 
-RasterConfig cfg_with(int form, const std::string& sink, int depth) {
+RasterConfig cfg_with(int form, const std::string& sink, int depth, int endpoints = 1) {
   RasterConfig cfg;
   cfg.g2_corner_form = form;
   cfg.sink_stall = sink;
   cfg.fifo_depth = depth;
+  cfg.endpoints = endpoints;
   cfg.validate();
   return cfg;
 }
@@ -80,6 +82,8 @@ size_t expect_improved2(const SetupResult& setup, const RasterConfig& cfg, const
   int stats = 0;
   EXPECT_EQ(test::statistics_mismatch(sc.work, rtl.work, {}, stats), "") << what;
   EXPECT_GE(stats, 20) << what;
+  // The build that ran covers the run's N (cfg_endpoints_i sets it within the build's).
+  EXPECT_GE(rtl.work["rtl_build_fifo_depth"], uint64_t(cfg.fifo_depth)) << what;
   return setup.tris.size();
 }
 
@@ -160,12 +164,15 @@ TEST(RtlImproved2, ClippedViewport) {
 
 // The other widths of docs/synth.md's configurations (radix-16 form, the form built there):
 // small (S = 4, coordinates 12, box 10), wide (8, 20, 14), tiny (0, 8, 6: F = 1), hard cases and
-// random triangles, two sinks.
+// random triangles, two sinks; N = 1, and N = 4 with the stalling sink (those builds are at
+// the maximums, N = 4 and FIFO 1024).
 TEST(RtlImproved2, OtherWidths) {
   struct W { const char* name; int s, coord, box; };
+  struct R { const char* sink; int n; };
   for (const W& w : {W{"small", 4, 12, 10}, W{"wide", 8, 20, 14}, W{"tiny", 0, 8, 6}})
-    for (const char* sink : {"none", "random:7:30"}) {
-      RasterConfig cfg = cfg_with(1, sink, 8);
+    for (const R& run : {R{"none", 1}, R{"random:7:30", 1}, R{"random:7:30", 4}}) {
+      const char* sink = run.sink;
+      RasterConfig cfg = cfg_with(1, sink, 8, run.n);
       cfg.subpixel_bits = w.s;
       cfg.coord_int_bits = w.coord;
       cfg.box_bits = w.box;
@@ -174,9 +181,11 @@ TEST(RtlImproved2, OtherWidths) {
       cfg.validate();
       // hard-all's coordinates reach past tiny's 8-bit range: its sub-pixel cases there.
       const std::string hard = w.coord >= 12 ? "builtin:hard-all" : "builtin:hard-tiny";
-      expect_improved2(scene(hard, cfg), cfg, std::string(w.name) + " " + hard + " sink " + sink);
+      const std::string n = " N " + std::to_string(run.n);
+      expect_improved2(scene(hard, cfg), cfg,
+                       std::string(w.name) + " " + hard + " sink " + sink + n);
       expect_improved2(scene("builtin:random:count=1500,size=mixed,seed=8", cfg), cfg,
-                       std::string(w.name) + " random sink " + sink);
+                       std::string(w.name) + " random sink " + sink + n);
     }
 }
 
@@ -190,10 +199,47 @@ TEST(RtlImproved2, IndependentOfTheXSeed) {
     EXPECT_TRUE(test::same_cycles(a.cycles[p], b.cycles[p])) << p;
 }
 
-// What no build covers is refused by name: N > 1, other widths.
+// N = 2 and 4 (the maximal builds, cfg_endpoints_i): the hard cases in both corner forms under
+// three sinks (FIFO 8, and the smallest FIFO an N allows, DEPTH = N).
+TEST(RtlImproved2, HardCasesAtNTwoAndFour) {
+  for (int n : {2, 4})
+    for (int form : {0, 1})
+      for (const char* sink : kSinks)
+        for (int depth : {n, 8}) {
+          const RasterConfig cfg = cfg_with(form, sink, depth, n);
+          expect_improved2(scene("builtin:hard-all", cfg), cfg,
+                           "hard-all N " + std::to_string(n) + " form " + std::to_string(form) +
+                               " sink " + sink + " depth " + std::to_string(depth));
+        }
+}
+
+// N = 2 and 4: random triangles of every size class (tiny jobs among them: their rows 0 and 1
+// are one group) at FIFO depths N .. 1024, both forms, sinks ready, periodic and random.
+TEST(RtlImproved2, RandomTrianglesAtNTwoAndFour) {
+  size_t compared = 0;
+  for (int n : {2, 4})
+    for (int form : {0, 1})
+      for (int depth : {n, 5, 16, 1024}) {
+        const char* sink = depth == 16 ? "none" : depth == 5 ? "periodic:3:2" : "random:11:50";
+        const RasterConfig cfg = cfg_with(form, sink, depth, n);
+        compared += expect_improved2(scene("builtin:random:count=1500,size=mixed,seed=23", cfg),
+                                     cfg, "random N " + std::to_string(n) + " form " +
+                                              std::to_string(form) + " depth " +
+                                              std::to_string(depth) + " sink " + sink);
+      }
+  for (int n : {2, 4}) {
+    const RasterConfig cfg = cfg_with(1, "random:3:40", 4, n);
+    compared += expect_improved2(scene("builtin:random:count=3000,seed=8,size=tiny", cfg), cfg,
+                                 "random tiny N " + std::to_string(n));
+    compared += expect_improved2(scene("builtin:mixed", cfg), cfg, "mixed N " + std::to_string(n));
+  }
+  EXPECT_EQ(compared, 16u * 1500u + 2u * 3000u + 2u * 10320u);
+}
+
+// What no build covers is refused by name: other widths; and an N that is not 1, 2 or 4.
 TEST(RtlImproved2, RefusesWhatNoBuildCovers) {
-  auto refuses = [](RasterConfig cfg, const std::string& option) {
-    cfg.validate();
+  auto refuses = [](RasterConfig cfg, const std::string& option, bool valid = true) {
+    if (valid) cfg.validate();
     EngineResult r;
     try {
       rtl::run_rtl_improved2(SetupResult{}, cfg, rtl::RtlRunOptions{}, r);
@@ -202,9 +248,9 @@ TEST(RtlImproved2, RefusesWhatNoBuildCovers) {
       EXPECT_NE(std::string(e.what()).find(option), std::string::npos) << e.what();
     }
   };
-  RasterConfig n2;
-  n2.endpoints = 2;
-  refuses(n2, "--endpoints");
+  RasterConfig n3;
+  n3.endpoints = 3;
+  refuses(n3, "--endpoints", false);
   RasterConfig s5;
   s5.subpixel_bits = 5;  // no build (docs/synth.md: S = 8, 4, 0)
   refuses(s5, "--subpixel-bits");
