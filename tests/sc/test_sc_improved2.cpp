@@ -136,7 +136,9 @@ TEST(ScImproved2, WalkTakesOneCyclePerGroupOfNRows) {
       const bool is_tiny = c.box_width <= 2 && c.box_height <= 2;
       if (is_tiny) {
         ++tiny;
-        if (n >= 2) EXPECT_EQ(walk, 1u) << c.tri;
+        if (n >= 2) {
+          EXPECT_EQ(walk, 1u) << c.tri;
+        }
       } else {
         EXPECT_EQ(walk, (c.box_height + uint64_t(n) - 1) / uint64_t(n)) << c.tri;
         ++checked;
