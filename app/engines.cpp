@@ -35,12 +35,12 @@ const std::vector<EngineInfo>& engine_registry() {
        "(docs/gen2-design.md)",
        true, make_improved2_unit_engine},
       {"improved2-sc",
-       "second-generation improved unit, SystemC model: its spans plus cycles, N = 1 "
+       "second-generation improved unit, SystemC model: its spans plus cycles, N = 1, 2, 4 "
        "(docs/gen2-design.md)",
        true, make_improved2_model_engine, /*timed=*/true},
       {"improved2-rtl",
        "second-generation improved unit, Verilated RTL (rtl/trirast_improved2.f): improved2-sc's "
-       "spans and cycles, N = 1",
+       "spans and cycles",
        true, make_rtl_improved2_engine, /*timed=*/true},
       {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "

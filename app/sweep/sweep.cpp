@@ -167,7 +167,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     }
   };
   // The second-generation unit (only when --engines names it): the improved unit's width
-  // configurations that apply to it (N = 1, the only N improved2-sc models; no quotient
+  // configurations that apply to it (N = 1, as the improved unit's width axes; no quotient
   // truncation, fixed divider or divide boundary: the gen2 engines run step, adaptive,
   // untruncated) in both corner forms; the untimed datapath, whose spans the corner form does not
   // change, once per width. The improved unit's sweep keeps the default FIFO depth: so does this.

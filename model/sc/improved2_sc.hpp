@@ -1,6 +1,6 @@
 // The SystemC model of the second-generation improved unit (issue 13; docs/gen2-design.md, "The
-// C++ datapath and SystemC model"), cycle for cycle the whole-unit prototype
-// rtl/trirast_improved2_top.sv (N = 1, 2, 4 rows per walk cycle):
+// C++ datapath and SystemC model"), cycle for cycle the unit's RTL rtl/trirast_improved2.f
+// (N = 1, 2, 4 rows per walk cycle):
 //
 //   source -> [B] box stage -> [C] corner stage (DSP or digit-serial) -> [L] job register + three
 //             lanes (or the direct 2x2 test's row spans) -> [W] walk stage, registered push ->

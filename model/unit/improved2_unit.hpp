@@ -1,6 +1,5 @@
 // The second-generation improved unit (issue 13; docs/gen2-design.md, "The C++ datapath and
-// SystemC model"), bit-accurate, untimed: the whole-unit prototype rtl/trirast_improved2_top.sv
-// stage by stage.
+// SystemC model"), bit-accurate, untimed: the unit's RTL rtl/trirast_improved2.f stage by stage.
 //
 //   [B] box stage: the box, clipped, and the empty test (gen1's interface computes the same box);
 //       an empty box retires
@@ -12,7 +11,7 @@
 //   [W] the walk stage, one row per step: gen1's walkers and span generator (the retimed walkers
 //       and the parallel span generator give the same rows), or the direct test's row spans
 //
-// The prototype is built for boundary mode step and the adaptive divider only: the gen1 options
+// The unit is built for boundary mode step and the adaptive divider only: the gen1 options
 // --boundary, --divider (and the sweep's quotient truncation) do not apply to it.
 #pragma once
 #include <cstdint>
