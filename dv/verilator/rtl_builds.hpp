@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/engine.hpp"
+#include "core/sink_pattern.hpp"
 
 namespace trirast::rtl {
 
@@ -32,6 +33,15 @@ const std::vector<RtlBuild>& improved_builds();
 const std::vector<RtlBuild>& trad_builds();
 const std::vector<RtlBuild>& halfspace_builds();
 const std::vector<RtlBuild>& improved2_builds();
+
+// Runs `build` (every RTL engine's run once it picked its build): a bad --sink-stall pattern fails
+// before anything runs; reports the build's FIFO depth (work "rtl_build_fifo_depth").
+inline void run_build(const RtlBuild& build, const SetupResult& setup, const RasterConfig& cfg,
+                      uint32_t x_seed, EngineResult& out) {
+  (void)SinkPattern::parse(cfg.sink_stall);
+  build.run(setup, cfg, x_seed, out);
+  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+}
 
 // "S:coord:box N<=4 DEPTH<=1024, ..." for error messages.
 std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box);

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "core/sink_pattern.hpp"
 #include "rtl_builds.hpp"
 #include "sim_clock.hpp"
 
@@ -80,25 +79,17 @@ void run_rtl(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOpti
         " is not covered by the rtl engine (the RTL has no quotient truncation; only 0, the exact "
         "divider, is)");
   const RtlBuild& build = pick_build(cfg);
-  (void)SinkPattern::parse(cfg.sink_stall);  // a bad pattern fails before the width check's run
-  build.run(setup, cfg, opt.x_seed, out);
-  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+  run_build(build, setup, cfg, opt.x_seed, out);  // a bad pattern fails before the width check
   out.work["rtl_build_endpoints"] = uint64_t(build.endpoints);
 }
 
 }  // namespace rtl
 
-namespace {
-
-class RtlEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl(setup, cfg, {seed}, out); });
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_rtl_engine() { return std::make_unique<RtlEngine>(); }
+std::unique_ptr<Engine> make_rtl_engine() {
+  return make_timed_rtl_engine(
+      [](const SetupResult& setup, const RasterConfig& cfg, uint32_t seed, EngineResult& out) {
+        rtl::run_rtl(setup, cfg, {seed}, out);
+      });
+}
 
 }  // namespace trirast

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "core/sink_pattern.hpp"
 #include "rtl_builds.hpp"
 #include "sim_clock.hpp"
 
@@ -88,25 +87,16 @@ std::vector<HsParams> halfspace_built_params(const RasterConfig& cfg) {
 
 void run_rtl_halfspace(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        EngineResult& out) {
-  (void)SinkPattern::parse(cfg.sink_stall);
-  const RtlBuild& build = pick_build(cfg);
-  build.run(setup, cfg, x_seed, out);
-  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+  run_build(pick_build(cfg), setup, cfg, x_seed, out);
 }
 
 }  // namespace rtl
 
-namespace {
-
-class RtlHalfspaceEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_halfspace(setup, cfg, seed, out); });
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_rtl_halfspace_engine() { return std::make_unique<RtlHalfspaceEngine>(); }
+std::unique_ptr<Engine> make_rtl_halfspace_engine() {
+  return make_timed_rtl_engine(
+      [](const SetupResult& setup, const RasterConfig& cfg, uint32_t seed, EngineResult& out) {
+        rtl::run_rtl_halfspace(setup, cfg, seed, out);
+      });
+}
 
 }  // namespace trirast

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "core/sink_pattern.hpp"
 #include "rtl_builds.hpp"
 #include "sim_clock.hpp"
 
@@ -65,26 +64,16 @@ void run_rtl_improved2(const SetupResult& setup, const RasterConfig& cfg,
                        const RtlRunOptions& opt, EngineResult& out) {
   cfg.validate();
   const RtlBuild& build = pick_build(cfg);
-  (void)SinkPattern::parse(cfg.sink_stall);  // a bad pattern fails before anything runs
-  build.run(setup, cfg, opt.x_seed, out);
-  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+  run_build(build, setup, cfg, opt.x_seed, out);
 }
 
 }  // namespace rtl
 
-namespace {
-
-class RtlImproved2Engine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_improved2(setup, cfg, {seed}, out); });
-  }
-};
-
-}  // namespace
-
 std::unique_ptr<Engine> make_rtl_improved2_engine() {
-  return std::make_unique<RtlImproved2Engine>();
+  return make_timed_rtl_engine(
+      [](const SetupResult& setup, const RasterConfig& cfg, uint32_t seed, EngineResult& out) {
+        rtl::run_rtl_improved2(setup, cfg, {seed}, out);
+      });
 }
 
 }  // namespace trirast

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include "core/sink_pattern.hpp"
 #include "rtl_builds.hpp"
 #include "sim_clock.hpp"
 
@@ -48,24 +47,16 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
 void run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, const RtlRunOptions& opt,
                   EngineResult& out) {
   const RtlBuild& build = pick_build(cfg);
-  (void)SinkPattern::parse(cfg.sink_stall);  // a bad pattern fails before anything runs
-  build.run(setup, cfg, opt.x_seed, out);
-  out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+  run_build(build, setup, cfg, opt.x_seed, out);
 }
 
 }  // namespace rtl
 
-namespace {
-
-class RtlTradEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    run_rtl_timed(out, [&](uint32_t seed) { rtl::run_rtl_trad(setup, cfg, {seed}, out); });
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_rtl_trad_engine() { return std::make_unique<RtlTradEngine>(); }
+std::unique_ptr<Engine> make_rtl_trad_engine() {
+  return make_timed_rtl_engine(
+      [](const SetupResult& setup, const RasterConfig& cfg, uint32_t seed, EngineResult& out) {
+        rtl::run_rtl_trad(setup, cfg, {seed}, out);
+      });
+}
 
 }  // namespace trirast

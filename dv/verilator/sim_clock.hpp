@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cstdlib>
+#include <memory>
 
 #include "core/engine.hpp"
 
@@ -36,8 +37,9 @@ class SimClock {
   double cpu0_;
 };
 
-// An RTL engine's run (rtl_engine.cpp, rtl_trad_engine.cpp, rtl_hs_engine.cpp): the X seed from
-// TRIRAST_RTL_SEED (default 1; reported as work "rtl_x_seed"), the run, and its speed.
+// An RTL engine's run (rtl_engine.cpp, rtl_trad_engine.cpp, rtl_hs_engine.cpp,
+// rtl_improved2_engine.cpp): the X seed from TRIRAST_RTL_SEED (default 1; reported as work
+// "rtl_x_seed"), the run, and its speed.
 template <class Run>
 void run_rtl_timed(EngineResult& out, Run&& run) {
   uint32_t seed = 1;
@@ -45,6 +47,22 @@ void run_rtl_timed(EngineResult& out, Run&& run) {
   const SimClock clock;
   run(seed);
   clock.report(out);
+}
+
+// The Engine of an RTL unit: run(setup, cfg, seed, out) through run_rtl_timed.
+template <class Run>
+std::unique_ptr<Engine> make_timed_rtl_engine(Run run) {
+  class TimedRtlEngine : public Engine {
+   public:
+    explicit TimedRtlEngine(Run r) : run_(r) {}
+    void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
+      run_rtl_timed(out, [&](uint32_t seed) { run_(setup, cfg, seed, out); });
+    }
+
+   private:
+    Run run_;
+  };
+  return std::make_unique<TimedRtlEngine>(run);
 }
 
 }  // namespace trirast

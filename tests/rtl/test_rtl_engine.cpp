@@ -193,13 +193,9 @@ void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std:
   EngineResult sc;
   make_model_engine()->run(setup, cfg, sc);
   ASSERT_EQ(sc.cycles.size(), r.cycles.size()) << what;
-  size_t mismatches = 0;
-  for (size_t p = 0; p < r.cycles.size(); ++p)
-    if (!test::same_cycles(r.cycles[p], sc.cycles[p]) && mismatches++ < 3)
-      ADD_FAILURE() << what << ": triangle " << r.cycles[p].tri << " (" << test::kCyclesColumns
-                    << ") rtl (" << test::cycles_row(r.cycles[p]) << ") model ("
-                    << test::cycles_row(sc.cycles[p]) << ")";
-  EXPECT_EQ(mismatches, 0u) << what << ": triangles whose columns differ from the model's";
+  std::string rows;
+  EXPECT_EQ(test::cycle_rows_mismatch(r.cycles, "rtl", sc.cycles, "model", what, rows), 0u)
+      << rows;
 }
 
 InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {

@@ -47,35 +47,20 @@ RasterConfig cfg_with(int form, const std::string& sink, int depth, int endpoint
 
 // The golden's spans and the model's cycles and statistics against one RTL run. Returns the
 // number of triangles compared.
-size_t expect_improved2(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
+size_t expect_improved2(const SetupResult& setup, const RasterConfig& cfg,
+                        const std::string& what) {
   EngineResult rtl = run_rtl(setup, cfg);
   EngineResult golden, sc;
   make_golden_engine()->run(setup, cfg, golden);
   make_improved2_model_engine()->run(setup, cfg, sc);
   sort_spans(rtl.spans);
   sort_spans(golden.spans);
-  EXPECT_EQ(rtl.spans.size(), golden.spans.size()) << what;
-  for (size_t i = 0; i < std::min(rtl.spans.size(), golden.spans.size()); ++i) {
-    if (!(rtl.spans[i] == golden.spans[i])) {
-      ADD_FAILURE() << what << ": span " << i << ": rtl (tri " << rtl.spans[i].tri << " y "
-                    << rtl.spans[i].y << " [" << rtl.spans[i].x_begin << ", "
-                    << rtl.spans[i].x_end << ")), golden (tri " << golden.spans[i].tri << " y "
-                    << golden.spans[i].y << " [" << golden.spans[i].x_begin << ", "
-                    << golden.spans[i].x_end << "))";
-      break;
-    }
-  }
+  EXPECT_EQ(test::first_span_difference(rtl.spans, "rtl", golden.spans, "golden"), "") << what;
   EXPECT_EQ(rtl.cycles.size(), setup.tris.size()) << what;
   EXPECT_EQ(sc.cycles.size(), setup.tris.size()) << what;
-  size_t mismatches = 0;
-  for (size_t p = 0; p < std::min(rtl.cycles.size(), sc.cycles.size()); ++p) {
-    const TriangleCycles &a = rtl.cycles[p], &b = sc.cycles[p];
-    if (!test::same_cycles(a, b) && mismatches++ < 3)
-      ADD_FAILURE() << what << ": triangle " << a.tri << " (position " << p << ", "
-                    << test::kCyclesColumns << "): rtl (" << test::cycles_row(a)
-                    << ") improved2-sc (" << test::cycles_row(b) << ")";
-  }
-  EXPECT_EQ(mismatches, 0u) << what << ": triangles with other cycles";
+  std::string rows;
+  EXPECT_EQ(test::cycle_rows_mismatch(rtl.cycles, "rtl", sc.cycles, "improved2-sc", what, rows), 0u)
+      << rows;
   EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
   // Every statistic of the model: stage busy and stall cycles, lanes, walk stage, FIFO and sink,
   // empty / tiny / lane boxes, the lanes' divider iterations and steps, the rows.

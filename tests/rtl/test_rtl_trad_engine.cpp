@@ -41,31 +41,15 @@ size_t expect_trad(const SetupResult& setup, const RasterConfig& cfg, const std:
   make_trad_model_engine()->run(setup, cfg, sc);
   sort_spans(rtl.spans);
   sort_spans(cpp.spans);
-  EXPECT_EQ(rtl.spans.size(), cpp.spans.size()) << what;
-  for (size_t i = 0; i < std::min(rtl.spans.size(), cpp.spans.size()); ++i) {
-    if (!(rtl.spans[i] == cpp.spans[i])) {
-      ADD_FAILURE() << what << ": span " << i << ": rtl (tri " << rtl.spans[i].tri << " y "
-                    << rtl.spans[i].y << " [" << rtl.spans[i].x_begin << ", "
-                    << rtl.spans[i].x_end << ")), trad (tri " << cpp.spans[i].tri << " y "
-                    << cpp.spans[i].y << " [" << cpp.spans[i].x_begin << ", "
-                    << cpp.spans[i].x_end << "))";
-      break;
-    }
-  }
+  EXPECT_EQ(test::first_span_difference(rtl.spans, "rtl", cpp.spans, "trad"), "") << what;
   EXPECT_EQ(rtl.work["trad_collinear"], cpp.work["trad_collinear"]) << what;
   EXPECT_EQ(sc.work["trad_collinear"], cpp.work["trad_collinear"]) << what;
   EXPECT_EQ(rtl.cycles.size(), setup.tris.size()) << what;
   EXPECT_EQ(sc.cycles.size(), setup.tris.size()) << what;
-  size_t mismatches = 0;
-  for (size_t p = 0; p < std::min(rtl.cycles.size(), sc.cycles.size()); ++p) {
-    const TriangleCycles &a = rtl.cycles[p], &b = sc.cycles[p];
-    // Every column, the stage breakdown too (docs/timing.md, "Outputs").
-    if (!test::same_cycles(a, b) && mismatches++ < 3)
-      ADD_FAILURE() << what << ": triangle " << a.tri << " (position " << p << ", "
-                    << test::kCyclesColumns << "): rtl (" << test::cycles_row(a)
-                    << ") trad model (" << test::cycles_row(b) << ")";
-  }
-  EXPECT_EQ(mismatches, 0u) << what << ": triangles with other cycles";
+  // Every column, the stage breakdown too (docs/timing.md, "Outputs").
+  std::string rows;
+  EXPECT_EQ(test::cycle_rows_mismatch(rtl.cycles, "rtl", sc.cycles, "trad model", what, rows), 0u)
+      << rows;
   EXPECT_EQ(rtl.total_cycles, sc.total_cycles) << what;
   // The statistics: the model's module busy and stall cycles and Bresenham steps (its
   // rows_visited has no RTL counterpart).
