@@ -1,4 +1,5 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): vertex-relative E_L with full-width
+// The second-generation improved unit's corner unit, CornerForm 0 (rtl/trirast_improved2.f, the
+// xc7 form): vertex-relative E_L with full-width
 // products written as `*`, one cycle (combinational; the wrapper registers both sides): the
 // form for devices with multipliers (xc7 maps each 25 x 26 product onto DSP48E1 slices).
 //   E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias   per edge (no C: E vanishes at the edge's vertex).

@@ -1,4 +1,5 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): vertex-relative E_L by digit-serial
+// The second-generation improved unit's corner unit, CornerForm 1 (rtl/trirast_improved2.f, the
+// iCE40 form): vertex-relative E_L by digit-serial
 // shift-add, MSB first, DigitBits operand bits per cycle (2: radix 4, 4: radix 16), for the three
 // edges at once:  E_L = A*dxL + B*dy - bias,  dxL = cx0 - vx, dy = cy0 - vy.
 // Per cycle and edge: acc = (acc << DigitBits) +- A*digit(|dxL|) +- B*digit(|dy|) (the operand's
@@ -11,7 +12,8 @@
 // the held sign) instead of to the 50-bit partial product, and the bias enters the last digit's
 // B' * digit sum, so a digit costs two 26-bit negations and one 50-bit three-operand sum instead
 // of two 50-bit negations, their selects and a four-operand sum.
-// AccEdges 2 (trirast_improved2_top's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the caller forms
+// AccEdges 2 (trirast_improved2_top's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the
+// caller forms
 // it from the other two), but its magnitudes still set the digit count (the same cycles).
 module trirast_corner_serial #(
   parameter int DigitBits = 4,

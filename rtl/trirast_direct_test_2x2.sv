@@ -1,4 +1,4 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): the direct test of a tiny box (at most
+// The second-generation improved unit's direct test of a tiny box (rtl/trirast_improved2.f; at most
 // 2 x 2 pixel centres, Xmax <= 1 and Ymax <= 1), one cycle. From each edge's corner value E_L
 // (bias included) and its steps a = A*u, b = B*u: the 12 sign tests E_L, E_L + a, E_L + b,
 // E_L + a + b >= 0, a centre covered when all three edges pass, and per box row the span (a row of
@@ -41,5 +41,6 @@ module trirast_direct_test_2x2 #(
   assign valid_o = {row1 != 2'b00, row0 != 2'b00};
   assign y_o  = {y0_i + 1'b1, y0_i};
   assign xb_o = {x0_i + PB'(!row1[0]), x0_i + PB'(!row0[0])};
-  assign xe_o = {{1'b0, x0_i} + (PB + 1)'(row1[1] ? 2 : 1), {1'b0, x0_i} + (PB + 1)'(row0[1] ? 2 : 1)};
+  assign xe_o = {{1'b0, x0_i} + (PB + 1)'(row1[1] ? 2 : 1),
+                 {1'b0, x0_i} + (PB + 1)'(row0[1] ? 2 : 1)};
 endmodule

@@ -1,5 +1,6 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh, docs/gen2-design.md section 2): one
-// edge normalizer and one edge lane of the improved unit, redesigned for area and speed. Same
+// The second-generation improved unit's edge lane (rtl/trirast_improved2.f; docs/gen2-design.md
+// section 2): one edge normalizer and one edge lane of the improved unit, redesigned for area and
+// speed. Same
 // results as rtl/trirast_edge_normalizer.sv + rtl/trirast_edge_lane.sv in boundary mode `step`
 // (the mode is a build choice here: `divide` is not built), in a different number of cycles.
 //

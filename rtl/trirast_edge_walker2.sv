@@ -1,4 +1,4 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): one edge walker, N = 1, retimed.
+// The second-generation improved unit's edge walker (rtl/trirast_improved2.f), retimed.
 // The same row sequence as rtl/trirast_edge_walker.sv (docs/unit.md, section 4), but every test of
 // a step is computed beside its add instead of after it:
 //  - carry-select Bresenham step: both X' + inc and X' + inc + 1 (dir +; dir -: - q_s, - q_s - 1)

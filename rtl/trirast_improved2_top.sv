@@ -27,8 +27,9 @@
 //       cfg_fifo_depth_i), span FIFO (n push ports) -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
-// FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has flip-flops); WalkerCs 0, the walkers'
-// carry-in step; SignFold 1, the serial corner unit's signs on the multiplicands; ElReg 1
+// FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
+// flip-flops); WalkerCs 0, the walkers' carry-in step; SignFold 1, the serial corner unit's signs
+// on the multiplicands; ElReg 1
 // (CornerForm 1 only), the lanes load E_L from its register and the 2x2 test reads the
 // accumulator; TestHi 1, the 2x2 test on E_L >> F and A, B; E2Sum (CornerForm 1 only), edge 2's E
 // from the sum of the port's C values (two corner accumulators). The defaults are the iCE40 form;
@@ -44,8 +45,8 @@ module trirast_improved2_top #(
   parameter bit SignFold   = 1'b1,
   parameter bit ElReg      = 1'b1,
   parameter bit TestHi     = 1'b1,
-  // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other values change
-  // the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
+  // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other
+  // values change the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
   parameter int LanePreIter = 0,
   // 1 (CornerForm 1 only): E_2 = (C_0 + C_1 + C_2 - the biases) - E_0 - E_1, the corner unit
@@ -67,7 +68,7 @@ module trirast_improved2_top #(
   input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // unused (vertex-relative E) but with E2Sum
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // read only with E2Sum
   input  logic [2:0]                            tri_bias_i,
   output logic                                  span_valid_o,
   input  logic                                  span_ready_i,
@@ -242,7 +243,9 @@ module trirast_improved2_top #(
     assign s_vy  = start2_q ? c_vy_q : b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
     assign s_y0  = start2_q ? c_y0_q : PB'(fy);
-    trirast_corner_serial #(.DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)) u_corner (
+    trirast_corner_serial #(
+      .DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)
+    ) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
       .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
@@ -432,7 +435,8 @@ module trirast_improved2_top #(
           clk_i, !rst_ni)
   `ASSERT_INIT(NumEndpointsInRange_A, NumEndpoints >= 1 && NumEndpoints <= 4)
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
-                 {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i, !rst_ni)
+                 {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i},
+                 clk_i, !rst_ni)
   `ASSERT(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o) |-> tri_valid_i, clk_i, !rst_ni)
   // A job is handed off only when every lane it loaded is done; a tiny job loads none.
   `ASSERT(HandoffLanesDone_A, handoff_o && !l_tiny_q |-> &lane_done, clk_i, !rst_ni)

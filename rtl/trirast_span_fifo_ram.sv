@@ -1,7 +1,9 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh, docs/gen2-design.md section 1,
-// "Fitting the HX8K"): the span FIFO of rtl/trirast_span_fifo.sv (NumEndpoints 1) with its storage
+// The second-generation improved unit's span FIFO in block RAM (rtl/trirast_improved2.f, FifoRam 1;
+// docs/gen2-design.md section 1, "Fitting the HX8K"): the span FIFO of rtl/trirast_span_fifo.sv
+// (NumEndpoints 1) with its storage
 // in a memory read through a register, so synth_ice40 maps it to block RAM (SB_RAM40_4K) instead of
-// FifoDepth * EntryBits flip-flops. The same cycles and outputs whenever valid_o is 1: a span pushed
+// FifoDepth * EntryBits flip-flops. The same cycles and outputs whenever valid_o is 1: a span
+// pushed
 // in cycle t shows from t + 1, count_o is the occupancy at the start of the cycle.
 // The read register is loaded every cycle from the next cycle's head (rptr + pop); when the push of
 // the same cycle writes that address (an empty FIFO, or one entry being popped), the memory's read

@@ -1,4 +1,4 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): the span generator of one row with
+// The second-generation improved unit's span generator of one row (rtl/trirast_improved2.f), with
 // parallel compares. Takes the three walkers' restored bounds (trirast_edge_walker2 keeps them in
 // registers), computes the six ordered compares b_i < b_j at once and derives from them, in one
 // level of selection each: begin = max(0, mirrored bounds), end = min(Xmax + 1, other bounds),

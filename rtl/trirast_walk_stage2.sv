@@ -1,6 +1,7 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): g2_walk_slice.sv (the retimed walk
-// stage, N = 1, with the span FIFO) extended for the whole-unit prototype trirast_improved2_top.sv with a tiny
-// job: a triangle whose box has at most 2 x 2 pixel centres comes with its rows' spans already
+// The second-generation improved unit's walk stage (rtl/trirast_improved2.f, docs/rtl.md): the
+// retimed walk stage of the gen2 study (scripts/gen2_study/g2_walk_slice.sv: the walkers, the
+// span generator, a registered push with its credit, the span FIFO) with a tiny job: a triangle
+// whose box has at most 2 x 2 pixel centres comes with its rows' spans already
 // decided by the direct 2x2 test (hand_tiny_i, per row j a valid bit and begin / end relative to
 // x0: 0 or 1, 1 or 2). A tiny job takes the walk stage like any other (so spans leave in
 // acceptance order) and emits its rows through the same registered push: one row per cycle, and
@@ -8,7 +9,8 @@
 // The walkers load stale hand-off values for a tiny job; their outputs are not read.
 // Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
 // FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops;
-// WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder each).
+// WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder
+// each).
 // NumEndpoints N (docs/gen2-design.md section 8, "W"): each walk cycle processes a group of
 // n = cfg_endpoints_i rows (1..N; N = 1: one row, cfg_endpoints_i unused), as
 // rtl/trirast_walk_stage.sv does: the walkers present rows j .. j + N - 1 (a chain of steps), one
@@ -269,6 +271,7 @@ module trirast_walk_stage2 #(
   assign fifo_count_o = count;
 
   assign hand_ready_o = !walk_q;
-  assign busy_o = walk_q || (push_q != '0);   // a job walks, or its last spans are in the push register
+  // A job walks, or its last spans are in the push register.
+  assign busy_o = walk_q || (push_q != '0);
 
 endmodule
