@@ -47,6 +47,10 @@ trap 'rm -f "$md" "$section"' EXIT
   echo "unless --repeat / --rtl-repeat say otherwise). The ratio columns are RTL time / model time:"
   echo "wall clock (the target: >= 20) and process CPU time (steadier when the machine is loaded)."
   echo "The RTL's cycles equal the model's (the bench checks it)."
+  if [ "$head" != "## Model against RTL wall time" ]; then
+    echo "Here the model is \`improved2-sc\` and the RTL \`improved2-rtl\` (the second-generation unit,"
+    echo "its radix-16 form); the trad columns are the traditional unit's model as above."
+  fi
   echo
   cat "$md"
   echo
