@@ -42,36 +42,41 @@ SetupResult builtin_setup(const std::string& name, const RasterConfig& cfg) {
   return setup_scene(make_builtin(name, cfg, CameraOptions{}).tris, cfg);
 }
 
-TEST(ScImproved2, SpansEqualGoldenInBothFormsAndSinks) {
+// The spans are the golden's at N = 1, 2, 4 in both corner forms, whatever the sink; per triangle
+// the cycles are ordered (accept <= first span <= done, accepts in order) and the spans counted.
+TEST(ScImproved2, SpansEqualGoldenInBothFormsSinksAndN) {
   for (const char* scene : {"hard-all", "mixed", "sphere", "highpoly-far"}) {
     RasterConfig cfg;
     const SetupResult setup = builtin_setup(scene, cfg);
     EngineResult g;
     make_golden_engine()->run(setup, cfg, g);
     sort_spans(g.spans);
-    for (int form : {0, 1})
-      for (const char* sink : {"none", "periodic:2:1", "random:5:40"}) {
-        SCOPED_TRACE(std::string(scene) + " form " + std::to_string(form) + " sink " + sink);
-        cfg.g2_corner_form = form;
-        cfg.sink_stall = sink;
-        cfg.fifo_depth = 4;
-        EngineResult r = run_model(setup, cfg);
-        sort_spans(r.spans);
-        EXPECT_TRUE(r.spans == g.spans);
-        ASSERT_EQ(r.cycles.size(), setup.tris.size());
-        uint64_t spans = 0;
-        for (size_t i = 0; i < r.cycles.size(); ++i) {
-          const TriangleCycles& c = r.cycles[i];
-          EXPECT_EQ(c.tri, setup.tris[i].index);
-          EXPECT_LE(c.accept_cycle, c.first_span_cycle);
-          EXPECT_LE(c.first_span_cycle, c.done_cycle);
-          if (i > 0) {
-            EXPECT_LT(r.cycles[i - 1].accept_cycle, c.accept_cycle);
+    for (int n : {1, 2, 4})
+      for (int form : {0, 1})
+        for (const char* sink : {"none", "periodic:2:1", "random:5:40"}) {
+          SCOPED_TRACE(std::string(scene) + " N " + std::to_string(n) + " form " +
+                       std::to_string(form) + " sink " + sink);
+          cfg.endpoints = n;
+          cfg.g2_corner_form = form;
+          cfg.sink_stall = sink;
+          cfg.fifo_depth = 4;
+          EngineResult r = run_model(setup, cfg);
+          sort_spans(r.spans);
+          EXPECT_TRUE(r.spans == g.spans);
+          ASSERT_EQ(r.cycles.size(), setup.tris.size());
+          uint64_t spans = 0;
+          for (size_t i = 0; i < r.cycles.size(); ++i) {
+            const TriangleCycles& c = r.cycles[i];
+            EXPECT_EQ(c.tri, setup.tris[i].index);
+            EXPECT_LE(c.accept_cycle, c.first_span_cycle);
+            EXPECT_LE(c.first_span_cycle, c.done_cycle);
+            if (i > 0) {
+              EXPECT_LT(r.cycles[i - 1].accept_cycle, c.accept_cycle);
+            }
+            spans += c.spans;
           }
-          spans += c.spans;
+          EXPECT_EQ(spans, g.spans.size());
         }
-        EXPECT_EQ(spans, g.spans.size());
-      }
   }
 }
 
@@ -88,31 +93,6 @@ TEST(ScImproved2, EmptyBoxRetiresInTheBoxStage) {
     EXPECT_EQ(r.cycles[i].spans, 0u);
   }
   EXPECT_EQ(r.total_cycles, 4u);
-}
-
-// N = 2, 4: the spans are the golden's (and the same as N = 1's), whatever the form and sink.
-TEST(ScImproved2, SpansEqualGoldenAtNTwoAndFour) {
-  for (const char* scene : {"hard-all", "mixed"}) {
-    RasterConfig cfg;
-    const SetupResult setup = builtin_setup(scene, cfg);
-    EngineResult g;
-    make_golden_engine()->run(setup, cfg, g);
-    sort_spans(g.spans);
-    for (int n : {2, 4})
-      for (int form : {0, 1})
-        for (const char* sink : {"none", "random:5:40"}) {
-          SCOPED_TRACE(std::string(scene) + " N " + std::to_string(n) + " form " +
-                       std::to_string(form) + " sink " + sink);
-          cfg.endpoints = n;
-          cfg.g2_corner_form = form;
-          cfg.sink_stall = sink;
-          cfg.fifo_depth = 4;
-          EngineResult r = run_model(setup, cfg);
-          sort_spans(r.spans);
-          EXPECT_TRUE(r.spans == g.spans);
-          ASSERT_EQ(r.cycles.size(), setup.tris.size());
-        }
-  }
 }
 
 // The walk stage's N rule: a job walks one cycle per group of N rows besides its stall cycles,
