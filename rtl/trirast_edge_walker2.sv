@@ -18,7 +18,7 @@
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
 // the bound from the running registers, which hold the values loaded with the job until then (no
 // copies ex, ee, bex).
-// NumEndpoints N > 1 (the walk stage's N rows per cycle, docs/gen2-design.md section 8): the step
+// NumEndpoints N > 1 (the walk stage's N rows per cycle, docs/timing.md): the step
 // above is built N times in a chain, row r + 1 one step after row r (row 0: the registers), as
 // rtl/trirast_edge_walker.sv's chain; the walker presents rows j .. j + N - 1 and advances by the
 // runtime group size adv_rows_i (1..N; N = 1: one row, adv_rows_i unused).

@@ -1,5 +1,6 @@
-// The improved unit, second generation (engine "improved2-rtl"; docs/gen2-design.md, section 8
-// for the cycle contract its SystemC model improved2-sc follows, and docs/rtl.md): the paper's
+// The improved unit, second generation (engine "improved2-rtl"; docs/timing.md, "The
+// second-generation improved unit", for the cycle contract its SystemC model improved2-sc follows,
+// docs/gen2-design.md for its design, and docs/rtl.md): the paper's
 // adder-based divider, boundary traversal, Bresenham stepping with remainder accumulation and span
 // generation, rebuilt as a pipeline of four stages so the next triangle's box and corner values are
 // formed while the lanes and the walk stage work. Boundary mode step, adaptive divider (build

@@ -2,7 +2,7 @@
 // the transactor of the other RTL engines (cycle_loop.hpp) with the unit's ports
 // (improved2_harness.hpp): set-up triangles back to back, span_ready_i from the --sink-stall
 // pattern, spans and the per-triangle cycles of the SystemC model improved2-sc's contract
-// (docs/gen2-design.md, section 8).
+// (docs/timing.md, "The second-generation improved unit").
 #pragma once
 #include <cstdint>
 #include <memory>
