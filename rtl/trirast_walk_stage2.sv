@@ -11,8 +11,8 @@
 // FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops;
 // WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder
 // each).
-// NumEndpoints N (docs/timing.md, "The second-generation improved unit", W): each walk cycle processes a group of
-// n = cfg_endpoints_i rows (1..N; N = 1: one row, cfg_endpoints_i unused), as
+// NumEndpoints N (docs/timing.md, "The second-generation improved unit", W): each walk cycle
+// processes a group of n = cfg_endpoints_i rows (1..N; N = 1: one row, cfg_endpoints_i unused), as
 // rtl/trirast_walk_stage.sv does: the walkers present rows j .. j + N - 1 (a chain of steps), one
 // span generator per row, and the registered push holds up to n spans, pushed together through the
 // span FIFO's n push ports (trirast_span_fifo, rows packed in order). A group goes in a cycle when
