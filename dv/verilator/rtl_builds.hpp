@@ -6,6 +6,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,43 @@ inline void run_build(const RtlBuild& build, const SetupResult& setup, const Ras
   (void)SinkPattern::parse(cfg.sink_stall);
   build.run(setup, cfg, x_seed, out);
   out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+}
+
+// Whether build b has the widths of cfg (S, coordinate and box bits).
+inline bool same_widths(const RtlBuild& b, const RasterConfig& cfg) {
+  return b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
+         b.box_bits == cfg.box_bits;
+}
+
+// An engine's refusal of a run no build covers, naming the option: "OPT: GOT is not covered by
+// the ENGINE engine's Verilated models (HOW; built: BUILT; add one in ...)".
+[[noreturn]] inline void refuse_build(const std::string& engine, const std::string& opt,
+                                      const std::string& got, const std::string& how,
+                                      const std::string& built) {
+  throw std::invalid_argument(opt + ": " + got + " is not covered by the " + engine +
+                              " engine's Verilated models (" + how + "; built: " + built +
+                              "; add one in cmake/trirast_rtl_builds.cmake)");
+}
+
+// The refusal of widths no build has, naming the first option no build of the others' values has
+// (with_box: the box bits count; the traditional unit has none).
+[[noreturn]] inline void refuse_widths(const std::string& engine,
+                                       const std::vector<RtlBuild>& builds,
+                                       const RasterConfig& cfg, bool with_box,
+                                       const std::string& built) {
+  bool s = false, c = false;
+  for (const RtlBuild& b : builds) {
+    s = s || b.subpixel_bits == cfg.subpixel_bits;
+    c = c || (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits);
+  }
+  if (!s)
+    refuse_build(engine, "--subpixel-bits", std::to_string(cfg.subpixel_bits), "no build of this S",
+                 built);
+  if (!c || !with_box)
+    refuse_build(engine, "--coord-bits", std::to_string(cfg.coord_int_bits),
+                 "no build of these S and coordinate bits", built);
+  refuse_build(engine, "--box-bits", std::to_string(cfg.box_bits),
+               "no build of these S, coordinate and box bits", built);
 }
 
 // "S:coord:box N<=4 DEPTH<=1024, ..." for error messages.

@@ -22,35 +22,19 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
   const std::vector<RtlBuild>& builds = improved_builds();
   const RtlBuild* widths = nullptr;  // a build of these widths (for the message)
   for (const RtlBuild& b : builds) {
-    if (b.subpixel_bits != cfg.subpixel_bits || b.coord_int_bits != cfg.coord_int_bits ||
-        b.box_bits != cfg.box_bits)
-      continue;
+    if (!same_widths(b, cfg)) continue;
     widths = &b;
     if (cfg.endpoints >= 1 && cfg.endpoints <= b.endpoints && cfg.fifo_depth >= cfg.endpoints &&
         cfg.fifo_depth <= b.fifo_depth)
       return b;
   }
-  auto fail = [&](const std::string& opt, int got, const std::string& how) -> const RtlBuild& {
-    throw std::invalid_argument(opt + ": " + std::to_string(got) +
-                                " is not covered by the rtl engine's Verilated models (" + how +
-                                "; built: " + built_configuration() +
-                                "; add one in cmake/trirast_rtl_builds.cmake)");
-  };
-  if (!widths) {
-    // Name the first option no build of the other two options' values has.
-    bool s = false, c = false;
-    for (const RtlBuild& b : builds) {
-      s = s || b.subpixel_bits == cfg.subpixel_bits;
-      c = c || (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits);
-    }
-    if (!s) return fail("--subpixel-bits", cfg.subpixel_bits, "no build of this S");
-    if (!c) return fail("--coord-bits", cfg.coord_int_bits, "no build of these S and coordinate bits");
-    return fail("--box-bits", cfg.box_bits, "no build of these S, coordinate and box bits");
-  }
+  const std::string built = built_configuration();
+  if (!widths) refuse_widths("rtl", builds, cfg, true, built);
   if (cfg.endpoints < 1 || cfg.endpoints > widths->endpoints)
-    return fail("--endpoints", cfg.endpoints, "at most " + std::to_string(widths->endpoints));
-  return fail("--fifo-depth", cfg.fifo_depth,
-              "from --endpoints up to " + std::to_string(widths->fifo_depth));
+    refuse_build("rtl", "--endpoints", std::to_string(cfg.endpoints),
+                 "at most " + std::to_string(widths->endpoints), built);
+  refuse_build("rtl", "--fifo-depth", std::to_string(cfg.fifo_depth),
+               "from --endpoints up to " + std::to_string(widths->fifo_depth), built);
 }
 
 }  // namespace

@@ -22,11 +22,6 @@ std::string describe_hs(int stamp, int tile, bool zigzag) {
          (zigzag ? "zigzag" : "row");
 }
 
-bool same_widths(const RtlBuild& b, const RasterConfig& cfg) {
-  return b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
-         b.box_bits == cfg.box_bits;
-}
-
 bool same_unit(const RtlBuild& b, const RasterConfig& cfg) {
   return b.stamp == cfg.hs_stamp && b.tile == cfg.hs_tile &&
          b.zigzag == (cfg.hs_walk == HsWalk::Zigzag);

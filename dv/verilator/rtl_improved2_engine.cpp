@@ -21,41 +21,31 @@ const char* form_name(int form) { return form == 0 ? "products (dsp)" : "radix16
 
 const RtlBuild& pick_build(const RasterConfig& cfg) {
   const std::vector<RtlBuild>& builds = improved2_builds();
-  auto fail = [&](const std::string& opt, const std::string& got,
-                  const std::string& how) -> const RtlBuild& {
-    throw std::invalid_argument(opt + ": " + got +
-                                " is not covered by the improved2-rtl engine's Verilated models (" +
-                                how + "; built: " + describe_builds(builds, true) +
-                                "; add one in cmake/trirast_rtl_builds.cmake)");
-  };
+  const std::string built = describe_builds(builds, true);
+  const std::string engine = "improved2-rtl";
   const RtlBuild* widths = nullptr;
   for (const RtlBuild& b : builds) {
-    if (b.subpixel_bits != cfg.subpixel_bits || b.coord_int_bits != cfg.coord_int_bits ||
-        b.box_bits != cfg.box_bits)
-      continue;
+    if (!same_widths(b, cfg)) continue;
     widths = &b;
     if (b.corner_form == cfg.g2_corner_form && cfg.fifo_depth >= cfg.endpoints &&
         cfg.fifo_depth <= b.fifo_depth && cfg.endpoints >= 1 && cfg.endpoints <= b.endpoints)
       return b;
   }
-  if (!widths)
-    return fail("--subpixel-bits/--coord-bits/--box-bits",
-                std::to_string(cfg.subpixel_bits) + ":" + std::to_string(cfg.coord_int_bits) +
-                    ":" + std::to_string(cfg.box_bits),
-                "no build of these widths");
+  if (!widths) refuse_widths(engine, builds, cfg, true, built);
   int max_n = 0, max_depth = 0;  // the largest N and depth of these widths and this form
   for (const RtlBuild& b : builds)
-    if (b.subpixel_bits == cfg.subpixel_bits && b.coord_int_bits == cfg.coord_int_bits &&
-        b.box_bits == cfg.box_bits && b.corner_form == cfg.g2_corner_form) {
+    if (same_widths(b, cfg) && b.corner_form == cfg.g2_corner_form) {
       max_n = std::max(max_n, b.endpoints);
       max_depth = std::max(max_depth, b.fifo_depth);
     }
   if (max_n > 0 && cfg.endpoints > max_n)
-    return fail("--endpoints", std::to_string(cfg.endpoints), "up to " + std::to_string(max_n));
+    refuse_build(engine, "--endpoints", std::to_string(cfg.endpoints),
+                 "up to " + std::to_string(max_n), built);
   if (max_n > 0)
-    return fail("--fifo-depth", std::to_string(cfg.fifo_depth),
-                "from --endpoints up to " + std::to_string(max_depth));
-  return fail("--corner-form", form_name(cfg.g2_corner_form), "no build of this form at these widths");
+    refuse_build(engine, "--fifo-depth", std::to_string(cfg.fifo_depth),
+                 "from --endpoints up to " + std::to_string(max_depth), built);
+  refuse_build(engine, "--corner-form", form_name(cfg.g2_corner_form),
+               "no build of this form at these widths", built);
 }
 
 }  // namespace

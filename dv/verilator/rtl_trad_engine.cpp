@@ -27,19 +27,10 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     widths = &b;
     if (cfg.fifo_depth >= 1 && cfg.fifo_depth <= b.fifo_depth) return b;
   }
-  auto fail = [&](const std::string& opt, int got, const std::string& how) -> const RtlBuild& {
-    throw std::invalid_argument(opt + ": " + std::to_string(got) +
-                                " is not covered by the rtl-trad engine's Verilated models (" +
-                                how + "; built: " + describe_builds(builds, false) +
-                                "; add one in cmake/trirast_rtl_builds.cmake)");
-  };
-  if (!widths) {
-    bool s = false;
-    for (const RtlBuild& b : builds) s = s || b.subpixel_bits == cfg.subpixel_bits;
-    if (!s) return fail("--subpixel-bits", cfg.subpixel_bits, "no build of this S");
-    return fail("--coord-bits", cfg.coord_int_bits, "no build of these S and coordinate bits");
-  }
-  return fail("--fifo-depth", cfg.fifo_depth, "from 1 up to " + std::to_string(widths->fifo_depth));
+  const std::string built = describe_builds(builds, false);
+  if (!widths) refuse_widths("rtl-trad", builds, cfg, false, built);
+  refuse_build("rtl-trad", "--fifo-depth", std::to_string(cfg.fifo_depth),
+               "from 1 up to " + std::to_string(widths->fifo_depth), built);
 }
 
 }  // namespace
