@@ -27,6 +27,10 @@ PAPER_TABLE1 = {"improved": (3120, 4653), "trad": (3728, 6936)}  # (registers, L
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DEFAULT_CONFIG = "S8 c16 b14 K- N1"
 TRAD_DEFAULT = "S8 c16"
+# The second-generation unit's default widths; its corner forms, the default (iCE40) form first.
+GEN2_DEFAULT = "S8 c16 b14 N1 gen2"
+GEN2_FORMS = ("radix16", "dsp")
+FORM_NAME = {"radix16": "radix-16 corner form", "dsp": "products corner form"}
 
 
 def fmt_ppm(v):
@@ -95,7 +99,7 @@ MARKERS = {"S x N x K": "o", "box bits": "s", "coord bits": "^", "fixed divider"
 
 
 def pareto_plot(points, ykey, ylabel, title, path, flag, whatif_flag):
-    fig, ax = plt.subplots(figsize=(9, 6))
+    fig, ax = plt.subplots(figsize=(12, 6))
     seen = set()
     for p in points:
         s = p["summary"]
@@ -109,9 +113,13 @@ def pareto_plot(points, ykey, ylabel, title, path, flag, whatif_flag):
             seen.add(label)
             continue
         est = s.get("area_source") == "estimate" and ykey == "luts"
-        label = f'{p["engine"]}: {p["group"]}' + (" (area estimate)" if est else "")
+        group, m = p["group"], MARKERS.get(p["group"], "o")
+        if p.get("unit") == "improved2":
+            # One series per engine and corner form: its groups are width axes of one unit.
+            group = "gen2" + (f' {p["corner_form"]}' if p.get("corner_form") else "")
+            m = "p" if p.get("corner_form") == "dsp" else "o"
+        label = f'{p["engine"]}: {group}' + (" (area estimate)" if est else "")
         c = COLORS.get(p["engine"], "gray")
-        m = MARKERS.get(p["group"], "o")
         ax.scatter(s["error_ppm"], s[ykey], c="none" if est else c, edgecolors=c, marker=m, s=40,
                    label=None if label in seen else label, alpha=0.85)
         seen.add(label)
@@ -134,7 +142,7 @@ def pareto_plot(points, ykey, ylabel, title, path, flag, whatif_flag):
     ax.set_ylabel(ylabel)
     ax.set_title(title, fontsize=10)
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0)
     fig.tight_layout()
     fig.savefig(path, dpi=110, metadata={"Software": None})
     plt.close(fig)
@@ -189,11 +197,11 @@ def main():
     # ---- plots ----
     pareto_plot(points, "cycles_per_triangle", "cycles per scene triangle (all scenes, log)",
                 "Cycles against error (timed engines; Pareto front of buildable hardware in "
-                "orange, numbered as in the table; x: model-only K what-ifs)",
+                "orange,\nnumbered as in the table; x: model-only K what-ifs)",
                 os.path.join(args.img, "cycles_vs_error.png"), "pareto_cycles", "whatif_cycles")
     pareto_plot(points, "luts", "LUTs, log" + ("" if am["have_synth"] else " (estimate)"),
                 "Area against error (hollow: estimated area; Pareto front of buildable hardware "
-                "in orange, numbered as in the table; x: model-only K what-ifs, area estimated)",
+                "in orange,\nnumbered as in the table; x: model-only K what-ifs, area estimated)",
                 os.path.join(args.img, "area_vs_error.png"), "pareto_area", "whatif_area")
 
     # Error against subpixel bits.
@@ -222,27 +230,37 @@ def main():
 
     # Improved vs traditional cycles per scene.
     imp, trad = find(points, "improved-sc", DEFAULT_CONFIG), find(points, "trad-sc", TRAD_DEFAULT)
-    cmp_rows = []
+    # The second generation at the default widths, each corner form (cycles differ by a few).
+    gen2 = {form: find(points, "improved2-sc", f"{GEN2_DEFAULT} {form}") for form in GEN2_FORMS}
+    g2 = gen2[GEN2_FORMS[0]]
+    cmp_rows = []  # (scene, improved, trad, gen2 or None)
     if imp and trad:
-        labels, ic, tc = [], [], []
+        labels, ic, tc, gc = [], [], [], []
         for i, sc in enumerate(scenes):
             a, b = imp["scenes"][i], trad["scenes"][i]
+            c = g2["scenes"][i] if g2 and "total_cycles" in g2["scenes"][i] else None
             if "total_cycles" in a and "total_cycles" in b:
                 labels.append(sc["label"])
                 ic.append(a["total_cycles"])
                 tc.append(b["total_cycles"])
-                cmp_rows.append((sc, a, b))
+                gc.append(c["total_cycles"] if c else 0)
+                cmp_rows.append((sc, a, b, c))
+        have_g2 = bool(cmp_rows) and all(r[3] for r in cmp_rows)
+        w = 0.27 if have_g2 else 0.4
         fig, ax = plt.subplots(figsize=(9, 4.5))
         x = range(len(labels))
-        ax.bar([i - 0.2 for i in x], ic, width=0.4, label="improved (improved-sc, default)",
-               color=COLORS["improved-sc"])
-        ax.bar([i + 0.2 for i in x], tc, width=0.4, label="traditional (trad-sc, S = 8)",
-               color=COLORS["trad-sc"])
+        ax.bar([i - w / (1 if have_g2 else 2) for i in x], ic, width=w,
+               label="improved, first generation (improved-sc, default)", color=COLORS["improved-sc"])
+        if have_g2:
+            ax.bar(list(x), gc, width=w, label="improved, second generation (improved2-sc, "
+                   f"{GEN2_FORMS[0]})", color=COLORS["improved2-sc"])
+        ax.bar([i + w / (1 if have_g2 else 2) for i in x], tc, width=w,
+               label="traditional (trad-sc, S = 8)", color=COLORS["trad-sc"])
         ax.set_yscale("log")
         ax.set_xticks(list(x))
         ax.set_xticklabels(labels, rotation=30, ha="right", fontsize=7)
         ax.set_ylabel("total cycles (log)")
-        ax.set_title("Improved vs traditional unit, cycles per scene", fontsize=10)
+        ax.set_title("Improved (both generations) vs traditional unit, cycles per scene", fontsize=10)
         ax.legend(fontsize=8)
         ax.grid(True, axis="y", alpha=0.3)
         fig.tight_layout()
@@ -327,9 +345,11 @@ def main():
                 "`gen2` plus its corner form, `dsp` (products, 1 cycle) or `radix16` "
                 "(digit-serial; the untimed improved2-datapath, whose spans the form does not "
                 "change, has none); always the step boundary and the adaptive, untruncated "
-                "divider with N = 1; a model-only configuration (`rtl` = 0: its RTL is the study "
-                "prototype of scripts/gen2_study/) whose area is unknown (`-`: not synthesized "
-                "by scripts/synth.sh, and the first generation's estimate does not apply)."
+                "divider with N = 1; buildable hardware (`rtl` = 1: rtl/trirast_improved2.f, "
+                "parametric in the widths, each corner form a build parameter) whose area is "
+                "synthesized per corner form (scripts/synth.sh; the `improved2-products` and "
+                "`improved2` rows) and elsewhere its own width formula scaled to that synthesis, "
+                "never the first generation's."
                 if any(p.get("unit") == "improved2" for p in points) else "") + "\n"
              "- **Fronts** (columns of `sweep_configs.csv` and `sweep.json`): `pareto_cycles` "
              "and `pareto_area` mark the fronts of buildable hardware (`rtl` = 1: the "
@@ -363,7 +383,8 @@ def main():
     L.append("Points on a front: no other configuration has both less error and fewer cycles "
              "(or LUTs). Both fronts are fronts of **buildable hardware**: the configurations "
              "the RTL implements (the improved unit without quotient truncation, the traditional "
-             "unit), whose area is synthesized. A configuration with quotient truncation `K` "
+             "unit, and the second-generation unit when the run sweeps it), whose area is "
+             "synthesized. A configuration with quotient truncation `K` "
              "exists only in the C++ models (the RTL's divider always has Q = box bits + 1 "
              "quotient bits; the improved-rtl engine refuses K, dv/verilator/rtl_engine.cpp): "
              "there is nothing to synthesize, its area is an estimate, and it is shown apart, "
@@ -445,7 +466,10 @@ def main():
         e = r.get("estimate")
         if not e or (merged and not r.get("from_run")):
             continue
-        calib = (r["unit"] == "improved" and r["subpixel_bits"] == 8 and r["coord_bits"] == 16
+        # The calibration points: the default widths of the improved unit (both first-generation
+        # units' scale) and of each second-generation corner form (its own scale).
+        calib = (r["unit"] in ("improved", "improved2", "improved2-products")
+                 and r["subpixel_bits"] == 8 and r["coord_bits"] == 16
                  and r["box_bits"] == 14 and r.get("endpoints", 1) == 1)
         el = 100.0 * (e["luts"] - r["luts"]) / r["luts"] if r["luts"] else 0.0
         ef = 100.0 * (e["ffs"] - r["ffs"]) / r["ffs"] if r["ffs"] else 0.0
@@ -467,14 +491,15 @@ def main():
         mean_abs = lambda v: sum(abs(x) for x in v) / len(v)
         parts = []
         for unit, (el, ef) in sorted(errs.items()):
-            parts.append(f"the {unit} unit, {len(el)} configurations: LUTs mean |error| "
+            parts.append(f"the {unit} unit, {len(el)} configuration{'s' if len(el) != 1 else ''}: LUTs mean |error| "
                          f"**{mean_abs(el):.1f}%** (from {min(el):+.1f}% to {max(el):+.1f}%), "
                          f"flip-flops mean |error| **{mean_abs(ef):.1f}%** (from {min(ef):+.1f}% "
                          f"to {max(ef):+.1f}%)")
         L.append("The estimate against synthesis, every configuration synthesized "
                  + ("in this run " if merged else "") + "but the "
-                 "calibration point (the default improved unit, to which both units' estimates "
-                 "are scaled): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
+                 "calibration points (the default improved unit, to which the improved and "
+                 "traditional units' estimates are scaled; the second-generation unit's own "
+                 "default per corner form, to which its estimate is scaled): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
                  "synthesis." + (" Synthesis job results: `" + rel(d["merged_from"]) + "/synth/` "
                                  "(not checked in)." if merged else "") + "\n")
     fm = d.get("ice40_fmax", [])
@@ -488,38 +513,69 @@ def main():
     L.append("## Improved vs traditional unit\n")
     if cmp_rows:
         L.append(f"![improved vs trad]({img_rel}/improved_vs_trad.png)\n")
-        rows, ti, tt = [], 0, 0
-        for sc, a, b in cmp_rows:
+        have_g2 = bool(cmp_rows) and all(r[3] for r in cmp_rows)
+
+        def gain(a, b):  # (trad - unit) / trad, in %
+            return 100.0 * (b - a) / b
+
+        def median(v):
+            v = sorted(v)
+            m = len(v) // 2
+            return v[m] if len(v) % 2 else (v[m - 1] + v[m]) / 2
+
+        rows, ti, tt, tg = [], 0, 0, 0
+        for sc, a, b, c in cmp_rows:
             ti += a["total_cycles"]
             tt += b["total_cycles"]
-            gain = 100.0 * (b["total_cycles"] - a["total_cycles"]) / b["total_cycles"]
-            rows.append([sc["label"], fmt_int(a["total_cycles"]), fmt_int(b["total_cycles"]),
-                         f"{gain:+.1f}%",
-                         f"{a['total_cycles'] / max(sc['reference_triangles'], 1):.1f}",
-                         f"{b['total_cycles'] / max(sc['reference_triangles'], 1):.1f}"])
-        gain_all = 100.0 * (tt - ti) / tt
-        gains = sorted(100.0 * (b["total_cycles"] - a["total_cycles"]) / b["total_cycles"]
-                       for _, a, b in cmp_rows)
-        mid = len(gains) // 2
-        gain_median = gains[mid] if len(gains) % 2 else (gains[mid - 1] + gains[mid]) / 2
-        n_win = sum(1 for _, a, b in cmp_rows if a["total_cycles"] < b["total_cycles"])
-        rows.append(["**all scenes**", fmt_int(ti), fmt_int(tt), f"**{gain_all:+.1f}%**", "", ""])
-        rows.append(["**median of the scenes**", "", "", f"**{gain_median:+.1f}%**", "", ""])
-        rows.append(["*paper* (Zhang & Ruan)", "", "", f"*about +{PAPER_SPEEDUP_PCT}%*", "", ""])
-        L.append(f"Improved = `improved-sc {DEFAULT_CONFIG}` (the default), traditional = "
-                 f"`trad-sc {TRAD_DEFAULT}`; \"improved vs trad\" is (trad - improved) / trad, "
-                 "positive when the improved unit needs fewer cycles.\n")
+            ntri = max(sc["reference_triangles"], 1)
+            row = [sc["label"], fmt_int(a["total_cycles"]), fmt_int(b["total_cycles"]),
+                   f"{gain(a['total_cycles'], b['total_cycles']):+.1f}%",
+                   f"{a['total_cycles'] / ntri:.1f}", f"{b['total_cycles'] / ntri:.1f}"]
+            if have_g2:
+                tg += c["total_cycles"]
+                row += [fmt_int(c["total_cycles"]), f"{gain(c['total_cycles'], b['total_cycles']):+.1f}%",
+                        f"{c['total_cycles'] / ntri:.2f}"]
+            rows.append(row)
+        gain_all = gain(ti, tt)
+        gains = [gain(a["total_cycles"], b["total_cycles"]) for _, a, b, _ in cmp_rows]
+        gain_median = median(gains)
+        n_win = sum(1 for _, a, b, _ in cmp_rows if a["total_cycles"] < b["total_cycles"])
+        extra = 3 if have_g2 else 0
+        rows.append(["**all scenes**", fmt_int(ti), fmt_int(tt), f"**{gain_all:+.1f}%**", "", ""]
+                    + ([fmt_int(tg), f"**{gain(tg, tt):+.1f}%**", ""] if have_g2 else []))
+        g2_gains = [gain(c["total_cycles"], b["total_cycles"]) for _, _, b, c in cmp_rows] if have_g2 else []
+        rows.append(["**median of the scenes**", "", "", f"**{gain_median:+.1f}%**", "", ""]
+                    + (["", f"**{median(g2_gains):+.1f}%**", ""] if have_g2 else []))
+        rows.append(["*paper* (Zhang & Ruan)", "", "", f"*about +{PAPER_SPEEDUP_PCT}%*", "", ""]
+                    + [""] * extra)
+        L.append(f"Improved = `improved-sc {DEFAULT_CONFIG}` (the first generation, default), "
+                 f"traditional = `trad-sc {TRAD_DEFAULT}`"
+                 + (f", gen2 = `improved2-sc {GEN2_DEFAULT} {GEN2_FORMS[0]}` (the second "
+                    "generation, docs/gen2-design.md, at the same widths; its default corner form)"
+                    if have_g2 else "")
+                 + "; \"vs trad\" is (trad - unit) / trad, positive when the unit needs fewer "
+                 "cycles than the traditional one.\n")
         L.append(table(["scene", "improved cycles", "trad cycles", "improved vs trad",
-                        "improved cyc/tri", "trad cyc/tri"], rows,
-                       ["---", "---:", "---:", "---:", "---:", "---:"]) + "\n")
-        L.append(f"The improved unit needs fewer cycles on {n_win} of {len(cmp_rows)} scenes and "
-                 f"{gain_all:+.1f}% over all of them together (the median scene: "
-                 f"{gain_median:+.1f}%), against the paper's about +"
+                        "improved cyc/tri", "trad cyc/tri"]
+                       + (["gen2 cycles", "gen2 vs trad", "gen2 cyc/tri"] if have_g2 else []), rows,
+                       ["---", "---:", "---:", "---:", "---:", "---:"] + ["---:"] * extra) + "\n")
+        L.append(f"The first-generation improved unit needs fewer cycles on {n_win} of "
+                 f"{len(cmp_rows)} scenes and {gain_all:+.1f}% over all of them together (the "
+                 f"median scene: {gain_median:+.1f}%), against the paper's about +"
                  f"{PAPER_SPEEDUP_PCT}%. It wins where triangles are large or have long x-major "
                  "edges (near scenes, low-poly meshes, off-screen parts, which the traditional "
                  "unit walks row by row) and loses where triangles are a few pixels (its "
                  "divisions cost more than a few Bresenham steps), as docs/cycles-improved-vs-trad"
                  ".md explains.\n")
+        if have_g2:
+            g2_win = sum(1 for _, _, b, c in cmp_rows if c["total_cycles"] <= b["total_cycles"])
+            g2_best = sum(1 for _, a, _, c in cmp_rows if c["total_cycles"] <= a["total_cycles"])
+            L.append(f"The second generation needs no more cycles than the traditional unit on "
+                     f"{g2_win} of {len(cmp_rows)} scenes ({gain(tg, tt):+.1f}% over all of them, "
+                     f"the median scene {median(g2_gains):+.1f}%) and no more than the first "
+                     f"generation on {g2_best} of {len(cmp_rows)}: its set-up is a pipeline that "
+                     "overlaps the walk and retires boxes without a pixel centre early "
+                     "(docs/timing.md, \"The second-generation improved unit\").\n")
     ai, at = am["default_improved"], am["default_trad"]
     pi, pt = PAPER_TABLE1["improved"], PAPER_TABLE1["trad"]
 
@@ -531,23 +587,33 @@ def main():
         ["improved Bresenham", fmt_int(pi[0]), fmt_int(pi[1]), "*paper*"],
         ["traditional Bresenham", fmt_int(pt[0]), fmt_int(pt[1]), "*paper*"],
         ["trad / improved", f"{pt[0] / pi[0]:.2f}", f"{pt[1] / pi[1]:.2f}", "*paper*"],
-        ["improved, ours", fmt_int(ai["ffs"]), fmt_int(ai["luts"]), mark(ai["source"])],
+        ["improved (first generation), ours", fmt_int(ai["ffs"]), fmt_int(ai["luts"]), mark(ai["source"])],
         ["traditional, ours", fmt_int(at["ffs"]), fmt_int(at["luts"]), mark(at["source"])],
         ["trad / improved, ours", f"{at['ffs'] / ai['ffs']:.2f}", f"{at['luts'] / ai['luts']:.2f}",
          "estimate" if "estimate" in (ai["source"], at["source"]) else "synth"],
-    ], ["---", "---:", "---:", "---"]) + "\n")
+    ] + [[f"improved, second generation, ours ({FORM_NAME[form]})", fmt_int(p["summary"]["ffs"]),
+           fmt_int(p["summary"]["luts"]), mark(p["summary"]["area_source"])]
+         for form, p in gen2.items() if p and "luts" in p["summary"]],
+        ["---", "---:", "---:", "---"]) + "\n")
     if at["source"] == "estimate":
         L.append("Our traditional unit is an estimate here (no synthesis of its RTL was found): "
                  "its datapath has no divider and integer-pixel coordinates, so the width formula "
                  "makes it smaller than the improved unit, the opposite of the paper's Table 1.\n")
     else:
         L.append("Both of ours are synthesized RTL (docs/synth.md). Our traditional unit is "
-                 "smaller than our improved one, the opposite of the paper's Table 1: it has no "
+                 "smaller than our first-generation improved one, the opposite of the paper's Table 1: it has no "
                  "divider, no corner-value multipliers and integer-pixel coordinates (two "
                  "Bresenham walkers and a span filler, docs/rtl.md), while the improved unit "
                  "carries three dividers, nine corner multipliers and 16.8 fixed-point edge "
                  "values. The paper does not describe its traditional design in enough detail to "
                  "say where its extra area comes from.\n")
+
+    if any(p and "luts" in p["summary"] for p in gen2.values()):
+        L.append("The second generation's rows are its two corner forms, each synthesized for "
+                 "xilinx7 like the others (docs/synth.md): the products form (the corner values' "
+                 "products as multipliers, which xc7 maps to DSP blocks; the xc7 form) and the "
+                 "radix-16 form (digit-serial corner values, no multipliers; the default and "
+                 "iCE40 form). docs/synth.md has their DSP and iCE40 figures.\n")
 
     # Subpixel bits.
     L.append("## Subpixel bits: error of each engine\n")
@@ -667,7 +733,10 @@ def main():
                  "bits, then the quotient truncation (binary search, each step checked against "
                  "the reference with the bit-accurate unit model), and keeps the S whose result has "
                  "the fewest LUTs; N = 1 (N does not change the output). Cycles are the SystemC "
-                 "model's, the default against the fit."
+                 "model's, the default against the fit. The second-generation unit (`--unit "
+                 "improved2`) has no quotient truncation; its area is that of its corner form "
+                 "(the radix-16 form unless `--corner-form dsp`), an estimate scaled to its own "
+                 "synthesis away from the default widths."
                  + (" Its areas are not the run's synthesis: `trirast fit` reads docs/synth.csv "
                     "(scripts/synth.sh, which may be of an older RTL) where it covers the "
                     "configuration, else the estimate (marked); a fit with quotient truncation "
@@ -678,7 +747,9 @@ def main():
             ft, df, sv = f["fit"], f["default"], f["saved"]
             div = (f"K={ft['quotient_bits']} of Q={ft['divider_q']}" if ft["quotient_bits"]
                    else f"Q={ft['divider_q']}")
-            rows.append([f"`{f['scene']}`" + (f" (cull {f['cull']})" if f["cull"] != "none" else ""),
+            unit = f.get("unit", "improved")
+            unit = unit + (f" ({f['corner_form']})" if f.get("corner_form") else "")
+            rows.append([unit, f"`{f['scene']}`" + (f" (cull {f['cull']})" if f["cull"] != "none" else ""),
                          fmt_ppm(f["error_budget_ppm"]),
                          f"S={ft['subpixel_bits']} c={ft['coord_bits']} b={ft['box_bits']} "
                          f"divider {div} quotient bits, N={ft['endpoints']}",
@@ -691,11 +762,18 @@ def main():
                                                              ft["area_source"]) else ""),
                          f"{fmt_int(df['ffs'])} -> {fmt_int(ft['ffs'])} ({sv['ffs_pct']:.1f}% "
                          "saved)"])
-        L.append(table(["scene", "budget ppm", "smallest configuration", "error ppm", "rejected",
-                        "cycles default -> fit (saved)", "LUTs default -> fit", "FFs default -> fit"],
-                       rows, ["---", "---:", "---", "---:", "---:", "---:", "---:", "---:"]) + "\n")
+        L.append(table(["unit", "scene", "budget ppm", "smallest configuration", "error ppm",
+                        "rejected", "cycles default -> fit (saved)", "LUTs default -> fit",
+                        "FFs default -> fit"],
+                       rows, ["---", "---", "---:", "---", "---:", "---:", "---:", "---:", "---:"])
+                 + "\n")
         for f in fits:
-            cmd = f"trirast fit --scene {f['scene']}"
+            cmd = "trirast fit"
+            if f.get("unit", "improved") != "improved":
+                cmd += f" --unit {f['unit']}"
+                if f.get("corner_form") == "dsp":
+                    cmd += " --corner-form dsp"
+            cmd += f" --scene {f['scene']}"
             if f["cull"] != "none":
                 cmd += f" --cull {f['cull']}"
             if f["error_budget_ppm"]:

@@ -6,7 +6,7 @@
 # - --synth first runs scripts/synth.sh (Yosys; minutes), so that docs/synth.csv is from this run;
 #   without it an existing docs/synth.csv is read, and the report says so;
 # - runs `trirast sweep` (engines x configurations x scenes) and `trirast fit` on three scenes
-#   (and one with an error budget);
+#   (and one with an error budget), and the second-generation unit's fit in both corner forms;
 # - plots with Debian's /usr/bin/python3 (matplotlib) and writes the report.
 # Outputs: default: data in build/sweep/, docs/speed-vs-error.md, plots in docs/img/speed-vs-error/.
 #          --out DIR: everything in DIR (DIR/speed-vs-error.md, DIR/img/speed-vs-error/, data).
@@ -90,11 +90,15 @@ if [ "$QUICK" = 1 ]; then
   fit 2 --scene builtin:lowpoly-near
   fit 3 --scene builtin:hard-tiny
   fit 4 --scene builtin:mixed:objects=2,tess=8 --error-budget 1000
+  fit 5 --unit improved2 --scene builtin:sphere:tess=12 --cull back
+  fit 6 --unit improved2 --corner-form dsp --scene builtin:sphere:tess=12 --cull back
 else
   fit 1 --scene builtin:sphere --cull back
   fit 2 --scene builtin:highpoly-far
   fit 3 --scene builtin:hard-all
   fit 4 --scene builtin:mixed --error-budget 1000
+  fit 5 --unit improved2 --scene builtin:sphere --cull back
+  fit 6 --unit improved2 --corner-form dsp --scene builtin:sphere --cull back
 fi
 
 CMD="scripts/sweep.sh"

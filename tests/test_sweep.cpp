@@ -102,7 +102,8 @@ TEST(SweepScript, QuickModeWritesEveryOutput) {
   ASSERT_EQ(r.status, 0) << r.err;
   for (const char* f : {"data/sweep.csv", "data/sweep_configs.csv", "data/sweep.json",
                         "data/fit_1.json", "data/fit_2.json", "data/fit_3.json",
-                        "data/fit_4.json", "speed-vs-error.md"})
+                        "data/fit_4.json", "data/fit_5.json", "data/fit_6.json",
+                        "speed-vs-error.md"})
     EXPECT_TRUE(file_exists(dir.file(f)) && !slurp(dir.file(f)).empty()) << f;
   for (const char* png : {"cycles_vs_error.png", "area_vs_error.png", "error_vs_subpixel.png",
                           "improved_vs_trad.png"})
@@ -123,7 +124,7 @@ TEST(SweepScript, QuickModeWritesEveryOutput) {
        {"Pareto", "cycles front", "area front", "Improved vs traditional", "32%", "3,120", "4,653",
         "3,728", "6,936", "float scanline", "Cracks and double hits", "trirast fit",
         "builtin:sphere:tess=12", "builtin:lowpoly-near", "builtin:hard-tiny", "estimate",
-        "Model-only what-ifs", "buildable hardware",
+        "Model-only what-ifs", "buildable hardware", "improved2 (radix16)", "improved2 (dsp)",
         "quick mode"})
     EXPECT_NE(md.find(needle), std::string::npos) << "report lacks: " << needle;
 }
@@ -338,11 +339,14 @@ TEST(SweepImproved2, CornerFormsSweptExactWithTheirOwnArea) {
     EXPECT_EQ(row.at("failures"), "0") << row.at("config");
     const std::string& name = row.at("config");
     const bool default_widths = name.rfind("S8 c16 b14 ", 0) == 0;
-    EXPECT_EQ(row.at("luts"), !default_widths                      ? ""
-                              : name.find(" dsp") != std::string::npos ? "4300"
-                                                                       : "6100")
-        << name;
-    EXPECT_EQ(row.at("area_source"), default_widths ? "synth:xilinx7" : "") << name;
+    // At the default widths the form's synthesized row; elsewhere the second generation's own
+    // estimate, scaled to that row (smaller widths: less area).
+    const int synthesized = name.find(" dsp") != std::string::npos ? 4300 : 6100;
+    if (default_widths)
+      EXPECT_EQ(row.at("luts"), std::to_string(synthesized)) << name;
+    else
+      EXPECT_LT(std::stoi(row.at("luts")), synthesized) << name;
+    EXPECT_EQ(row.at("area_source"), default_widths ? "synth:xilinx7" : "estimate") << name;
     EXPECT_EQ(row.at("rtl"), "1") << name;
     // The same pixels as the first generation at the same widths.
     std::string gen1 = row.at("config");
@@ -382,7 +386,8 @@ TEST(SweepImproved2, CornerFormsSweptExactWithTheirOwnArea) {
                                "builtin:lowpoly-far")->at("total_cycles")),
             std::stol(find_row(rows, "improved2-sc", "S8 c16 b14 N1 gen2 dsp",
                                "builtin:lowpoly-far")->at("total_cycles")));
-  // The JSON names the corner form and gives its synthesized area; a point of other widths none.
+  // The JSON names the corner form and gives its synthesized area; a point of other widths its
+  // estimate.
   const std::string json = slurp(dir.file("out/sweep.json"));
   const size_t at = json.find("\"config\": \"S8 c16 b14 N1 gen2 dsp\"");
   ASSERT_NE(at, std::string::npos);
@@ -392,7 +397,7 @@ TEST(SweepImproved2, CornerFormsSweptExactWithTheirOwnArea) {
   const size_t other = json.find("\"config\": \"S4 c16 b14 N1 gen2 dsp\"");
   ASSERT_NE(other, std::string::npos);
   const std::string point2 = json.substr(other, json.find("\"scenes\"", other) - other);
-  EXPECT_EQ(point2.find("\"luts\""), std::string::npos) << point2;
+  EXPECT_NE(point2.find("\"area_source\": \"estimate\""), std::string::npos) << point2;
 }
 
 TEST(SweepCli, BadUsageIsOneLine) {
@@ -403,7 +408,10 @@ TEST(SweepCli, BadUsageIsOneLine) {
         std::string("sweep --scenes '' --out ") + dir.file("x"), std::string("fit"),
         std::string("fit --scene builtin:sphere --error-budget -1"),
         std::string("fit --scene builtin:sphere --endpoints 3"),
-        std::string("fit --scene builtin:nosuchscene")}) {
+        std::string("fit --scene builtin:nosuchscene"),
+        std::string("fit --scene builtin:sphere --unit improved3"),
+        std::string("fit --scene builtin:sphere --corner-form dsp"),
+        std::string("fit --scene builtin:sphere --unit improved2 --corner-form fast")}) {
     const CommandResult r = run_command(kBin + " " + args);
     EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
@@ -451,6 +459,39 @@ TEST(Fit, IntegerVerticesFitTheSmallestWidths) {
   EXPECT_EQ(json_field(j, "fit", "coord_bits"), "7") << j;
   EXPECT_EQ(json_field(j, "fit", "box_bits"), "4") << j;
   EXPECT_EQ(json_field(j, "fit", "error_ppm"), "0") << j;
+}
+
+// The second generation: the same widths as the first on the same scene (both follow the rule;
+// neither has a quotient truncation here), its own cycles (improved2-sc) and its own area, per
+// corner form: the synthesized row at the default, an estimate scaled to it at the fit.
+TEST(Fit, SecondGenerationFitsItsOwnUnit) {
+  TempDir dir;
+  const std::string scene = " --width 64 --height 64 --scene " + dir.file("ints.tri");
+  write_file(dir.file("ints.tri"), "0 0 10 0 0 10\n10 0 10 10 0 10\n20 20 30 25 22 30\n");
+  ASSERT_EQ(run_command(kBin + " fit" + scene + " --report " + dir.file("g1.json")).status, 0);
+  const CommandResult r = run_command(kBin + " fit --unit improved2" + scene + " --report " +
+                                      dir.file("g2.json"));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("unit improved2 (radix16)"), std::string::npos) << r.out;
+  ASSERT_EQ(run_command(kBin + " fit --unit improved2 --corner-form dsp" + scene + " --report " +
+                        dir.file("dsp.json")).status, 0);
+  const std::string g1 = slurp(dir.file("g1.json")), g2 = slurp(dir.file("g2.json")),
+                    dsp = slurp(dir.file("dsp.json"));
+  for (const char* key : {"subpixel_bits", "coord_bits", "box_bits"}) {
+    EXPECT_EQ(json_field(g2, "fit", key), json_field(g1, "fit", key)) << key;
+    EXPECT_EQ(json_field(dsp, "fit", key), json_field(g1, "fit", key)) << key;
+  }
+  EXPECT_EQ(json_field(g2, "fit", "quotient_bits"), "0");
+  EXPECT_EQ(json_field(g2, "fit", "error_ppm"), "0");
+  // Cycles of the second generation's model, not the first's.
+  EXPECT_NE(json_field(g2, "default", "total_cycles"), json_field(g1, "default", "total_cycles"));
+  // Area: the synthesized rows of docs/synth.csv at the default, each form its own; the fit an
+  // estimate below it.
+  EXPECT_EQ(json_field(g2, "default", "area_source"), "\"synth:xilinx7\"");
+  EXPECT_EQ(json_field(g2, "fit", "area_source"), "\"estimate\"");
+  EXPECT_LT(std::stod(json_field(g2, "fit", "luts")), std::stod(json_field(g2, "default", "luts")));
+  EXPECT_NE(json_field(dsp, "default", "luts"), json_field(g2, "default", "luts"));
+  EXPECT_NE(json_field(g2, "default", "luts"), json_field(g1, "default", "luts"));
 }
 
 TEST(Fit, ABudgetAllowsFewerBits) {
@@ -570,6 +611,25 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   EXPECT_FALSE(hs.estimate(UnitKind::Improved2, RasterConfig{}).known());
   RasterConfig products;
   products.g2_corner_form = 0;
+  // With its own row (radix 16 only): its estimate meets that row at the default widths and
+  // grows with the widths; the products form, not synthesized, stays unknown.
+  write_file(dir.file("g2.csv"),
+             "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
+             "improved,default,xilinx7,6536,2320,818,0,9,\n"
+             "improved2,default,xilinx7,6100,2700,900,0,0,\n");
+  const AreaModel g2(dir.file("g2.csv"), dir.file("missing.sh"));
+  const Area g2_def = g2.estimate(UnitKind::Improved2, RasterConfig{});
+  EXPECT_EQ(g2_def.luts, 6100);
+  EXPECT_EQ(g2_def.ffs, 2700);
+  EXPECT_EQ(g2.area(UnitKind::Improved2, RasterConfig{}).source, "synth:xilinx7");
+  RasterConfig g2_wide;
+  g2_wide.coord_int_bits = 20;
+  const Area w = g2.area(UnitKind::Improved2, g2_wide);
+  EXPECT_EQ(w.source, "estimate");
+  EXPECT_GT(w.luts, 6100);
+  EXPECT_GT(w.ffs, 2700);
+  EXPECT_FALSE(g2.area(UnitKind::Improved2, products).known());
+  EXPECT_EQ(g2.area(UnitKind::Improved, RasterConfig{}).luts, 6536);  // gen1 unchanged
   EXPECT_EQ(synth_unit_name(UnitKind::Improved2, RasterConfig{}), "improved2");
   EXPECT_EQ(synth_unit_name(UnitKind::Improved2, products), "improved2-products");
   EXPECT_EQ(hs.fmax_mhz(UnitKind::Improved2, RasterConfig{}), 0);

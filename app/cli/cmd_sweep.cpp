@@ -286,14 +286,19 @@ Json area_model_json(const AreaModel& area, const std::string& csv) {
                    .set("file", r.origin.empty() ? csv : r.origin)
                    .set("from_run", r.from_run);
     // The width formula's figures for the same widths (the units that have one).
-    if (r.unit == "improved" || r.unit == "trad") {
+    const bool g2 = r.unit == "improved2" || r.unit == "improved2-products";
+    if (r.unit == "improved" || r.unit == "trad" || g2) {
       RasterConfig c;
       c.subpixel_bits = r.subpixel_bits;
       c.coord_int_bits = r.coord_bits;
       c.box_bits = r.box_bits;
       c.endpoints = r.endpoints;
-      const Area e = area.estimate(r.unit == "trad" ? UnitKind::Trad : UnitKind::Improved, c);
-      row.set("estimate", Json::object().set("luts", e.luts).set("ffs", e.ffs));
+      c.g2_corner_form = r.unit == "improved2-products" ? 0 : 1;
+      const Area e = area.estimate(r.unit == "trad" ? UnitKind::Trad
+                                   : g2             ? UnitKind::Improved2
+                                                    : UnitKind::Improved,
+                                   c);
+      if (e.known()) row.set("estimate", Json::object().set("luts", e.luts).set("ffs", e.ffs));
     }
     rows.push(std::move(row));
   }
@@ -359,7 +364,7 @@ int cmd_sweep(int argc, char** argv) {
              {"--jobs", "N", "worker processes running points in parallel, 1..64", "1"},
              {"--out", "DIR", "output directory (created): sweep.csv, sweep_configs.csv, sweep.json; with --shard / --task: the results directory (DIR/tasks, DIR/run.log)", "sweep-out"},
              {"--scenes", "LIST", "';'-separated SPEC[@back|@front][@closed] (closed: count cracks and double hits); default: the built-in list", ""},
-             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline,improved-rtl (default) and improved-datapath, halfspace-sc, halfspace-datapath, halfspace-rtl (the half-space unit over its stamp, tile and walk; area where scripts/synth.sh synthesized it), improved2-sc, improved2-datapath (the second-generation unit at the improved unit's widths with N = 1, corner form dsp / radix16; area unknown: not synthesized by scripts/synth.sh)", ""},
+             {"--engines", "LIST", "comma-separated engines to sweep: golden,improved-sc,trad-sc,float-scanline,improved-rtl (default) and improved-datapath, halfspace-sc, halfspace-datapath, halfspace-rtl (the half-space unit over its stamp, tile and walk; area where scripts/synth.sh synthesized it), improved2-sc, improved2-datapath (the second-generation unit at the improved unit's widths with N = 1, corner form dsp / radix16; area where scripts/synth.sh or the sweep's synthesis jobs synthesized that form at those widths)", ""},
              {"--width", "W", "viewport width in pixels", "1024"},
              {"--height", "H", "viewport height in pixels", "768"},
              {"--synth-csv", "FILE", "synthesis results (unit,config,target,luts,ffs,...); missing file = estimates only", "docs/synth.csv of the source tree"},
@@ -615,8 +620,7 @@ int cmd_sweep(int argc, char** argv) {
   };
   for (size_t p = 0; p < points.size(); ++p)
     if (summaries[p].pareto_cycles) front_row(p, "(area not synthesized)");
-  // The model-only front (quotient truncation; the second-generation unit, whose RTL is not in
-  // rtl/): configurations no other one dominates.
+  // The model-only front (quotient truncation): configurations no other one dominates.
   bool whatif_header = false;
   for (size_t p = 0; p < points.size(); ++p)
     if (summaries[p].whatif_cycles) {
@@ -650,6 +654,8 @@ int cmd_fit(int argc, char** argv) {
   std::vector<OptionSpec> specs = scene_input_options();
   const std::vector<OptionSpec> fit_specs = {
       {"--error-budget", "PPM", "allowed missing + extra pixels, parts per million of the reference's", "0"},
+      {"--unit", "UNIT", "improved (the first generation) | improved2 (the second generation: no quotient truncation to search)", "improved"},
+      {"--corner-form", "FORM", "improved2: corner values by dsp (products) | radix16; the area's form (the spans do not change)", "radix16"},
       {"--endpoints", "N", "N of the fitted configuration (does not change the output; 1 is the smallest)", "1"},
       {"--report", "FILE.json", "write the search and the result as JSON", ""},
       {"--synth-csv", "FILE", "synthesis results; missing file = estimates only (with a warning)", "docs/synth.csv of the source tree"},
@@ -662,7 +668,9 @@ int cmd_fit(int argc, char** argv) {
     std::cout << "Find the smallest configuration of the improved unit (subpixel bits, coordinate\n"
                  "width, box / divider width, quotient truncation, N) whose output on the scene is\n"
                  "exact against the golden at S = 8 (or within --error-budget ppm), by area, and\n"
-                 "the cycles (SystemC model) and area it saves against the default.\n\n"
+                 "the cycles (SystemC model) and area it saves against the default. --unit\n"
+                 "improved2 fits the second-generation unit (its widths; its area per corner\n"
+                 "form, an estimate scaled to its own synthesis at the default widths).\n\n"
               << a.help_text();
     return 0;
   }
@@ -672,6 +680,20 @@ int cmd_fit(int argc, char** argv) {
   base.height = int(a.get_int("--height", 1, kMaxViewport));
   const int endpoints = int(a.get_int("--endpoints", 1, 4));
   if (endpoints == 3) throw UsageError("trirast fit: --endpoints: 3 is not 1, 2 or 4");
+  const std::string unit_name = a.get("--unit");
+  if (unit_name != "improved" && unit_name != "improved2")
+    throw UsageError("trirast fit: --unit: '" + unit_name + "' is not improved or improved2");
+  const bool gen2 = unit_name == "improved2";
+  const UnitKind kind = gen2 ? UnitKind::Improved2 : UnitKind::Improved;
+  int corner_form = 1;
+  try {
+    corner_form = parse_corner_form(a.get("--corner-form"));
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("trirast fit: --corner-form: ") + e.what());
+  }
+  if (a.has("--corner-form") && !gen2)
+    throw UsageError("trirast fit: --corner-form applies to --unit improved2 only");
+  const std::string form_name = !gen2 ? "" : corner_form ? "radix16" : "dsp";
   const double budget = a.get_double("--error-budget");
   if (!(budget >= 0) || !std::isfinite(budget))
     throw UsageError("trirast fit: --error-budget: must be a number >= 0");
@@ -699,8 +721,9 @@ int cmd_fit(int argc, char** argv) {
   Json search = Json::array();
   auto make_point = [&](int S, int coord, int box, int K) {
     SweepPoint p;
-    p.engine = "improved-datapath";
+    p.engine = gen2 ? "improved2-datapath" : "improved-datapath";
     p.group = "fit";
+    p.cfg.g2_corner_form = corner_form;
     p.cfg.width = base.width;
     p.cfg.height = base.height;
     p.cfg.subpixel_bits = S;
@@ -753,14 +776,15 @@ int cmd_fit(int argc, char** argv) {
       return eval(make_point(S, c, def.box_bits, 0)).ok;
     });
     const int box = smallest(1, def.box_bits, [&](int b) { return eval(make_point(S, coord, b, 0)).ok; });
-    // Quotient truncation: K = box + 1 is the untruncated divider (Q), written as automatic.
-    int K = smallest(1, box + 1, [&](int k) {
+    // Quotient truncation: K = box + 1 is the untruncated divider (Q), written as automatic
+    // (the second generation has none).
+    int K = gen2 ? box + 1 : smallest(1, box + 1, [&](int k) {
       return eval(make_point(S, coord, box, k == box + 1 ? 0 : k)).ok;
     });
     if (K == box + 1) K = 0;
     p = make_point(S, coord, box, K);
     e = eval(p);
-    const Area ar = area.area(UnitKind::Improved, p.cfg);
+    const Area ar = area.area(kind, p.cfg);
     search.push(row.set("feasible", true)
                     .set("coord_bits", coord)
                     .set("box_bits", box)
@@ -783,13 +807,14 @@ int cmd_fit(int argc, char** argv) {
   // Cycles of the default and of the fit on the timed SystemC model.
   auto timed = [&](RasterConfig cfg) {
     SweepPoint p;
-    p.engine = "improved-sc";
+    p.engine = gen2 ? "improved2-sc" : "improved-sc";
     p.cfg = cfg;
     return run_sweep_point(p, scene);
   };
   RasterConfig def_cfg;
   def_cfg.width = base.width;
   def_cfg.height = base.height;
+  def_cfg.g2_corner_form = corner_form;
   const PointResult def_run = timed(def_cfg);
   const PointResult fit_run = timed(best->point.cfg);
   // The timed model runs the same datapath as the unit: its spans must agree.
@@ -797,16 +822,17 @@ int cmd_fit(int argc, char** argv) {
       fit_run.extra != best->eval.result.extra)
     throw std::runtime_error("fit: the SystemC model and the unit model disagree on the fitted "
                              "configuration" + (fit_run.error.empty() ? "" : ": " + fit_run.error));
-  const Area def_area = area.area(UnitKind::Improved, def_cfg);
+  const Area def_area = area.area(kind, def_cfg);
   auto pct = [](double saved, double of) { return of > 0 ? 100.0 * saved / of : 0.0; };
   const double cyc_saved = double(def_run.total_cycles) - double(fit_run.total_cycles);
   const double lut_saved = def_area.luts - best->area.luts, ff_saved = def_area.ffs - best->area.ffs;
   const RasterConfig& f = best->point.cfg;
 
-  std::printf("trirast fit: scene %s, cull %s, budget %g ppm, %" PRIu64 " triangles, %" PRId64
-              " reference pixels\n",
-              spec.spec.c_str(), cull_mode_name(spec.cull), budget,
-              uint64_t(scene.scene.tris.size()), scene.reference_pixels);
+  std::printf("trirast fit: unit %s%s, scene %s, cull %s, budget %g ppm, %" PRIu64
+              " triangles, %" PRId64 " reference pixels\n",
+              unit_name.c_str(), gen2 ? (" (" + form_name + ")").c_str() : "", spec.spec.c_str(),
+              cull_mode_name(spec.cull), budget, uint64_t(scene.scene.tris.size()),
+              scene.reference_pixels);
   std::printf("  %-3s %-9s %-6s %-5s %-4s %12s %10s %10s  %s\n", "S", "feasible", "coord", "box",
               "K", "error ppm", "LUTs", "FFs", "area");
   for (const Candidate& c : candidates)
@@ -844,6 +870,8 @@ int cmd_fit(int argc, char** argv) {
     };
     Json doc = Json::object();
     doc.set("command", command_line(argc, argv))
+        .set("unit", unit_name)
+        .set("corner_form", form_name)
         .set("scene", spec.spec)
         .set("cull", cull_mode_name(spec.cull))
         .set("error_budget_ppm", budget)

@@ -116,6 +116,39 @@ AreaTerms trad_area_terms(const RasterConfig& cfg) {
   return t;
 }
 
+// Second-generation unit (docs/gen2-design.md, docs/timing.md): the same widths as the improved
+// unit; its own stages: the box stage (triangle register without C, box, the corner operands),
+// the corner values E_L per edge (radix 16: digit-serial accumulators with the signed
+// multiplicands and a digit counter; products: the multipliers are DSPs and not counted, their
+// sums are), the 2x2 direct test on E_L >> F, three lanes (remainder, quotient, counter, boundary
+// results), three walkers (X', e and the bound per edge), the span generator's parallel compares
+// and the FIFO.
+AreaTerms improved2_area_terms(const RasterConfig& cfg) {
+  const double F = cfg.frac_bits(), p = cfg.coord_int_bits + F, c = cfg.coord_int_bits;
+  const double A = p + 1, D = p + F, E = 2 * p + 2, bb = cfg.box_bits;
+  const double Q = cfg.box_bits + 1, X = Q + 2, N = cfg.endpoints;
+  const bool radix16 = cfg.g2_corner_form != 0;
+  AreaTerms t;
+  // Flip-flops.
+  t.ffs += 6 * p + 3 * 2 * A;                               // triangle register (v, A, B)
+  t.ffs += 4 * c + 2 * bb + 3 * 2 * (A + 1);                // box, corner operands
+  t.ffs += 3 * E + (radix16 ? 3 * 2 * (A + 1) + log2_ceil(int(E / 4) + 1) : 0);  // E_L; digits
+  t.ffs += 2 * (3 * c + kTagBits);                          // 2x2 test's output (two spans, tag)
+  t.ffs += 3 * (E + Q + log2_ceil(int(Q) + 1) + 2 * D + X + 4);  // lanes
+  t.ffs += 3 * (X + 2 * D + 2) + bb + 4 * c + 4;            // walk stage: X', e, bound; row; box
+  // LUTs.
+  t.luts += 10 * p + 6 * A;                                 // box min/max/clip, corner operands
+  t.luts += radix16 ? 3 * (E + 4 * (A + 1)) : 3 * 2 * E;    // digit adds and accumulators / sums
+  t.luts += 12 * (E - F);                                   // 2x2 direct test
+  t.luts += 3 * (2 * E + Q + 2 * D);                        // lanes: divider, steps, boundary
+  t.luts += 3 * N * (2 * X + 2 * D);                        // walkers, N rows per cycle
+  t.luts += N * (6 * X + 2 * c);                            // span generator, N rows
+  const AreaTerms f = fifo_terms(cfg, cfg.endpoints);
+  t.ffs += f.ffs;
+  t.luts += f.luts;
+  return t;
+}
+
 AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_script) {
   // Configuration names -> widths: scripts/synth.sh's CONFIGS line, else the names it used.
   std::map<std::string, std::vector<int>> widths = {
@@ -189,12 +222,23 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
 }
 
 // Scales the estimate to the synthesized default improved unit, when synthesis has it.
+// The second-generation unit's estimate is scaled to its own synthesis at the default widths, per
+// corner form; without that row it has none (never the first generation's scale).
 void AreaModel::calibrate() {
   const RasterConfig def;
   if (const SynthRow* d = find("improved", def)) {
     const AreaTerms t = improved_area_terms(def);
     lut_scale_ = d->luts / t.luts;
     ff_scale_ = d->ffs / t.ffs;
+  }
+  for (int form = 0; form < 2; ++form) {
+    RasterConfig g2 = def;
+    g2.g2_corner_form = form;
+    g2_scale_[form] = {0, 0};
+    if (const SynthRow* d = find(synth_unit_name(UnitKind::Improved2, g2), g2)) {
+      const AreaTerms t = improved2_area_terms(g2);
+      g2_scale_[form] = {d->luts / t.luts, d->ffs / t.ffs};
+    }
   }
 }
 
@@ -226,6 +270,15 @@ void AreaModel::add_rows(const std::vector<SynthRow>& rows) {
 
 Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
+  if (kind == UnitKind::Improved2) {
+    const std::pair<double, double>& k = g2_scale_[cfg.g2_corner_form != 0];
+    if (k.first <= 0) return a;  // not calibrated: no synthesis of this corner form
+    const AreaTerms t = improved2_area_terms(cfg);
+    a.luts = std::round(t.luts * k.first);
+    a.ffs = std::round(t.ffs * k.second);
+    a.source = "estimate";
+    return a;
+  }
   if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;
   const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
   a.luts = std::round(t.luts * lut_scale_);
@@ -278,7 +331,9 @@ std::string AreaModel::formula_text() const {
        "truncated K, walker Q + 2), the walker adders and span generator counted N times for N "
        "endpoints, a span FIFO of DEPTH x (32-bit tag + 3 x coord) bits; the traditional unit from "
        "integer pixel coordinates (three Bresenham lines, two walkers, span filler, the same "
-       "FIFO). ";
+       "FIFO); the second-generation unit from its own stages (box stage, corner values per "
+       "corner form, 2x2 direct test, lanes, walkers, span generator, the same FIFO), scaled to "
+       "its own synthesis at the default widths per corner form and unknown without it. ";
   if (lut_scale_ != 1 || ff_scale_ != 1)
     s << "Scaled to the synthesized default improved unit (" << target_ << "): LUT x "
       << lut_scale_ << ", FF x " << ff_scale_ << ".";

@@ -3,6 +3,7 @@
 // widths (docs/unit.md "Widths"), marked "estimate" wherever it is shown.
 #pragma once
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/config.hpp"
@@ -48,6 +49,7 @@ struct AreaTerms {
 };
 AreaTerms improved_area_terms(const RasterConfig& cfg);
 AreaTerms trad_area_terms(const RasterConfig& cfg);
+AreaTerms improved2_area_terms(const RasterConfig& cfg);
 
 class AreaModel {
  public:
@@ -59,8 +61,9 @@ class AreaModel {
   // Area of one configuration of a unit. Synthesis covers improved units with N = 1, FIFO 8 and no
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL), and the
   // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, zigzag), per
-  // stamp size, and the second-generation unit per corner form (FIFO 8, N = 1). The half-space and
-  // second-generation units have no width formula: elsewhere their area is unknown.
+  // stamp size, and the second-generation unit per corner form (FIFO 8, N = 1). The half-space
+  // unit has no width formula: elsewhere its area is unknown; the second-generation unit's
+  // formula is scaled to its own synthesis of the corner form (unknown without it).
   Area area(UnitKind kind, const RasterConfig& cfg) const;
 
   // Results of the distributed sweep's synthesis jobs (sweep_shard.hpp read_synth_results): a
@@ -69,8 +72,8 @@ class AreaModel {
   // target than target() (or of "ice40-pnr", which carries Fmax only) give only their Fmax.
   void add_rows(const std::vector<SynthRow>& rows);
   // The width formula, scaled, whatever synthesis covers (to report its error against synthesis);
-  // unknown (Area::known() false) for a unit without one (the half-space unit, the
-  // second-generation unit, CPU engines).
+  // unknown (Area::known() false) for a unit without one (the half-space unit, CPU engines) and
+  // for the second-generation unit when no synthesis of its corner form calibrates it.
   Area estimate(UnitKind kind, const RasterConfig& cfg) const;
   // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
   double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
@@ -90,6 +93,7 @@ class AreaModel {
   std::vector<SynthRow> rows_, fmax_rows_;
   std::string target_;
   double lut_scale_ = 1, ff_scale_ = 1;
+  std::pair<double, double> g2_scale_[2];  // (LUT, FF) per corner form (0 products, 1 radix 16)
 };
 
 }  // namespace trirast
