@@ -41,12 +41,13 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     list(APPEND _builds
       "improved:trirast_top:TRIRAST_RTL_SOURCES:_${_c}:${_c}:${endpoints}:${depth}"
       "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_${_c}:${_c}:1:${depth}"
-      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_${_c}:${_c}:${endpoints}:${depth}:1")
+      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_${_c}:${_c}:${endpoints}:${depth}:1"
+      "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_${_c}:${_c}:${endpoints}:${depth}:0")
   endforeach()
   # The second-generation unit (engine improved2-rtl): at the default widths both corner forms
   # (the entry's 8th field, CornerForm: 1 radix 16, 0 products), at the synthesized size (N = 1,
   # DEPTH = 8) and at the maximums (N = ENDPOINTS, DEPTH; cfg_endpoints_i picks n <= N); at the
-  # other widths (above) its default form, radix 16, at the maximums.
+  # other widths (above) both forms at the maximums (the sweep puts either form on its fronts).
   list(APPEND _builds
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES::default:${endpoints}:${depth}:1"

@@ -147,17 +147,18 @@ TEST(RtlImproved2, ClippedViewport) {
                    "clipped viewport");
 }
 
-// The other widths of docs/synth.md's configurations (radix-16 form, the form built there):
-// small (S = 4, coordinates 12, box 10), wide (8, 20, 14), tiny (0, 8, 6: F = 1), hard cases and
-// random triangles, two sinks; N = 1, and N = 4 with the stalling sink (those builds are at
-// the maximums, N = 4 and FIFO 1024).
+// The other widths of docs/synth.md's configurations, both corner forms: small (S = 4,
+// coordinates 12, box 10), wide (8, 20, 14), tiny (0, 8, 6: F = 1), hard cases and random
+// triangles, two sinks; N = 1, and N = 4 with the stalling sink (those builds are at the
+// maximums, N = 4 and FIFO 1024).
 TEST(RtlImproved2, OtherWidths) {
   struct W { const char* name; int s, coord, box; };
-  struct R { const char* sink; int n; };
+  struct R { const char* sink; int n; int form; };
   for (const W& w : {W{"small", 4, 12, 10}, W{"wide", 8, 20, 14}, W{"tiny", 0, 8, 6}})
-    for (const R& run : {R{"none", 1}, R{"random:7:30", 1}, R{"random:7:30", 4}}) {
+    for (const R& run : {R{"none", 1, 1}, R{"random:7:30", 1, 1}, R{"random:7:30", 4, 1},
+                         R{"none", 1, 0}, R{"random:7:30", 4, 0}}) {
       const char* sink = run.sink;
-      RasterConfig cfg = cfg_with(1, sink, 8, run.n);
+      RasterConfig cfg = cfg_with(run.form, sink, 8, run.n);
       cfg.subpixel_bits = w.s;
       cfg.coord_int_bits = w.coord;
       cfg.box_bits = w.box;
@@ -166,7 +167,7 @@ TEST(RtlImproved2, OtherWidths) {
       cfg.validate();
       // hard-all's coordinates reach past tiny's 8-bit range: its sub-pixel cases there.
       const std::string hard = w.coord >= 12 ? "builtin:hard-all" : "builtin:hard-tiny";
-      const std::string n = " N " + std::to_string(run.n);
+      const std::string n = " N " + std::to_string(run.n) + " form " + std::to_string(run.form);
       expect_improved2(scene(hard, cfg), cfg,
                        std::string(w.name) + " " + hard + " sink " + sink + n);
       expect_improved2(scene("builtin:random:count=1500,size=mixed,seed=8", cfg), cfg,
@@ -239,12 +240,6 @@ TEST(RtlImproved2, RefusesWhatNoBuildCovers) {
   RasterConfig s5;
   s5.subpixel_bits = 5;  // no build (docs/synth.md: S = 8, 4, 0)
   refuses(s5, "--subpixel-bits");
-  RasterConfig products_small;  // the products form is built at the default widths only
-  products_small.subpixel_bits = 4;
-  products_small.coord_int_bits = 12;
-  products_small.box_bits = 10;
-  products_small.g2_corner_form = 0;
-  refuses(products_small, "--corner-form");
 }
 
 }  // namespace
