@@ -466,9 +466,9 @@ def main():
         e = r.get("estimate")
         if not e or (merged and not r.get("from_run")):
             continue
-        # The calibration points: the default widths of the improved unit (both first-generation
-        # units' scale) and of each second-generation corner form (its own scale).
-        calib = (r["unit"] in ("improved", "improved2", "improved2-products")
+        # The calibration points: each unit's default widths (each unit's estimate is scaled to
+        # its own synthesis there; the second generation per corner form).
+        calib = (r["unit"] in ("improved", "trad", "improved2", "improved2-products")
                  and r["subpixel_bits"] == 8 and r["coord_bits"] == 16
                  and r["box_bits"] == 14 and r.get("endpoints", 1) == 1)
         el = 100.0 * (e["luts"] - r["luts"]) / r["luts"] if r["luts"] else 0.0
@@ -497,9 +497,9 @@ def main():
                          f"to {max(ef):+.1f}%)")
         L.append("The estimate against synthesis, every configuration synthesized "
                  + ("in this run " if merged else "") + "but the "
-                 "calibration points (the default improved unit, to which the improved and "
-                 "traditional units' estimates are scaled; the second-generation unit's own "
-                 "default per corner form, to which its estimate is scaled): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
+                 "calibration points (each unit's estimate is scaled to its own synthesis at "
+                 "the default widths: the improved and traditional units', and the "
+                 "second-generation unit's per corner form): " + "; ".join(parts) + ". Error = (estimate - synthesis) / "
                  "synthesis." + (" Synthesis job results: `" + rel(d["merged_from"]) + "/synth/` "
                                  "(not checked in)." if merged else "") + "\n")
     fm = d.get("ice40_fmax", [])

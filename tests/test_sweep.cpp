@@ -587,6 +587,17 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   EXPECT_EQ(e.source, "estimate");
   EXPECT_GT(e.luts, d.luts);
   EXPECT_EQ(synth.area(UnitKind::Trad, def).source, "estimate");
+  // Without its own row the traditional unit takes the improved unit's scale; with one, its own:
+  // its estimate then meets its synthesis at the default, and the improved unit's is unchanged.
+  RasterConfig trad_small = small;
+  const Area trad_before = synth.estimate(UnitKind::Trad, trad_small);
+  write_file(dir.file("trad.csv"), slurp(dir.file("synth.csv")) + "trad,default,xilinx7,2092,846,0,0,2,\n");
+  const AreaModel with_trad(dir.file("trad.csv"), dir.file("missing.sh"));
+  EXPECT_EQ(with_trad.estimate(UnitKind::Trad, def).luts, 2092);
+  EXPECT_EQ(with_trad.estimate(UnitKind::Trad, def).ffs, 846);
+  EXPECT_NE(with_trad.estimate(UnitKind::Trad, trad_small).luts, trad_before.luts);
+  EXPECT_LT(with_trad.estimate(UnitKind::Trad, trad_small).luts, 2092);
+  EXPECT_EQ(with_trad.estimate(UnitKind::Improved, n4).luts, e.luts);
   // The half-space unit: synthesized per stamp size at tile 8, zigzag; no width formula.
   write_file(dir.file("hs.csv"),
              "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"

@@ -221,15 +221,21 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
   calibrate();
 }
 
-// Scales the estimate to the synthesized default improved unit, when synthesis has it.
-// The second-generation unit's estimate is scaled to its own synthesis at the default widths, per
-// corner form; without that row it has none (never the first generation's scale).
+// Scales the estimate to the synthesized default improved unit, when synthesis has it; the
+// traditional unit's to its own synthesized default when there is one (else the improved unit's
+// scale). The second-generation unit's estimate is scaled to its own synthesis at the default
+// widths, per corner form; without that row it has none (never the first generation's scale).
 void AreaModel::calibrate() {
   const RasterConfig def;
   if (const SynthRow* d = find("improved", def)) {
     const AreaTerms t = improved_area_terms(def);
     lut_scale_ = d->luts / t.luts;
     ff_scale_ = d->ffs / t.ffs;
+  }
+  trad_scale_ = {lut_scale_, ff_scale_};
+  if (const SynthRow* d = find("trad", def)) {
+    const AreaTerms t = trad_area_terms(def);
+    trad_scale_ = {d->luts / t.luts, d->ffs / t.ffs};
   }
   for (int form = 0; form < 2; ++form) {
     RasterConfig g2 = def;
@@ -280,9 +286,10 @@ Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
     return a;
   }
   if (kind != UnitKind::Improved && kind != UnitKind::Trad) return a;
-  const AreaTerms t = kind == UnitKind::Improved ? improved_area_terms(cfg) : trad_area_terms(cfg);
-  a.luts = std::round(t.luts * lut_scale_);
-  a.ffs = std::round(t.ffs * ff_scale_);
+  const bool trad = kind == UnitKind::Trad;
+  const AreaTerms t = trad ? trad_area_terms(cfg) : improved_area_terms(cfg);
+  a.luts = std::round(t.luts * (trad ? trad_scale_.first : lut_scale_));
+  a.ffs = std::round(t.ffs * (trad ? trad_scale_.second : ff_scale_));
   a.source = "estimate";
   return a;
 }
@@ -339,6 +346,9 @@ std::string AreaModel::formula_text() const {
       << lut_scale_ << ", FF x " << ff_scale_ << ".";
   else
     s << "Unscaled (no synthesis of the default improved unit was found).";
+  if (trad_scale_ != std::make_pair(lut_scale_, ff_scale_))
+    s << " The traditional unit's to its own synthesized default: LUT x " << trad_scale_.first
+      << ", FF x " << trad_scale_.second << ".";
   return s.str();
 }
 

@@ -93,6 +93,7 @@ class AreaModel {
   std::vector<SynthRow> rows_, fmax_rows_;
   std::string target_;
   double lut_scale_ = 1, ff_scale_ = 1;
+  std::pair<double, double> trad_scale_{1, 1};  // (LUT, FF) of the traditional unit
   std::pair<double, double> g2_scale_[2];  // (LUT, FF) per corner form (0 products, 1 radix 16)
 };
 

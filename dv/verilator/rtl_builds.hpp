@@ -81,7 +81,9 @@ inline bool same_widths(const RtlBuild& b, const RasterConfig& cfg) {
                "no build of these S, coordinate and box bits", built);
 }
 
-// "S:coord:box N<=4 DEPTH<=1024, ..." for error messages.
-std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box);
+// "S:coord:box N<=4 DEPTH<=1024, ..." for error messages; with_form: each build's corner form
+// (the second-generation unit), "... DEPTH<=1024 radix16".
+std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box,
+                            bool with_form = false);
 
 }  // namespace trirast::rtl

@@ -41,7 +41,7 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
 
 std::string built_configuration() { return describe_builds(improved_builds(), true); }
 
-std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box) {
+std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box, bool with_form) {
   std::string s;
   for (const RtlBuild& b : builds) {
     if (!s.empty()) s += ", ";
@@ -49,6 +49,7 @@ std::string describe_builds(const std::vector<RtlBuild>& builds, bool with_box) 
     if (with_box) s += ":" + std::to_string(b.box_bits);
     if (with_box) s += " N<=" + std::to_string(b.endpoints);
     s += " DEPTH<=" + std::to_string(b.fifo_depth);
+    if (with_form) s += b.corner_form == 0 ? " dsp" : " radix16";
   }
   return "S:coord" + std::string(with_box ? ":box" : "") + " " + s;
 }

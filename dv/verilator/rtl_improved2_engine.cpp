@@ -21,7 +21,7 @@ const char* form_name(int form) { return form == 0 ? "products (dsp)" : "radix16
 
 const RtlBuild& pick_build(const RasterConfig& cfg) {
   const std::vector<RtlBuild>& builds = improved2_builds();
-  const std::string built = describe_builds(builds, true);
+  const std::string built = describe_builds(builds, true, true);
   const std::string engine = "improved2-rtl";
   const RtlBuild* widths = nullptr;
   for (const RtlBuild& b : builds) {
