@@ -294,6 +294,11 @@ def main():
                 if am["have_synth"] else "")
              + ". Cycles are exact (SystemC model, docs/timing.md); wall times are noisy (a shared "
              "machine) and shown only as ratios within this run.\n")
+    # The buildable configurations on a front, and those whose area is not this run's synthesis.
+    on_front = [p for p in points if p["summary"].get("pareto_cycles") or p["summary"].get("pareto_area")]
+    hw_front = [p for p in on_front if "area_source" in p["summary"]]
+    est_front = [p for p in hw_front if p["summary"]["area_source"] == "estimate"]
+    stale_front = [p for p in hw_front if d.get("merged_from") and stale_synth(p["summary"])]
     if d.get("merged_from"):
         task_wall = sum(r["wall_seconds"] for p in points for r in p["scenes"])
         L.append(f"The simulation ran as {len(points) * len(scenes)} independent tasks "
@@ -303,8 +308,15 @@ def main():
                  f"{task_wall:.1f} s)"
                  + (", **partial: " + str(len(d["missing_tasks"])) + " tasks had no result**"
                     if d.get("partial") else "")
-                 + ". Every buildable configuration on a hardware front (and the default improved "
-                 "and traditional units) was synthesized in this run, on this tree's RTL, by "
+                 + (". Every buildable configuration on a hardware front (and the default "
+                    "improved and traditional units) was synthesized in this run"
+                    if not est_front and not stale_front else
+                    f". The buildable configurations on a hardware front (and the default "
+                    f"improved and traditional units) were synthesized in this run but "
+                    f"{len(est_front) + len(stale_front)} (named in the table *Synthesized area "
+                    "and the estimate's error*: the synthesis rounds ended before it reached "
+                    "the front)")
+                 + ", on this tree's RTL, by "
                  "synthesis jobs into the same results directory (scripts/sweep_synth_task.sh, "
                  "`scripts/synth.sh --one`, one configuration each; a docs/synth.csv row for the "
                  "same configuration is replaced, not reused); their results are in the table "
@@ -443,10 +455,6 @@ def main():
                  "configuration competed.\n")
 
     # Synthesized area on the fronts and the estimate's error against synthesis.
-    on_front = [p for p in points if p["summary"].get("pareto_cycles") or p["summary"].get("pareto_area")]
-    hw_front = [p for p in on_front if "area_source" in p["summary"]]
-    est_front = [p for p in hw_front if p["summary"]["area_source"] == "estimate"]
-    stale_front = [p for p in hw_front if merged and stale_synth(p["summary"])]
     distinct = lambda ps: len({(p["summary"].get("area_origin"), p["config"]) for p in ps})
     L.append("### Synthesized area and the estimate's error\n")
     L.append(f"{len(hw_front)} points of buildable hardware are on a front: "
