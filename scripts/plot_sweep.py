@@ -234,6 +234,7 @@ def main():
     gen2 = {form: find(points, "improved2-sc", f"{GEN2_DEFAULT} {form}") for form in GEN2_FORMS}
     g2 = gen2[GEN2_FORMS[0]]
     cmp_rows = []  # (scene, improved, trad, gen2 or None)
+    have_g2 = False  # the second generation on every compared scene: its columns and bars
     if imp and trad:
         labels, ic, tc, gc = [], [], [], []
         for i, sc in enumerate(scenes):
@@ -521,7 +522,6 @@ def main():
     L.append("## Improved vs traditional unit\n")
     if cmp_rows:
         L.append(f"![improved vs trad]({img_rel}/improved_vs_trad.png)\n")
-        have_g2 = bool(cmp_rows) and all(r[3] for r in cmp_rows)
 
         def gain(a, b):  # (trad - unit) / trad, in %
             return 100.0 * (b - a) / b

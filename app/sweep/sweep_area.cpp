@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "util.hpp"
 
@@ -227,24 +228,22 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
 // widths, per corner form; without that row it has none (never the first generation's scale).
 void AreaModel::calibrate() {
   const RasterConfig def;
-  if (const SynthRow* d = find("improved", def)) {
-    const AreaTerms t = improved_area_terms(def);
-    lut_scale_ = d->luts / t.luts;
-    ff_scale_ = d->ffs / t.ffs;
-  }
-  trad_scale_ = {lut_scale_, ff_scale_};
-  if (const SynthRow* d = find("trad", def)) {
-    const AreaTerms t = trad_area_terms(def);
-    trad_scale_ = {d->luts / t.luts, d->ffs / t.ffs};
-  }
+  // (LUT, FF) = synthesis / formula of `unit` at cfg, or `fallback` without that synthesis row.
+  using Scale = std::pair<double, double>;
+  auto scale = [&](const std::string& unit, const RasterConfig& cfg,
+                   AreaTerms (*terms)(const RasterConfig&), Scale fallback) {
+    const SynthRow* d = find(unit, cfg);
+    if (!d) return fallback;
+    const AreaTerms t = terms(cfg);
+    return Scale{d->luts / t.luts, d->ffs / t.ffs};
+  };
+  std::tie(lut_scale_, ff_scale_) =
+      scale("improved", def, improved_area_terms, {lut_scale_, ff_scale_});
+  trad_scale_ = scale("trad", def, trad_area_terms, {lut_scale_, ff_scale_});
   for (int form = 0; form < 2; ++form) {
     RasterConfig g2 = def;
     g2.g2_corner_form = form;
-    g2_scale_[form] = {0, 0};
-    if (const SynthRow* d = find(synth_unit_name(UnitKind::Improved2, g2), g2)) {
-      const AreaTerms t = improved2_area_terms(g2);
-      g2_scale_[form] = {d->luts / t.luts, d->ffs / t.ffs};
-    }
+    g2_scale_[form] = scale(synth_unit_name(UnitKind::Improved2, g2), g2, improved2_area_terms, {0, 0});
   }
 }
 

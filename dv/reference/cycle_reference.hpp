@@ -24,13 +24,10 @@ struct RefTriangle {
   uint64_t divider_iterations = 0, boundary_steps = 0, box_width = 0, box_height = 0;
 };
 
-// rows_per_group: N for the improved unit (each group costs one cycle, row_cost all 1); 1 for the
-// traditional unit (a row costs row_cost cycles, its span pushed in its last cycle). The FIFO room
-// test is made at the start of every group (improved: count <= DEPTH - N) or row (trad:
-// count <= DEPTH - 1).
-inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangle>& tris,
-                                                    uint64_t rows_per_group, uint64_t depth,
-                                                    const SinkPattern& sink) {
+// One row per triangle before any timing: its index and the counts passed through to the stage
+// breakdown (RefTriangle here, Ref2Triangle in improved2_cycle_reference.hpp).
+template <class Tri>
+std::vector<TriangleCycles> passed_through_rows(const std::vector<Tri>& tris) {
   std::vector<TriangleCycles> out(tris.size());
   for (size_t i = 0; i < tris.size(); ++i) {
     out[i] = TriangleCycles{tris[i].tri, 0, 0, 0, 0, 0, 0};
@@ -39,6 +36,17 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
     out[i].box_width = tris[i].box_width;
     out[i].box_height = tris[i].box_height;
   }
+  return out;
+}
+
+// rows_per_group: N for the improved unit (each group costs one cycle, row_cost all 1); 1 for the
+// traditional unit (a row costs row_cost cycles, its span pushed in its last cycle). The FIFO room
+// test is made at the start of every group (improved: count <= DEPTH - N) or row (trad:
+// count <= DEPTH - 1).
+inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangle>& tris,
+                                                    uint64_t rows_per_group, uint64_t depth,
+                                                    const SinkPattern& sink) {
+  std::vector<TriangleCycles> out = passed_through_rows(tris);
   struct Entry {
     size_t tri;
   };

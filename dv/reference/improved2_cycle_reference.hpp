@@ -10,6 +10,7 @@
 
 #include "core/engine.hpp"
 #include "core/sink_pattern.hpp"
+#include "reference/cycle_reference.hpp"
 
 namespace trirast::test {
 
@@ -31,14 +32,7 @@ inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Trian
                                                      bool corner_radix16, uint64_t n,
                                                      uint64_t depth, const SinkPattern& sink) {
   const size_t none = tris.size();
-  std::vector<TriangleCycles> out(tris.size());
-  for (size_t i = 0; i < tris.size(); ++i) {
-    out[i] = TriangleCycles{tris[i].tri, 0, 0, 0, 0, 0, 0};
-    out[i].divider_iterations = tris[i].divider_iterations;
-    out[i].boundary_steps = tris[i].boundary_steps;
-    out[i].box_width = tris[i].box_width;
-    out[i].box_height = tris[i].box_height;
-  }
+  std::vector<TriangleCycles> out = passed_through_rows(tris);
   // A stage register: the triangle it holds (none: empty) and, for C and L, the first cycle its
   // work is done (counted down cycle by cycle below).
   struct Stage {
