@@ -18,9 +18,12 @@
 # The maximal default build keeps the plain prefix (Vtrirast_top, Vtrirast_trad_top):
 # tests/rtl/rtl_assert_demo.cpp uses it.
 #
-# trirast_add_rtl_builds(TARGET ROOT GEN_DIR INCLUDE_DIR BUILDS ...): verilates each listed build into
-# TARGET with its harness instance (GEN_DIR/buildV*.cpp) and writes the list the engines pick from
-# (GEN_DIR/rtl_builds_list.cpp, rtl_builds.hpp). The Verilated top of a unit TOP is TOP_sim
+# trirast_add_rtl_builds(TARGET ROOT GEN_DIR INCLUDE_DIR [MODELS_TARGET M [PREBUILT DIR]] BUILDS ...):
+# verilates each listed build into M (default TARGET), adds its harness instance
+# (GEN_DIR/buildV*.cpp) to TARGET and writes the list the engines pick from
+# (GEN_DIR/rtl_builds_list.cpp, rtl_builds.hpp). With PREBUILT, nothing is verilated: M is an
+# INTERFACE library the caller links to another build's compiled models, and DIR is the binary
+# folder that verilated them (its CMakeFiles/M.dir/V*.dir hold the headers the harness includes). The Verilated top of a unit TOP is TOP_sim
 # (scripts/gen_sim_top.py: TOP behind a configuration register, with the harness's probes). The
 # sources come from the variables the specs name
 # (TRIRAST_RTL_SOURCES, TRIRAST_RTL_TRAD_SOURCES, rtl/*.f); a non-default configuration's package
@@ -64,7 +67,14 @@ function(trirast_rtl_build_specs out_var endpoints depth)
 endfunction()
 
 function(trirast_add_rtl_builds)
-  cmake_parse_arguments(A "" "TARGET;ROOT;GEN_DIR;INCLUDE_DIR" "BUILDS" ${ARGN})
+  cmake_parse_arguments(A "" "TARGET;ROOT;GEN_DIR;INCLUDE_DIR;MODELS_TARGET;PREBUILT" "BUILDS" ${ARGN})
+  if(NOT A_MODELS_TARGET)
+    set(A_MODELS_TARGET ${A_TARGET})
+  endif()
+  # What verilate(... TRACE_FST) defines for the models' own sources, for every source that
+  # includes their headers (the harness).
+  target_compile_definitions(${A_MODELS_TARGET} INTERFACE
+    VM_COVERAGE=0 VM_SC=0 VM_TRACE=1 VM_TRACE_VCD=0 VM_TRACE_FST=1)
   find_package(Python3 REQUIRED COMPONENTS Interpreter)
   set(_gen ${A_GEN_DIR})
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${A_ROOT}/scripts/gen_params.py)
@@ -192,15 +202,24 @@ function(trirast_add_rtl_builds)
     # (trirast_assert.svh) run, and a failing one stops the model with its name.
     # --x-initial/--x-assign unique: X values are random from the seed the harness sets
     # (RtlRunOptions::x_seed, TRIRAST_RTL_SEED; reported as work "rtl_x_seed").
-    verilate(${A_TARGET} TRACE_FST
-      PREFIX ${_prefix}
-      TOP_MODULE ${_top}_sim
-      SOURCES ${_sources} ${_gen}/${_top}_sim.sv
-      INCLUDE_DIRS ${A_INCLUDE_DIR}
-      VERILATOR_ARGS -Wall --assert --x-initial unique --x-assign unique ${_params}
-      OPT_SLOW -O1
-      OPT_FAST -O2
-      OPT_GLOBAL -O2)
+    if(A_PREBUILT)
+      set(_vdir ${A_PREBUILT}/CMakeFiles/${A_MODELS_TARGET}.dir/${_prefix}.dir)
+      if(NOT EXISTS ${_vdir}/${_prefix}.h)
+        message(FATAL_ERROR "trirast_add_rtl_builds: no ${_vdir}/${_prefix}.h: build the target "
+                            "${A_MODELS_TARGET} in that build first")
+      endif()
+      target_include_directories(${A_MODELS_TARGET} SYSTEM INTERFACE ${_vdir})
+    else()
+      verilate(${A_MODELS_TARGET} TRACE_FST
+        PREFIX ${_prefix}
+        TOP_MODULE ${_top}_sim
+        SOURCES ${_sources} ${_gen}/${_top}_sim.sv
+        INCLUDE_DIRS ${A_INCLUDE_DIR}
+        VERILATOR_ARGS -Wall --assert --x-initial unique --x-assign unique ${_params}
+        OPT_SLOW -O1
+        OPT_FAST -O2
+        OPT_GLOBAL -O2)
+    endif()
     # The harness instantiated for this build.
     list(GET _widths_${_cfg} 0 _s)
     list(GET _widths_${_cfg} 1 _coord)

@@ -31,7 +31,7 @@ while [ $# -gt 0 ]; do
 done
 WORK="${WORK:-$BUILD/rtl-profile}"
 command -v valgrind >/dev/null || { echo "rtl_profile.sh: valgrind is missing: apt-get install valgrind" >&2; exit 2; }
-MDIR="$BUILD/dv/verilator/CMakeFiles/trirast_rtl.dir/Vtrirast_top_n1.dir"
+MDIR="$BUILD/dv/verilator/CMakeFiles/trirast_rtl_models.dir/Vtrirast_top_n1.dir"
 ARGS="$MDIR/verilator_args.txt"
 LINK="$BUILD/tools/CMakeFiles/trirast_sc_bench.dir/link.txt"
 HARNESS="$BUILD/dv/verilator/rtl_builds/buildVtrirast_top_n1.cpp"
