@@ -15,6 +15,9 @@
 // AccEdges 2 (trirast_improved2_top's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the
 // caller forms
 // it from the other two), but its magnitudes still set the digit count (the same cycles).
+// keep_y_i with start_i: the y operands are the last start's (the second run at x1 = x0 + Xmax
+// has the first run's cy0 - vy): the y magnitudes and signs are not reloaded, and the y part of
+// the digit count is the one registered at that start, so vy_i and y0_i are not read.
 module trirast_corner_serial #(
   parameter int DigitBits = 4,
   parameter bit SignFold  = 1'b0,
@@ -23,6 +26,7 @@ module trirast_corner_serial #(
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   input  logic                                 start_i,
+  input  logic                                 keep_y_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]   a_i,
@@ -49,7 +53,8 @@ module trirast_corner_serial #(
   assign cy0 = $signed(DW'({y0_i, 1'b1}) << (F - 1));
 
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
-  logic [ND*DB-1:0] any_mag;          // OR of all start magnitudes (for the top digit)
+  logic [ND*DB-1:0] any_x, any_y;     // OR of the start magnitudes of x, of y (the top digit)
+  logic [NB-1:0] ny_q, ny_d;          // digits of the y magnitudes at the last start without keep
 
   function automatic logic signed [PW-1:0] pp(input logic signed [CB-1:0] m,
                                               input logic [DB-1:0] digit);
@@ -129,9 +134,11 @@ module trirast_corner_serial #(
         mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;
         if (start_i) begin
           mx_d = mag_k[k][0];
-          my_d = mag_k[k][1];
           sx_d = dxl[DW-1];
-          sy_d = dy[DW-1];
+          if (!keep_y_i) begin
+            my_d = mag_k[k][1];
+            sy_d = dy[DW-1];
+          end
           acc_d = '0;
         end else if (cnt_q != '0) begin
           if (SignFold) acc_d = (acc_q <<< DB) + tx + ty;
@@ -150,16 +157,25 @@ module trirast_corner_serial #(
     end
   end
 
-  // The number of digits of the largest operand (priority encoder).
-  always_comb begin
-    any_mag = mag_k[0][0] | mag_k[0][1] | mag_k[1][0] | mag_k[1][1] | mag_k[2][0] | mag_k[2][1];
-    cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
-    if (start_i) begin
-      cnt_d = NB'(1);
-      for (int i = 1; i < ND; i++) begin
-        if (any_mag[i*DB +: DB] != '0) cnt_d = NB'(i + 1);
-      end
+  // The number of digits of the largest operand (priority encoders: x's, y's, the larger).
+  function automatic logic [NB-1:0] digits(input logic [ND*DB-1:0] v);
+    digits = NB'(1);
+    for (int i = 1; i < ND; i++) begin
+      if (v[i*DB +: DB] != '0) digits = NB'(i + 1);
     end
+  endfunction
+  logic [NB-1:0] nx, ny;
+  always_comb begin
+    any_x = mag_k[0][0] | mag_k[1][0] | mag_k[2][0];
+    any_y = mag_k[0][1] | mag_k[1][1] | mag_k[2][1];
+    nx = digits(any_x);
+    ny = keep_y_i ? ny_q : digits(any_y);
+    ny_d = (start_i && !keep_y_i) ? ny : ny_q;
+    cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
+    if (start_i) cnt_d = (nx > ny) ? nx : ny;
+  end
+  always_ff @(posedge clk_i) begin
+    ny_q <= ny_d;
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) cnt_q <= '0;

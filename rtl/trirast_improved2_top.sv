@@ -6,13 +6,16 @@
 // formed while the lanes and the walk stage work. Boundary mode step, adaptive divider (build
 // choices here: no cfg ports for them). NumEndpoints N: the walk stage's rows per cycle (1, 2, 4;
 // cfg_endpoints_i = n <= N at run time, as rtl/trirast_top.sv's; with N = 1 cfg_endpoints_i is
-// unused). Triangle port and span port as rtl/trirast_top.sv's;
-// the corner values are vertex-relative, E = A*(cx - vx) + B*(cy - vy) (tri_c_i is read only with
-// E2Sum).
+// unused). Triangle port and span port as rtl/trirast_top.sv's, but the unit reads only the
+// vertices (and the tag): A, B and the bias are formed from them, and the corner values are
+// vertex-relative, E = A*(cx - vx) + B*(cy - vy), so tri_a_i, tri_b_i, tri_bias_i are read only
+// by an assertion (the port's are the vertices'), tri_c_i only with E2Sum.
 //
-//   [B] triangle register (tag, vertices, A, B, bias); box and empty test in one cycle; an empty
-//       box retires here (box_retire_o)
-//   [C] corner-stage register (tag, box, vertices, A, B, bias); corner values E_L per edge:
+//   [B] triangle register (tag, vertices) with the box (each axis's clipped first and last pixel)
+//       and its empty flag, formed from the port in the accept cycle; an empty box retires here
+//       (box_retire_o)
+//   [C] corner-stage register (tag, box, vertices, and A, B, bias formed from B's vertices);
+//       corner values E_L per edge:
 //       CornerForm 0: trirast_corner_products (multipliers, DSPs on xc7; no extra cycle);
 //       CornerForm 1: trirast_corner_serial (MSB-first radix 16), started as the triangle enters
 //       C: C holds it ceil(bits / 4) + 1 cycles for E_L; a box for the lanes then runs again,
@@ -121,8 +124,6 @@ module trirast_improved2_top #(
   logic b_full_q;
   logic [TB-1:0] b_tag_q;
   logic [3*P-1:0] b_vx_q, b_vy_q;
-  logic [3*CB-1:0] b_a_q, b_b_q;
-  logic [2:0] b_bias_q;
   logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
   logic b_empty, b_take, b_retire, c_free;
 
@@ -144,18 +145,27 @@ module trirast_improved2_top #(
     max3 = m;
   endfunction
 
+  // The box is formed from the port in the accept cycle and registered with the triangle (the
+  // port holds the triangle while it is offered): B holds each axis's clipped first and last
+  // pixel and the empty flag, so the retire and move decisions read registers. The first and
+  // last pixels are kept at PB bits: they are read only for a box that is not empty, where
+  // 0 <= first <= last <= the viewport's last pixel.
   logic signed [WBits-1:0] fx, lx, fy, ly;
+  logic p_empty;
   always_comb begin
-    fx = -((Half - min3(b_vx_q)) >>> F);
+    fx = -((Half - min3(tri_vx_i)) >>> F);
     if (fx < 0) fx = '0;
-    lx = (max3(b_vx_q) - Half) >>> F;
+    lx = (max3(tri_vx_i) - Half) >>> F;
     if (lx > $signed(WBits'(cfg_vp_xmax_i))) lx = $signed(WBits'(cfg_vp_xmax_i));
-    fy = -((Half - min3(b_vy_q)) >>> F);
+    fy = -((Half - min3(tri_vy_i)) >>> F);
     if (fy < 0) fy = '0;
-    ly = (max3(b_vy_q) - Half) >>> F;
+    ly = (max3(tri_vy_i) - Half) >>> F;
     if (ly > $signed(WBits'(cfg_vp_ymax_i))) ly = $signed(WBits'(cfg_vp_ymax_i));
-    b_empty = (fx > lx) || (fy > ly);
+    p_empty = (fx > lx) || (fy > ly);
   end
+  logic b_empty_q;
+  logic [PB-1:0] b_fx_q, b_lx_q, b_fy_q, b_ly_q;
+  assign b_empty = b_empty_q;
 
   assign b_retire = b_full_q && b_empty;
   assign b_take   = b_full_q && !b_empty && c_free;
@@ -171,11 +181,37 @@ module trirast_improved2_top #(
   always_ff @(posedge clk_i) begin
     if (tri_valid_i && tri_ready_o) begin
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
-      b_a_q <= tri_a_i;  b_b_q <= tri_b_i;  b_bias_q <= tri_bias_i;
+      b_empty_q <= p_empty;
+      b_fx_q <= PB'(fx);  b_lx_q <= PB'(lx);  b_fy_q <= PB'(fy);  b_ly_q <= PB'(ly);
       b_s_q <= tri_c_i[0 +: EB] + tri_c_i[EB +: EB] + tri_c_i[2*EB +: EB]
                - EB'(tri_bias_i[0]) - EB'(tri_bias_i[1]) - EB'(tri_bias_i[2]);
     end
   end
+
+  // The edges' A, B and bias from B's vertices (edge k from vertex k to vertex k + 1, as the
+  // set-up forms them: A = y_k - y_k+1, B = x_k+1 - x_k; the top-left rule's bias is 1 unless
+  // A > 0, or A = 0 and B > 0), registered into C. The port's tri_a_i, tri_b_i and tri_bias_i
+  // are read only by the assertion below (and tri_bias_i by E2Sum): the unit needs the vertices.
+  function automatic logic [6*CB+2:0] edge_coefs(input logic [3*P-1:0] vx,
+                                                  input logic [3*P-1:0] vy);
+    logic [3*CB-1:0] ca, cb;
+    logic [2:0] cbias;
+    for (int k = 0; k < 3; k++) begin
+      logic signed [CB-1:0] ak, bk;
+      logic az, bz;
+      ak = CB'($signed(vy[k*P +: P])) - CB'($signed(vy[((k+1)%3)*P +: P]));
+      bk = CB'($signed(vx[((k+1)%3)*P +: P])) - CB'($signed(vx[k*P +: P]));
+      az = vy[k*P +: P] == vy[((k+1)%3)*P +: P];
+      bz = vx[k*P +: P] == vx[((k+1)%3)*P +: P];
+      ca[k*CB +: CB] = ak;
+      cb[k*CB +: CB] = bk;
+      cbias[k] = !((!ak[CB-1] && !az) || (az && !bk[CB-1] && !bz));
+    end
+    edge_coefs = {ca, cb, cbias};
+  endfunction
+  logic [3*CB-1:0] b_a, b_b;
+  logic [2:0] b_bias;
+  assign {b_a, b_b, b_bias} = edge_coefs(b_vx_q, b_vy_q);
 
   // ---------------------------------------------------------------- C: corner values
   logic c_full_q;
@@ -201,15 +237,15 @@ module trirast_improved2_top #(
   always_ff @(posedge clk_i) begin
     if (b_take) begin
       c_tag_q  <= b_tag_q;
-      c_x0_q   <= PB'(fx);
-      c_y0_q   <= PB'(fy);
-      c_xmax_q <= BB'(lx - fx);
-      c_ymax_q <= BB'(ly - fy);
+      c_x0_q   <= b_fx_q;
+      c_y0_q   <= b_fy_q;
+      c_xmax_q <= BB'(b_lx_q - b_fx_q);
+      c_ymax_q <= BB'(b_ly_q - b_fy_q);
       c_vx_q   <= b_vx_q;
       c_vy_q   <= b_vy_q;
-      c_a_q    <= b_a_q;
-      c_b_q    <= b_b_q;
-      c_bias_q <= b_bias_q;
+      c_a_q    <= b_a;
+      c_b_q    <= b_b;
+      c_bias_q <= b_bias;
       c_s_q    <= b_s_q;
     end
   end
@@ -240,14 +276,15 @@ module trirast_improved2_top #(
     logic [3*P-1:0] s_vx, s_vy;
     logic [PB-1:0] s_x0, s_y0;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
+    // Run 2 keeps run 1's y operands (keep_y_i): only x moves, so C's vertices are read for x.
     assign s_vx  = start2_q ? c_vx_q : b_vx_q;
-    assign s_vy  = start2_q ? c_vy_q : b_vy_q;
-    assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : PB'(fx);
-    assign s_y0  = start2_q ? c_y0_q : PB'(fy);
+    assign s_vy  = b_vy_q;
+    assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : b_fx_q;
+    assign s_y0  = b_fy_q;
     trirast_corner_serial #(
       .DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)
     ) u_corner (
-      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start),
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .keep_y_i (start2_q),
       .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
       .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
     if (E2Sum) begin : g_e2
@@ -438,6 +475,9 @@ module trirast_improved2_top #(
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
                  {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i},
                  clk_i, !rst_ni)
+  // The port's edge coefficients are the vertices' (the unit reads only the vertices).
+  `ASSERT(TriEdgesFromVertices_A, tri_valid_i && tri_ready_o |->
+          edge_coefs(tri_vx_i, tri_vy_i) == {tri_a_i, tri_b_i, tri_bias_i}, clk_i, !rst_ni)
   `ASSERT(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o) |-> tri_valid_i, clk_i, !rst_ni)
   // A job is handed off only when every lane it loaded is done; a tiny job loads none.
   `ASSERT(HandoffLanesDone_A, handoff_o && !l_tiny_q |-> &lane_done, clk_i, !rst_ni)
@@ -445,6 +485,6 @@ module trirast_improved2_top #(
   `ASSERT_KNOWN(HandshakesKnown_A, {tri_ready_o, box_retire_o, handoff_o, busy_o}, clk_i, !rst_ni)
 
   logic unused;
-  assign unused = ^{tri_c_i, b_s_q, c_s_q};   // used when E2Sum
+  assign unused = ^{tri_c_i, tri_a_i, tri_b_i, b_s_q, c_s_q, c_vy_q};  // E2Sum, asserts, form 0
 
 endmodule

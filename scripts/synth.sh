@@ -39,8 +39,9 @@
 #       (trirast_synth_hs_walker_sS, per stamp size) alone, which say which part does not fit;
 #       and the whole half-space unit per stamp size at FIT_CONFIG, as the improved unit;
 #     * the whole second-generation improved unit (trirast_synth_improved2) at the default
-#       configuration in its iCE40 form (CornerForm 1, the span FIFO in block RAM: this job alone
-#       synthesizes without -nobram).
+#       configuration and at FIT_CONFIG in its iCE40 form (CornerForm 1, the span FIFO in block
+#       RAM: these jobs alone synthesize without -nobram), its wrapper tying the inputs the unit
+#       does not read (the port's A, B, C and bias; cfg_endpoints_i at NumEndpoints 1).
 # - The second-generation improved unit (trirast_improved2_top, rtl/trirast_improved2.f) at the
 #   default configuration only, in two forms: "improved2" (its defaults: radix-16 corner unit,
 #   span FIFO in block RAM; the iCE40 form) and "improved2-products" (CornerForm 0: corner values
@@ -284,11 +285,17 @@ for unit in $HS_UNITS; do
     --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
     echo "synth.sh: half-space walker wrapper (stamp $s) failed" >&2; }
 done
-if [ -n "$I2_UNITS" ] && wanted pnr.improved2.default; then
-  # shellcheck disable=SC2086
-  gen_wrapper trirast_synth_improved2 trirast_improved2_top improved2 default $TIE_DEPTH ||
-    echo "synth.sh: improved2 wrapper failed" >&2
-fi
+# The second-generation unit reads only the vertices of the triangle port (A, B and the bias are
+# formed from them, C is not used: the port's copies are read by assertions only) and, with
+# NumEndpoints 1, not cfg_endpoints_i: the wrapper ties those inputs, as it would leave them out.
+TIE_I2="$TIE_N $TIE_DEPTH --tie tri_a_i=0 --tie tri_b_i=0 --tie tri_c_i=0 --tie tri_bias_i=0"
+for cfg in default "$FIT_CONFIG"; do
+  if [ -n "$I2_UNITS" ] && wanted "pnr.improved2.$cfg"; then
+    # shellcheck disable=SC2086
+    gen_wrapper trirast_synth_improved2 trirast_improved2_top improved2 "$cfg" $TIE_I2 ||
+      echo "synth.sh: improved2 wrapper ($cfg) failed" >&2
+  fi
+done
 if [ -n "$HS_UNITS" ] && wanted pnr.halfspace.setup; then
   gen_wrapper trirast_synth_hs_setup trirast_hs_setup_stage "${HS_UNITS%% *}" default ||
     echo "synth.sh: half-space setup wrapper failed" >&2
@@ -317,9 +324,11 @@ for unit in $HS_UNITS $I2_UNITS; do
     run_job "$unit.default.$target" yosys_stat "$unit" default "$target"
   done
 done
-[ -f "$WORK/default/trirast_synth_improved2.sv" ] &&
-  run_job pnr.improved2.default pnr improved2.default improved2 default trirast_synth_improved2 "" \
-    "$SHELL_SV $WORK/default/trirast_synth_improved2.sv" bram
+for cfg in default "$FIT_CONFIG"; do
+  [ -f "$WORK/$cfg/trirast_synth_improved2.sv" ] &&
+    run_job "pnr.improved2.$cfg" pnr "improved2.$cfg" improved2 "$cfg" trirast_synth_improved2 "" \
+      "$SHELL_SV $WORK/$cfg/trirast_synth_improved2.sv" bram
+done
 for unit in $HS_UNITS; do
   s="${unit#halfspace-s}"
   [ -f "$WORK/default/trirast_synth_hs_walker_s$s.sv" ] &&
@@ -477,6 +486,9 @@ CSV="$ROOT/docs/synth.csv"
             $(for u in $HS_UNITS; do echo "$u.walker"; done); do
     csv_wrapped_row "$st" default "$st"
   done
+  # The whole second-generation unit at FIT_CONFIG, placed (no unwrapped synthesis there either).
+  [ -f "$WORK/jobs/pnr.improved2.$FIT_CONFIG.status" ] &&
+    csv_wrapped_row improved2 "$FIT_CONFIG" "improved2.$FIT_CONFIG"
   # The whole half-space unit at FIT_CONFIG, placed (no unwrapped synthesis at that configuration).
   for u in $HS_UNITS; do
     [ -f "$WORK/jobs/pnr.$u.$FIT_CONFIG.status" ] && csv_wrapped_row "$u" "$FIT_CONFIG" "$u.$FIT_CONFIG"
@@ -589,6 +601,8 @@ OUT="$ROOT/docs/synth.md"
   pnr_row "improved.$FIT_CONFIG" "whole improved unit" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
   [ -f "$WORK/jobs/pnr.improved2.default.status" ] &&
     pnr_row improved2.default "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" default
+  [ -f "$WORK/jobs/pnr.improved2.$FIT_CONFIG.status" ] &&
+    pnr_row "improved2.$FIT_CONFIG" "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
   if [[ " $UNITS " == *" trad "* ]]; then
     for cfg in $CONFIGS; do
       name="${cfg%%:*}"
@@ -609,7 +623,7 @@ OUT="$ROOT/docs/synth.md"
   echo
   echo "Critical paths (nextpnr's first source and last sink cell of the worst path):"
   echo
-  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" improved2.default $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done) $(for u in $HS_UNITS; do echo "$u.$FIT_CONFIG"; done); do
+  for d in improved.setup improved.walk improved.walk_fifo improved.fifo "improved.$FIT_CONFIG" improved2.default "improved2.$FIT_CONFIG" $(for u in $UNITS; do [ "$u" = trad ] && for cfg in $CONFIGS; do echo "trad.${cfg%%:*}"; done; done) $(for u in $HS_UNITS; do echo "$u.default"; done) $([ -n "$HS_UNITS" ] && echo halfspace.setup) $(for u in $HS_UNITS; do echo "$u.walker"; done) $(for u in $HS_UNITS; do echo "$u.$FIT_CONFIG"; done); do
     p=$(pnr_path "$d")
     [ -n "$p" ] && echo "- \`$d\`: \`$p\`"
   done
@@ -651,6 +665,8 @@ OUT="$ROOT/docs/synth.md"
     echo "not measured in this run (see the table)."
   fi
   [ -n "$f_fit" ] && echo "The whole unit placed as one design at the $FIT_CONFIG configuration reaches **$f_fit MHz**."
+  f_fit2=$(pnr_fmax "improved2.$FIT_CONFIG")
+  [ -n "$f_fit2" ] && echo "The second-generation unit's whole unit (iCE40 form) at the $FIT_CONFIG configuration reaches **$f_fit2 MHz**; at the default configuration it $(pnr_status improved2.default) ($(pnr_lc improved2.default) logic cells)."
   echo
   if [ -n "$HS_UNITS" ]; then
     echo "### The half-space unit"

@@ -23,7 +23,7 @@ log="$build/build.log"
 # The Verilated models are not instrumented here (above), so when build/ (the normal suite's
 # build, not sanitized) exists, the models it compiled are brought up to date there and linked in
 # (TRIRAST_RTL_MODELS_FROM, dv/verilator/CMakeLists.txt) instead of compiling the same generated
-# C++ again: about 3 of this build's 8 minutes. TRIRAST_ASAN_OWN_MODELS=1 compiles them here.
+# C++ again. TRIRAST_ASAN_OWN_MODELS=1 compiles them here.
 models=(-DTRIRAST_RTL_MODELS_FROM=)
 if [ "${TRIRAST_ASAN_OWN_MODELS:-0}" != 1 ] && [ -f build/CMakeCache.txt ] &&
    ! grep -q '^TRIRAST_SANITIZE:BOOL=ON' build/CMakeCache.txt; then

@@ -27,14 +27,14 @@ module g2_corner_check_tb;
   logic busy_m4, busy_m16, busy_m16s, busy_p0, busy_p1, busy_ps;
   logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_p0, el_p1, el_ps;
 
-  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_m4), .el_o (el_m4));
-  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_m16), .el_o (el_m16));
   trirast_corner_serial #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
-    .start_i (start), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .busy_o (busy_m16s), .el_o (el_m16s));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
