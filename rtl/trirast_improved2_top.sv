@@ -117,8 +117,6 @@ module trirast_improved2_top #(
   localparam int RB = trirast_pkg::RemBits;
   localparam int WB = trirast_pkg::RowBits;
   localparam int XB = trirast_pkg::WalkerXBits;
-  localparam int WBits = P + 2;
-  localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);
 
   // ---------------------------------------------------------------- B: triangle register, box
   logic b_full_q;
@@ -127,42 +125,65 @@ module trirast_improved2_top #(
   logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
   logic b_empty, b_take, b_retire, c_free;
 
-  function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
-    coord = {{2{v[k*P+P-1]}}, v[k*P +: P]};
-  endfunction
-  function automatic logic signed [WBits-1:0] min3(input logic [3*P-1:0] v);
-    logic signed [WBits-1:0] m;
-    m = coord(v, 0);
-    if (coord(v, 1) < m) m = coord(v, 1);
-    if (coord(v, 2) < m) m = coord(v, 2);
-    min3 = m;
-  endfunction
-  function automatic logic signed [WBits-1:0] max3(input logic [3*P-1:0] v);
-    logic signed [WBits-1:0] m;
-    m = coord(v, 0);
-    if (coord(v, 1) > m) m = coord(v, 1);
-    if (coord(v, 2) > m) m = coord(v, 2);
-    max3 = m;
-  endfunction
-
   // The box is formed from the port in the accept cycle and registered with the triangle (the
   // port holds the triangle while it is offered): B holds each axis's clipped first and last
   // pixel and the empty flag, so the retire and move decisions read registers. The first and
   // last pixels are kept at PB bits: they are read only for a box that is not empty, where
   // 0 <= first <= last <= the viewport's last pixel.
-  logic signed [WBits-1:0] fx, lx, fy, ly;
-  logic p_empty;
-  always_comb begin
-    fx = -((Half - min3(tri_vx_i)) >>> F);
-    if (fx < 0) fx = '0;
-    lx = (max3(tri_vx_i) - Half) >>> F;
-    if (lx > $signed(WBits'(cfg_vp_xmax_i))) lx = $signed(WBits'(cfg_vp_xmax_i));
-    fy = -((Half - min3(tri_vy_i)) >>> F);
-    if (fy < 0) fy = '0;
-    ly = (max3(tri_vy_i) - Half) >>> F;
-    if (ly > $signed(WBits'(cfg_vp_ymax_i))) ly = $signed(WBits'(cfg_vp_ymax_i));
-    p_empty = (fx > lx) || (fy > ly);
-  end
+  // Per axis, with u = 2^F, h = u / 2 and each vertex v = hi * u + lo: the first pixel whose
+  // centre p * u + h is >= v is ceil((v - h) / u) = hi + (lo > h), the last one whose centre is
+  // <= v is t = floor((v - h) / u) = hi - (lo < h); both grow with v, so the box's first pixel is
+  // the smallest vertex's (by three compares of the vertices, beside the t subtractions) and its
+  // last the largest vertex's t. Unclipped, the box is empty exactly when no vertex has lo = h and
+  // the three t are equal (no pixel centre between the smallest and the largest vertex): that
+  // test reads the t and the low bits only, so the empty flag is one carry chain deep; the
+  // clipped first and last pixels two.
+  localparam int HB = (P - F + 2 > PB + 2) ? P - F + 2 : PB + 2;  // signed bits of hi, t, the box
+  function automatic logic [2*PB:0] axis_box(input logic [3*P-1:0] v, input logic [PB-1:0] vpi);
+    logic signed [HB-1:0] hi [3];
+    logic signed [HB-1:0] t [3];
+    logic [2:0] lo_lt, lo_gt, lo_eq;
+    logic signed [P+1:0] vw;
+    /* verilator lint_off UNUSEDSIGNAL */   // last's bits above PB (read only for a box)
+    logic signed [HB-1:0] vp, hmin, tmax, first, last;
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic lt01, lt02, lt12, gtmin, all_neg, unclipped_empty, past_end;
+    vp = HB'(vpi);
+    for (int k = 0; k < 3; k++) begin
+      vw = {{2{v[k*P+P-1]}}, v[k*P +: P]};
+      hi[k] = HB'(vw >>> F);
+      lo_lt[k] = v[k*P +: F] < F'(1 << (F - 1));
+      lo_eq[k] = v[k*P +: F] == F'(1 << (F - 1));
+      lo_gt[k] = !lo_lt[k] && !lo_eq[k];
+      t[k] = hi[k] - HB'(lo_lt[k]);
+    end
+    lt01 = $signed(v[0 +: P]) < $signed(v[P +: P]);
+    lt02 = $signed(v[0 +: P]) < $signed(v[2*P +: P]);
+    lt12 = $signed(v[P +: P]) < $signed(v[2*P +: P]);
+    if (lt01 && lt02) begin
+      hmin = hi[0];  gtmin = lo_gt[0];
+    end else if (!lt01 && lt12) begin
+      hmin = hi[1];  gtmin = lo_gt[1];
+    end else begin
+      hmin = hi[2];  gtmin = lo_gt[2];
+    end
+    if (!lt01 && !lt02) tmax = t[0];
+    else if (lt01 && !lt12) tmax = t[1];
+    else tmax = t[2];
+    first = hmin + HB'(gtmin);
+    last = (tmax > vp) ? vp : tmax;
+    all_neg = t[0][HB-1] && t[1][HB-1] && t[2][HB-1];
+    unclipped_empty = !(|lo_eq) && t[0] == t[1] && t[1] == t[2];
+    // first > vp: hmin + gtmin > vp
+    past_end = gtmin ? hmin >= vp : hmin > vp;
+    axis_box = {all_neg || past_end || unclipped_empty, PB'(first[HB-1] ? '0 : first), PB'(last)};
+  endfunction
+
+  logic [PB-1:0] fx, lx, fy, ly;
+  logic x_empty, y_empty, p_empty;
+  assign {x_empty, fx, lx} = axis_box(tri_vx_i, cfg_vp_xmax_i);
+  assign {y_empty, fy, ly} = axis_box(tri_vy_i, cfg_vp_ymax_i);
+  assign p_empty = x_empty || y_empty;
   logic b_empty_q;
   logic [PB-1:0] b_fx_q, b_lx_q, b_fy_q, b_ly_q;
   assign b_empty = b_empty_q;
@@ -182,7 +203,7 @@ module trirast_improved2_top #(
     if (tri_valid_i && tri_ready_o) begin
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
       b_empty_q <= p_empty;
-      b_fx_q <= PB'(fx);  b_lx_q <= PB'(lx);  b_fy_q <= PB'(fy);  b_ly_q <= PB'(ly);
+      b_fx_q <= fx;  b_lx_q <= lx;  b_fy_q <= fy;  b_ly_q <= ly;
       b_s_q <= tri_c_i[0 +: EB] + tri_c_i[EB +: EB] + tri_c_i[2*EB +: EB]
                - EB'(tri_bias_i[0]) - EB'(tri_bias_i[1]) - EB'(tri_bias_i[2]);
     end
@@ -281,11 +302,16 @@ module trirast_improved2_top #(
     assign s_vy  = b_vy_q;
     assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : b_fx_q;
     assign s_y0  = b_fy_q;
+    // SignFold (RegMult): A, B are read in the start cycles only, from B (run 1) or C (run 2;
+    // B' is kept); without it in every digit cycle, from C.
+    logic [3*CB-1:0] s_a, s_b;
+    assign s_a = (SignFold && !start2_q) ? b_a : c_a_q;
+    assign s_b = SignFold ? b_b : c_b_q;
     trirast_corner_serial #(
-      .DigitBits (4), .SignFold (SignFold), .AccEdges (E2Sum ? 2 : 3)
+      .DigitBits (4), .SignFold (SignFold), .RegMult (SignFold), .AccEdges (E2Sum ? 2 : 3)
     ) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .keep_y_i (start2_q),
-      .vx_i (s_vx), .vy_i (s_vy), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
+      .vx_i (s_vx), .vy_i (s_vy), .a_i (s_a), .b_i (s_b), .bias_i (c_bias_q),
       .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
     if (E2Sum) begin : g_e2
       assign acc[0 +: 2*EB] = acc_u[0 +: 2*EB];
