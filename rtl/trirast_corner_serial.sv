@@ -61,6 +61,7 @@ module trirast_corner_serial #(
   assign cy0 = $signed(DW'({y0_i, 1'b1}) << (F - 1));
 
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
+  logic last_q;                       // cnt_q == 1 (RegMult: the last digit, from a register)
   logic [ND*DB-1:0] any_x, any_y;     // OR of the start magnitudes of x, of y (the top digit)
   logic [NB-1:0] ny_q, ny_d;          // digits of the y magnitudes at the last start without keep
 
@@ -136,7 +137,8 @@ module trirast_corner_serial #(
         assign tx = EB'(pp(ak, dgx));
         assign ty = EB'(pp(bk, dgy));
       end else if (RegMult) begin : g_ppr
-        // A' and B' registered at the start; the digit products as trees (SignFold's sums).
+        // A' and B' registered at the start (SignFold's sums; DigitTree: as trees); the last digit's
+        // -bias from a register.
         logic signed [CB:0] ake, bke, as_q, as_d, bs_q, bs_d;
         logic signed [PW:0] pxe, pye, px, py, nb;
         /* verilator lint_off WIDTH */   // sign extensions by assignment
@@ -151,7 +153,7 @@ module trirast_corner_serial #(
           as_q <= as_d;
           bs_q <= bs_d;
         end
-        assign nb  = (cnt_q == NB'(1) && bias_i[k]) ? '1 : '0;   // -bias on the last digit
+        assign nb  = (last_q && bias_i[k]) ? '1 : '0;   // -bias on the last digit
         if (DigitTree) begin : g_tree
           assign px = pp_tree(pxe, dgx, '0);
           assign py = pp_tree(pye, dgy, nb);
@@ -227,8 +229,13 @@ module trirast_corner_serial #(
     ny_q <= ny_d;
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) cnt_q <= '0;
-    else cnt_q <= cnt_d;
+    if (!rst_ni) begin
+      cnt_q <= '0;
+      last_q <= 1'b0;
+    end else begin
+      cnt_q <= cnt_d;
+      last_q <= cnt_d == NB'(1);
+    end
   end
   assign busy_o = cnt_q != '0;
 
