@@ -25,10 +25,6 @@ module trirast_corner_serial #(
   // start (a_i, b_i are read only in the start cycle; with keep_y_i B' is kept too), so a digit
   // cycle has no negation: six adder levels from a register to the accumulator, not seven.
   parameter bit RegMult   = 1'b0,
-  // 1 (with RegMult): each operand's digit product as a tree of two adder levels
-  // (A' * d = (A'd0 + 2A'd1) + (4A'd2 + 8A'd3)), four levels in all; faster, but on iCE40 larger
-  // at the default widths (docs/gen2-design.md, "Fitting the HX8K"). The same values and cycles.
-  parameter bit DigitTree = 1'b0,
   parameter int AccEdges  = 3
 ) (
   input  logic                                 clk_i,
@@ -88,21 +84,6 @@ module trirast_corner_serial #(
     pp_sum = sum;
   endfunction
 
-  // The same sum as a tree: the terms in pairs (one adder level), init with the first pair's sum,
-  // then the pairs' sums (DigitBits 2: init + (m d0 + 2m d1)).
-  function automatic logic signed [PW:0] pp_tree(input logic signed [PW:0] m,
-                                                 input logic [DB-1:0] digit,
-                                                 input logic signed [PW:0] init);
-    logic signed [PW:0] pr [DB/2];
-    logic signed [PW:0] sum;
-    for (int i = 0; i < DB / 2; i++) begin
-      pr[i] = (digit[2*i] ? (m <<< (2*i)) : '0) + (digit[2*i+1] ? (m <<< (2*i + 1)) : '0);
-    end
-    sum = pr[0] + init;
-    for (int i = 1; i < DB / 2; i++) sum = sum + pr[i];
-    pp_tree = sum;
-  endfunction
-
   logic [ND*DB-1:0] mag_k [3][2];
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [DW-1:0] dxl, dy;
@@ -137,8 +118,8 @@ module trirast_corner_serial #(
         assign tx = EB'(pp(ak, dgx));
         assign ty = EB'(pp(bk, dgy));
       end else if (RegMult) begin : g_ppr
-        // A' and B' registered at the start (SignFold's sums; DigitTree: as trees); the last digit's
-        // -bias from a register.
+        // A' and B' registered at the start (SignFold's sums); the last digit's -bias from a
+        // register.
         logic signed [CB:0] ake, bke, as_q, as_d, bs_q, bs_d;
         logic signed [PW:0] pxe, pye, px, py, nb;
         /* verilator lint_off WIDTH */   // sign extensions by assignment
@@ -154,13 +135,8 @@ module trirast_corner_serial #(
           bs_q <= bs_d;
         end
         assign nb  = (last_q && bias_i[k]) ? '1 : '0;   // -bias on the last digit
-        if (DigitTree) begin : g_tree
-          assign px = pp_tree(pxe, dgx, '0);
-          assign py = pp_tree(pye, dgy, nb);
-        end else begin : g_chain
-          assign px = pp_sum(pxe, dgx, '0);
-          assign py = pp_sum(pye, dgy, nb);
-        end
+        assign px = pp_sum(pxe, dgx, '0);
+        assign py = pp_sum(pye, dgy, nb);
         assign tx = EB'(px);
         assign ty = EB'(py);
       end else begin : g_pps

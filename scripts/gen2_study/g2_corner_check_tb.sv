@@ -24,8 +24,8 @@ module g2_corner_check_tb;
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic start;
-  logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_m16t, busy_p0, busy_p1, busy_ps;
-  logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_m16t, el_p0, el_p1, el_ps;
+  logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_p0, busy_p1, busy_ps;
+  logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_p0, el_p1, el_ps;
 
   trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
@@ -36,14 +36,10 @@ module g2_corner_check_tb;
   trirast_corner_serial #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
     .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .busy_o (busy_m16s), .el_o (el_m16s));
-  // The unit's form: SignFold with the registered multiplicands, and with the digit-product tree.
+  // The unit's form: SignFold with the registered multiplicands.
   trirast_corner_serial #(.DigitBits (4), .SignFold (1), .RegMult (1)) u_m16r (.clk_i (clk),
     .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy), .a_i (a),
     .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .busy_o (busy_m16r), .el_o (el_m16r));
-  trirast_corner_serial #(.DigitBits (4), .SignFold (1), .RegMult (1), .DigitTree (1)) u_m16t (
-    .clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy),
-    .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .busy_o (busy_m16t),
-    .el_o (el_m16t));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_p0), .el_o (el_p0));
@@ -130,7 +126,7 @@ module g2_corner_check_tb;
     depth_seen0 = -1;
     depth_seen1 = -1;
     depth_seens = -1;
-    while ((busy_m4 || busy_m16 || busy_m16s || busy_m16r || busy_m16t || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
+    while ((busy_m4 || busy_m16 || busy_m16s || busy_m16r || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
       @(negedge clk);
       cyc++;
       if (!busy_p0 && depth_seen0 < 0) depth_seen0 = cyc;
@@ -155,14 +151,14 @@ module g2_corner_check_tb;
       if ((want < 0 ? -want : want) > max_abs) max_abs = want < 0 ? -want : want;
       if (sx(64'(el_m4[k*EB +: EB]), EB) != want || sx(64'(el_m16[k*EB +: EB]), EB) != want ||
           sx(64'(el_m16s[k*EB +: EB]), EB) != want ||
-          sx(64'(el_m16r[k*EB +: EB]), EB) != want || sx(64'(el_m16t[k*EB +: EB]), EB) != want ||
+          sx(64'(el_m16r[k*EB +: EB]), EB) != want ||
           sx(64'(el_p0[k*EB +: EB]), EB) != want || sx(64'(el_p1[k*EB +: EB]), EB) != want ||
           sx(64'(el_ps[k*EB +: EB]), EB) != want) begin
         errors++;
-        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16 SignFold %0d (RegMult %0d, DigitTree %0d) msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
+        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16 SignFold %0d (RegMult %0d) msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
           k, A, B, cx0 - vxk, cy0 - vyk, bias[k], sx(64'(el_m4[k*EB +: EB]), EB),
           sx(64'(el_m16[k*EB +: EB]), EB), sx(64'(el_m16s[k*EB +: EB]), EB),
-          sx(64'(el_m16r[k*EB +: EB]), EB), sx(64'(el_m16t[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
+          sx(64'(el_m16r[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
           sx(64'(el_p1[k*EB +: EB]), EB), sx(64'(el_ps[k*EB +: EB]), EB), want);
       end
     end
