@@ -57,7 +57,7 @@ module trirast_corner_serial #(
   assign cy0 = $signed(DW'({y0_i, 1'b1}) << (F - 1));
 
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
-  logic last_q;                       // cnt_q == 1 (RegMult: the last digit, from a register)
+  logic last_q;                       // RegMult: cnt_q == 1 (the last digit), from a register
   logic [ND*DB-1:0] any_x, any_y;     // OR of the start magnitudes of x, of y (the top digit)
   logic [NB-1:0] ny_q, ny_d;          // digits of the y magnitudes at the last start without keep
 
@@ -117,41 +117,33 @@ module trirast_corner_serial #(
       if (!SignFold) begin : g_pp
         assign tx = EB'(pp(ak, dgx));
         assign ty = EB'(pp(bk, dgy));
-      end else if (RegMult) begin : g_ppr
-        // A' and B' registered at the start (SignFold's sums); the last digit's -bias from a
-        // register.
-        logic signed [CB:0] ake, bke, as_q, as_d, bs_q, bs_d;
-        logic signed [PW:0] pxe, pye, px, py, nb;
-        /* verilator lint_off WIDTH */   // sign extensions by assignment
-        assign ake = ak;
-        assign bke = bk;
-        assign pxe = as_q;
-        assign pye = bs_q;
-        /* verilator lint_on WIDTH */
-        assign as_d = !start_i ? as_q : dxl[DW-1] ? -ake : ake;
-        assign bs_d = (!start_i || keep_y_i) ? bs_q : dy[DW-1] ? -bke : bke;
-        always_ff @(posedge clk_i) begin
-          as_q <= as_d;
-          bs_q <= bs_d;
-        end
-        assign nb  = (last_q && bias_i[k]) ? '1 : '0;   // -bias on the last digit
-        assign px = pp_sum(pxe, dgx, '0);
-        assign py = pp_sum(pye, dgy, nb);
-        assign tx = EB'(px);
-        assign ty = EB'(py);
       end else begin : g_pps
         // A' * digit + B' * digit - bias_last: signs on the multiplicands (CB + 1 bits: -(-2^24)).
+        // RegMult: A' and B' registered at the start, the last digit flagged by a register.
         logic signed [CB:0] ake, bke, as, bs;
         logic signed [PW:0] pxe, pye, px, py, nb;
+        logic last;
         /* verilator lint_off WIDTH */   // sign extensions by assignment
         assign ake = ak;
         assign bke = bk;
-        assign as  = sx_q ? -ake : ake;
-        assign bs  = sy_q ? -bke : bke;
         assign pxe = as;
         assign pye = bs;
         /* verilator lint_on WIDTH */
-        assign nb  = (cnt_q == NB'(1) && bias_i[k]) ? '1 : '0;   // -bias on the last digit
+        if (RegMult) begin : g_reg
+          logic signed [CB:0] as_q, bs_q;
+          always_ff @(posedge clk_i) begin
+            if (start_i) as_q <= dxl[DW-1] ? -ake : ake;
+            if (start_i && !keep_y_i) bs_q <= dy[DW-1] ? -bke : bke;
+          end
+          assign as = as_q;
+          assign bs = bs_q;
+          assign last = last_q;
+        end else begin : g_comb
+          assign as = sx_q ? -ake : ake;
+          assign bs = sy_q ? -bke : bke;
+          assign last = cnt_q == NB'(1);
+        end
+        assign nb  = (last && bias_i[k]) ? '1 : '0;   // -bias on the last digit
         assign px = pp_sum(pxe, dgx, '0);
         assign py = pp_sum(pye, dgy, nb);
         assign tx = EB'(px);
@@ -205,13 +197,18 @@ module trirast_corner_serial #(
     ny_q <= ny_d;
   end
   always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      cnt_q <= '0;
-      last_q <= 1'b0;
-    end else begin
-      cnt_q <= cnt_d;
-      last_q <= cnt_d == NB'(1);
+    if (!rst_ni) cnt_q <= '0;
+    else cnt_q <= cnt_d;
+  end
+  if (RegMult) begin : g_last
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) last_q <= 1'b0;
+      else last_q <= cnt_d == NB'(1);
     end
+  end else begin : g_nolast
+    assign last_q = 1'b0;   // not read: the last digit is the counter's decode
+    logic unused_last;
+    assign unused_last = last_q;
   end
   assign busy_o = cnt_q != '0;
 

@@ -123,7 +123,7 @@ module trirast_improved2_top #(
   logic [TB-1:0] b_tag_q;
   logic [3*P-1:0] b_vx_q, b_vy_q;
   logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
-  logic b_empty, b_take, b_retire, c_free;
+  logic b_take, b_retire, c_free;
 
   // The box is formed from the port in the accept cycle and registered with the triangle (the
   // port holds the triangle while it is offered): B holds each axis's clipped first and last
@@ -186,10 +186,9 @@ module trirast_improved2_top #(
   assign p_empty = x_empty || y_empty;
   logic b_empty_q;
   logic [PB-1:0] b_fx_q, b_lx_q, b_fy_q, b_ly_q;
-  assign b_empty = b_empty_q;
 
-  assign b_retire = b_full_q && b_empty;
-  assign b_take   = b_full_q && !b_empty && c_free;
+  assign b_retire = b_full_q && b_empty_q;
+  assign b_take   = b_full_q && !b_empty_q && c_free;
   assign tri_ready_o = !b_full_q || b_retire || b_take;
   assign box_retire_o = b_retire;
   assign box_retire_tag_o = b_tag_q;

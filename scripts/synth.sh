@@ -592,17 +592,19 @@ OUT="$ROOT/docs/synth.md"
     fm=$(pnr_fmax "$1")
     echo "| $2 | $3 | $(pnr_lc "$1") | $(count '^SB_LUT4$' "$f") | $(count '^SB_DFF' "$f") | $(pnr_status "$1") | $(if [ -n "$fm" ]; then echo "**$fm MHz**"; else echo -; fi) | $(pnr_logic_route "$1") |"
   }
+  # FIT_CONFIG with its widths, as the rows of the designs placed there name it.
+  FIT_LABEL="$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
   pnr_row improved.setup "setup stage (interface, 3 normalizers, 3 lanes with dividers)" default
   pnr_row improved.walk "walk stage alone (3 walkers, span generator)" default
   pnr_row improved.walk_fifo "walk stage + span FIFO" default
   pnr_row improved.fifo "span FIFO alone" default
   lut_def=$(cell improved default ice40 4)
   echo "| whole improved unit | default | not placed: $lut_def LUT4 alone (area table) > 7680 | $lut_def | $(cell improved default ice40 5) | does not fit the HX8K | - | |"
-  pnr_row "improved.$FIT_CONFIG" "whole improved unit" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
+  pnr_row "improved.$FIT_CONFIG" "whole improved unit" "$FIT_LABEL"
   [ -f "$WORK/jobs/pnr.improved2.default.status" ] &&
     pnr_row improved2.default "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" default
   [ -f "$WORK/jobs/pnr.improved2.$FIT_CONFIG.status" ] &&
-    pnr_row "improved2.$FIT_CONFIG" "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
+    pnr_row "improved2.$FIT_CONFIG" "whole second-generation improved unit, iCE40 form (span FIFO in block RAM)" "$FIT_LABEL"
   if [[ " $UNITS " == *" trad "* ]]; then
     for cfg in $CONFIGS; do
       name="${cfg%%:*}"
@@ -615,7 +617,7 @@ OUT="$ROOT/docs/synth.md"
   [ -n "$HS_UNITS" ] && [ -f "$WORK/jobs/pnr.halfspace.setup.status" ] &&
     pnr_row halfspace.setup "half-space setup stage (interface, edge values at the box corner)" default
   for unit in $HS_UNITS; do
-    [ -f "$WORK/jobs/pnr.$unit.$FIT_CONFIG.status" ] && pnr_row "$unit.$FIT_CONFIG" "whole half-space unit, stamp ${unit#halfspace-s}x${unit#halfspace-s}, tile $HS_TILE" "$FIT_CONFIG ($(echo " $CONFIGS " | grep -o " $FIT_CONFIG:[^ ]*" | awk -F: '{printf "S=%s, coord %s, box %s", $2, $3, $4}'))"
+    [ -f "$WORK/jobs/pnr.$unit.$FIT_CONFIG.status" ] && pnr_row "$unit.$FIT_CONFIG" "whole half-space unit, stamp ${unit#halfspace-s}x${unit#halfspace-s}, tile $HS_TILE" "$FIT_LABEL"
   done
   for unit in $HS_UNITS; do
     [ -f "$WORK/jobs/pnr.$unit.walker.status" ] && pnr_row "$unit.walker" "half-space tile walker + stamp tester alone, stamp ${unit#halfspace-s}x${unit#halfspace-s}" default
