@@ -18,10 +18,18 @@
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
 // the bound from the running registers, which hold the values loaded with the job until then (no
 // copies ex, ee, bex).
+// e without its F low bits: the lane hands off D and r_s with F zero low bits (D = |A| * 2^F, r_s
+// the remainder of |B| * 2^F), so e's low bits are those of the entry e for ever and never carry
+// into the sum whose sign decides a step (e + de >= 0 exactly when (e >> F) + (de >> F) >= 0):
+// the walker keeps e >> F only (asserted at the load), in RB - F + 1 signed bits: e lies in
+// [0, D), the sum whose sign is read (dir +: e + r_s - D, dir -: e - r_s) in (-D, D), and the
+// other sum, which may overflow, is taken only when it lies in [0, D).
 // NumEndpoints N > 1 (the walk stage's N rows per cycle, docs/timing.md): the step
 // above is built N times in a chain, row r + 1 one step after row r (row 0: the registers), as
 // rtl/trirast_edge_walker.sv's chain; the walker presents rows j .. j + N - 1 and advances by the
 // runtime group size adv_rows_i (1..N; N = 1: one row, adv_rows_i unused).
+`include "trirast_assert.svh"
+
 module trirast_edge_walker2 #(
   parameter bit CarrySelect = 1'b1,
   parameter int NumEndpoints = 1   // rows presented per cycle (hardware)
@@ -49,6 +57,8 @@ module trirast_edge_walker2 #(
                                                                          // restored bound
 );
   localparam int RB = trirast_pkg::RemBits;
+  localparam int F  = trirast_pkg::FracBits;
+  localparam int EW = RB - F + 1;   // e >> F, signed (see the header)
   localparam int WB = trirast_pkg::RowBits;
   localparam int XB = trirast_pkg::WalkerXBits;
   localparam int BB = trirast_pkg::BoxBits;
@@ -61,14 +71,14 @@ module trirast_edge_walker2 #(
   logic [1:0] est_q, st_q, st_d;
   logic signed [XB-1:0] ex_q, inca_q, incb_q, tha_q, thb_q, x_q, x_d;
   logic signed [XB-1:0] bx_q, bx_d, binca_q, bincb_q, bex_q;   // bound register and its steps
-  logic signed [RB+1:0] dea_q, deb_q, e_q, e_d;                // e in RB + 2 signed bits
-  logic [RB-1:0] ee_q;
+  logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // e >> F, signed
+  logic [EW-2:0] ee_q;
 
   // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
   logic [1:0] st_r [0:NumEndpoints] /* verilator split_var */;
   logic signed [XB-1:0] x_r [0:NumEndpoints] /* verilator split_var */;
   logic signed [XB-1:0] bx_r [0:NumEndpoints] /* verilator split_var */;
-  logic signed [RB+1:0] e_r [0:NumEndpoints] /* verilator split_var */;
+  logic signed [EW-1:0] e_r [0:NumEndpoints] /* verilator split_var */;
   logic [WB-1:0] cnt_r [0:NumEndpoints] /* verilator split_var */;
   logic ent_r [0:NumEndpoints] /* verilator split_var */;
   assign st_r[0]  = st_q;
@@ -79,14 +89,14 @@ module trirast_edge_walker2 #(
   assign ent_r[0] = ent_q;
 
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
-    logic signed [RB+1:0] ea, eb;
+    logic signed [EW-1:0] ea, eb;
     logic signed [XB-1:0] xs, bs;
     logic ga, gb, selb, leave;
     assign ea = e_r[r] + dea_q;
     assign eb = e_r[r] + deb_q;
     assign ga = x_r[r] >= tha_q;          // the leave test of xa (dir -: negated)
     assign gb = x_r[r] >= thb_q;
-    assign selb = dir_q ? !eb[RB+1] : ea[RB+1];
+    assign selb = dir_q ? !eb[EW-1] : ea[EW-1];
     assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
     if (CarrySelect) begin : g_cs
       logic signed [XB-1:0] xa, xb, ba, bb;
@@ -112,7 +122,7 @@ module trirast_edge_walker2 #(
 
     logic [1:0] st_n;
     logic signed [XB-1:0] x_n, bx_n;
-    logic signed [RB+1:0] e_n;
+    logic signed [EW-1:0] e_n;
     always_comb begin
       st_n = st_r[r];  x_n = x_r[r];  e_n = e_r[r];  bx_n = bx_r[r];
       if (ent_r[r]) begin
@@ -120,7 +130,7 @@ module trirast_edge_walker2 #(
         // (before its entry row an edge is out or clear, and only a bound row steps them).
         st_n = est_q;
         if (CarrySelect) begin
-          x_n = ex_q;  e_n = $signed({2'b00, ee_q});  bx_n = bex_q;
+          x_n = ex_q;  e_n = $signed({1'b0, ee_q});  bx_n = bex_q;
         end
       end else if (st_r[r] == RowBound) begin
         x_n  = xs;
@@ -141,7 +151,7 @@ module trirast_edge_walker2 #(
   logic [1:0] st_c [1:NumEndpoints];
   logic signed [XB-1:0] x_c [1:NumEndpoints];
   logic signed [XB-1:0] bx_c [1:NumEndpoints];
-  logic signed [RB+1:0] e_c [1:NumEndpoints];
+  logic signed [EW-1:0] e_c [1:NumEndpoints];
   logic [WB-1:0] cnt_c [1:NumEndpoints];
   logic ent_c [1:NumEndpoints];
   for (genvar r = 1; r <= NumEndpoints; r++) begin : g_copy
@@ -160,7 +170,7 @@ module trirast_edge_walker2 #(
       cnt_d = j_entry_i - 1'b1;
       ent_d = enters_i && (j_entry_i == WB'(1));
       x_d   = entry_x_i;
-      e_d   = $signed({2'b00, entry_e_i});
+      e_d   = $signed({1'b0, entry_e_i[RB-1:F]});
       bx_d  = mirror_i ? $signed(XB'(xmax_i)) - entry_x_i : entry_x_i + 1'b1;
       st_d  = (enters_i && j_entry_i == '0) ? entry_state_i : (dir_down_i ? RowOut : RowClear);
     end else if (adv_i) begin
@@ -176,11 +186,11 @@ module trirast_edge_walker2 #(
 
   // ---- load-time preparation ----
   logic signed [XB-1:0] qse, inca, incb, xm;
-  logic signed [RB+1:0] rse, de;
+  logic signed [EW-1:0] rse, de;
   assign qse  = $signed(XB'(qs_i));
   assign xm   = $signed(XB'(xmax_i));
-  assign rse  = $signed({2'b00, rs_i});
-  assign de   = $signed({2'b00, d_i});
+  assign rse  = $signed({1'b0, rs_i[RB-1:F]});
+  assign de   = $signed({1'b0, d_i[trirast_pkg::StepBits-1:F]});
   assign inca = dir_down_i ? qse : -qse;
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
 
@@ -201,7 +211,7 @@ module trirast_edge_walker2 #(
       est_q    <= entry_state_i;
       if (CarrySelect) begin   // the entry row's copies (CarrySelect 0: x_q, e_q, bx_q hold them)
         ex_q     <= entry_x_i;
-        ee_q     <= entry_e_i;
+        ee_q     <= entry_e_i[RB-1:F];
         bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
       end
       if (CarrySelect) begin
@@ -234,6 +244,10 @@ module trirast_edge_walker2 #(
     assign row_bound_o[r*(BB+1) +: BB+1] = bx_r[r][BB:0];
   end
   logic unused_rows;
-  assign unused_rows = ^adv_rows_i;   // N = 1: one row per advance
+  assign unused_rows = ^{adv_rows_i,       // N = 1: one row per advance
+                         entry_e_i[F-1:0], rs_i[F-1:0], d_i[F-1:0]};   // e's low bits
+
+  // D and r_s have F zero low bits (the lane's), so e's stay the entry e's (see the header).
+  `ASSERT(StepLowBitsZero_A, load_i |-> rs_i[F-1:0] == '0 && d_i[F-1:0] == '0, clk_i, !rst_ni)
 
 endmodule

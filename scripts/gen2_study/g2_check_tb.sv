@@ -211,9 +211,11 @@ module g2_check_tb;
   task automatic walker_trial();
     int rows;
     xmax = BB'($urandom % 40);
-    d = SB'(1 + $urandom % 1000);
+    // D and r_s with F zero low bits, as a lane hands them off (D = |A| * 2^F, r_s the remainder
+    // of |B| * 2^F); e with any low bits (E's).
+    d = SB'(1 + $urandom % 1000) << trirast_pkg::FracBits;
     qs = QB'($urandom % 6);
-    rs = RB'($urandom % d);
+    rs = RB'($urandom % (d >> trirast_pkg::FracBits)) << trirast_pkg::FracBits;
     ee = RB'($urandom % d);
     ssat = ($urandom % 16) == 0;
     mirror = 1'($urandom);

@@ -126,11 +126,12 @@ module g2_walk_check_tb;
     for (int e = 0; e < 3; e++) begin
       logic [SB-1:0] d;
       logic dir;
-      d = SB'(1 + $urandom % 1000);
+      // D and r_s with F zero low bits, as a lane hands them off; e with any low bits.
+      d = SB'(1 + $urandom % 1000) << trirast_pkg::FracBits;
       dir = 1'($urandom);
       b.d[e*SB +: SB] = d;
       b.qs[e*QB +: QB] = QB'($urandom % 6);
-      b.rs[e*RB +: RB] = RB'($urandom % d);
+      b.rs[e*RB +: RB] = RB'($urandom % (d >> trirast_pkg::FracBits)) << trirast_pkg::FracBits;
       b.entry_e[e*RB +: RB] = RB'($urandom % d);
       b.ssat[e] = ($urandom % 16) == 0;
       b.mirror[e] = 1'($urandom);
