@@ -3,8 +3,10 @@
 #   scripts/sweep_synth_task.sh TODO INDEX RESULTS
 # TODO is the list `trirast sweep --merge RESULTS --synth-todo TODO` wrote (one UNIT:S:COORD:BOX:N
 # per line, index 0 first); the task synthesizes line INDEX with scripts/synth.sh --one into
-# RESULTS/synth/UNIT-SS-cC-bB-NN.synth (written whole, then renamed). A complete result file is not
-# redone (a rerun resumes). Traditional units are also placed and routed (iCE40 Fmax): they fit.
+# RESULTS/synth/UNIT-SS-cC-bB-NN.synth (written whole, then renamed). A complete result file made
+# from the same sources is not redone (a rerun resumes): beside it, FILE.src holds a hash of the
+# RTL and the synthesis scripts it was made from, and a result of other sources is made again.
+# Traditional units are also placed and routed (iCE40 Fmax): they fit.
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 [ $# -eq 3 ] || { echo "usage: sweep_synth_task.sh TODO INDEX RESULTS" >&2; exit 2; }
@@ -15,10 +17,14 @@ LINE=$(sed -n "$((INDEX + 1))p" "$TODO")
 IFS=: read -r unit s c b n <<< "$LINE"
 OUT="$RES/synth/$unit-S$s-c$c-b$b-N$n.synth"
 mkdir -p "$RES/synth"
-if [ -f "$OUT" ] && [ "$(tail -1 "$OUT")" = "# end" ]; then
+SRC=$(cat "$ROOT"/rtl/*.sv "$ROOT"/rtl/*.svh "$ROOT"/rtl/*.f "$ROOT/scripts/synth.sh" \
+        "$ROOT/scripts/synth_wrap.py" "$ROOT/scripts/gen_params.py" | sha1sum | cut -d' ' -f1)
+if [ -f "$OUT" ] && [ "$(tail -1 "$OUT")" = "# end" ] && [ "$(cat "$OUT.src" 2>/dev/null)" = "$SRC" ]; then
   echo "sweep_synth_task.sh: $LINE: done already ($OUT)"
   exit 0
 fi
+rm -f "$OUT" "$OUT.src"   # a result of other sources, or none
 PNR=""
 [ "$unit" = trad ] && PNR=--one-pnr
-exec "$ROOT/scripts/synth.sh" --one "$LINE" --one-out "$OUT" $PNR "$RES/synth-work"
+"$ROOT/scripts/synth.sh" --one "$LINE" --one-out "$OUT" $PNR "$RES/synth-work"
+echo "$SRC" > "$OUT.src"
