@@ -7,8 +7,26 @@
 # from the same sources is not redone (a rerun resumes): beside it, FILE.src holds a hash of the
 # RTL and the synthesis scripts it was made from, and a result of other sources is made again.
 # Traditional units are also placed and routed (iCE40 Fmax): they fit.
+#   scripts/sweep_synth_task.sh --prune RESULTS
+# removes the result files of RESULTS/synth made from other sources (or of unknown ones), so that
+# the sweep's merge lists them for synthesis again (the drivers run it before their first merge).
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+sources_hash() {
+  cat "$ROOT"/rtl/*.sv "$ROOT"/rtl/*.svh "$ROOT"/rtl/*.f "$ROOT/scripts/synth.sh" \
+    "$ROOT/scripts/synth_wrap.py" "$ROOT/scripts/gen_params.py" | sha1sum | cut -d' ' -f1
+}
+if [ "${1:-}" = --prune ]; then
+  [ $# -eq 2 ] || { echo "usage: sweep_synth_task.sh --prune RESULTS" >&2; exit 2; }
+  SRC=$(sources_hash)
+  n=0
+  for f in "$2"/synth/*.synth; do
+    [ -e "$f" ] || continue
+    if [ "$(cat "$f.src" 2>/dev/null)" != "$SRC" ]; then rm -f "$f" "$f.src"; n=$((n + 1)); fi
+  done
+  [ "$n" -eq 0 ] || echo "sweep_synth_task.sh: $n synthesis result(s) of other sources removed from $2/synth"
+  exit 0
+fi
 [ $# -eq 3 ] || { echo "usage: sweep_synth_task.sh TODO INDEX RESULTS" >&2; exit 2; }
 TODO="$1"; INDEX="$2"; RES="$3"
 [ -f "$TODO" ] || { echo "sweep_synth_task.sh: $TODO: no such file" >&2; exit 2; }
@@ -17,8 +35,7 @@ LINE=$(sed -n "$((INDEX + 1))p" "$TODO")
 IFS=: read -r unit s c b n <<< "$LINE"
 OUT="$RES/synth/$unit-S$s-c$c-b$b-N$n.synth"
 mkdir -p "$RES/synth"
-SRC=$(cat "$ROOT"/rtl/*.sv "$ROOT"/rtl/*.svh "$ROOT"/rtl/*.f "$ROOT/scripts/synth.sh" \
-        "$ROOT/scripts/synth_wrap.py" "$ROOT/scripts/gen_params.py" | sha1sum | cut -d' ' -f1)
+SRC=$(sources_hash)
 if [ -f "$OUT" ] && [ "$(tail -1 "$OUT")" = "# end" ] && [ "$(cat "$OUT.src" 2>/dev/null)" = "$SRC" ]; then
   echo "sweep_synth_task.sh: $LINE: done already ($OUT)"
   exit 0
