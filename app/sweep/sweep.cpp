@@ -120,7 +120,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   std::set<std::string> seen;
   auto add = [&](const std::string& engine, const std::string& group, int S, int coord, int box,
                  int K, int N, DividerMode div = DividerMode::Adaptive,
-                 BoundaryMode bnd = BoundaryMode::Step) {
+                 BoundaryMode bnd = BoundaryMode::Step, int g2_corner_form = 1) {
     SweepPoint p;
     p.engine = engine;
     p.group = group;
@@ -131,6 +131,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     p.cfg.endpoints = N;
     p.cfg.divider = div;
     p.cfg.boundary = bnd;
+    p.cfg.g2_corner_form = g2_corner_form;
     if (!wanted(engine)) return;
     if (!seen.insert(p.label()).second) return;  // the same configuration in two groups
     pts.push_back(p);
@@ -172,20 +173,10 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   // untruncated) in both corner forms; the untimed datapath, whose spans the corner form does not
   // change, once per width. The improved unit's sweep keeps the default FIFO depth: so does this.
   auto add_g2 = [&](const std::string& group, int S, int coord, int box) {
-    for (const std::string engine : {"improved2-sc", "improved2-datapath"}) {
-      if (!wanted(engine)) continue;
-      for (int form : {0, 1}) {
-        if (engine == "improved2-datapath" && form == 0) continue;  // the default form only
-        SweepPoint p;
-        p.engine = engine;
-        p.group = group;
-        p.cfg.subpixel_bits = S;
-        p.cfg.coord_int_bits = coord;
-        p.cfg.box_bits = box;
-        p.cfg.g2_corner_form = form;
-        if (seen.insert(p.label()).second) pts.push_back(p);
-      }
-    }
+    for (const std::string engine : {"improved2-sc", "improved2-datapath"})
+      for (int form : {0, 1})
+        if (engine == "improved2-sc" || form == 1)  // the datapath: the default form only
+          add(engine, group, S, coord, box, 0, 1, DividerMode::Adaptive, BoundaryMode::Step, form);
   };
   auto add_g2_points = [&] {
     const char* g = "gen2 ";
