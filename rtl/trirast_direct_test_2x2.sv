@@ -4,8 +4,14 @@
 // E_L + a + b >= 0, a centre covered when all three edges pass, and per box row the span (a row of
 // two centres is one run: a convex triangle) with x0, y0 added. Width W: 50 (EdgeBits, any
 // triangle) or narrow (the corner values of g2_corner_narrow's narrow path).
+// SW (0: W): the signed bits that hold a and b (|a|, |b| < 2^(SW-1)). With SW + 2 < W each sum's
+// sign is taken from SW + 2 bits instead of W + 2: E_L = h * 2^SW + l (l its SW low bits,
+// unsigned), t = l + x for x = a, b, a + b lies in (-2^SW, 2^(SW+1)), and E_L + x = (h + c) * 2^SW
+// + (t mod 2^SW) with c = floor(t / 2^SW) in {-1, 0, 1}; so E_L + x < 0 exactly when h <= -2, or
+// h = 0 and t < 0, or h = -1 and t < 2^SW (two equality tests of h, shared by the three sums).
 module trirast_direct_test_2x2 #(
-  parameter int W = trirast_pkg::EdgeBits
+  parameter int W  = trirast_pkg::EdgeBits,
+  parameter int SW = 0
 ) (
   input  logic [3*W-1:0]                  el_i,
   input  logic [3*W-1:0]                  a_i,
@@ -23,17 +29,35 @@ module trirast_direct_test_2x2 #(
   logic [2:0] c00, c10, c01, c11;   // per edge: centre (i, j) passes
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [W-1:0] e, a, b;
-    logic signed [W+1:0] e10, e01, e11;
     assign e = el_i[k*W +: W];
     assign a = a_i[k*W +: W];
     assign b = b_i[k*W +: W];
-    assign e10 = (W + 2)'(e) + (W + 2)'(a);
-    assign e01 = (W + 2)'(e) + (W + 2)'(b);
-    assign e11 = (W + 2)'(e) + (W + 2)'(a) + (W + 2)'(b);
     assign c00[k] = !e[W-1];
-    assign c10[k] = !e10[W+1];
-    assign c01[k] = !e01[W+1];
-    assign c11[k] = !e11[W+1];
+    if (SW != 0 && SW + 2 < W) begin : g_split
+      logic [W-SW-1:0] h;
+      logic signed [SW+1:0] t10, t01, t11;
+      logic h0, hm1;
+      assign h   = e[W-1:SW];
+      assign h0  = h == '0;
+      assign hm1 = &h;
+      assign t10 = $signed({2'b00, e[SW-1:0]}) + (SW + 2)'(a);
+      assign t01 = $signed({2'b00, e[SW-1:0]}) + (SW + 2)'(b);
+      assign t11 = t10 + (SW + 2)'(b);
+      // x = E_L + step < 0 from t (SW + 2 bits) and h
+      assign c10[k] = !(h0 ? t10[SW+1] : hm1 ? (t10[SW+1] || !t10[SW]) : h[W-SW-1]);
+      assign c01[k] = !(h0 ? t01[SW+1] : hm1 ? (t01[SW+1] || !t01[SW]) : h[W-SW-1]);
+      assign c11[k] = !(h0 ? t11[SW+1] : hm1 ? (t11[SW+1] || !t11[SW]) : h[W-SW-1]);
+      logic unused_hi;   // a and b are SW-bit values sign-extended to W
+      assign unused_hi = ^{a[W-1:SW+2], b[W-1:SW+2]};
+    end else begin : g_full
+      logic signed [W+1:0] e10, e01, e11;
+      assign e10 = (W + 2)'(e) + (W + 2)'(a);
+      assign e01 = (W + 2)'(e) + (W + 2)'(b);
+      assign e11 = (W + 2)'(e) + (W + 2)'(a) + (W + 2)'(b);
+      assign c10[k] = !e10[W+1];
+      assign c01[k] = !e01[W+1];
+      assign c11[k] = !e11[W+1];
+    end
   end
   logic [1:0] row0, row1;   // covered centres of row j: bit i
   assign row0 = {(&c10) && xmax_i, &c00};

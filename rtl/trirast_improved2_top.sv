@@ -372,7 +372,7 @@ module trirast_improved2_top #(
   logic [2*PB-1:0] t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_direct_test_2x2 #(.W (TW)) u_box2x2 (
+  trirast_direct_test_2x2 #(.W (TW), .SW (TestHi ? CB : CB + F)) u_box2x2 (
     .el_i (t_el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
     .x0_i (PB'(0)), .y0_i (PB'(0)), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
   /* verilator lint_on PINCONNECTEMPTY */

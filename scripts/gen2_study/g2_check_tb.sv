@@ -96,21 +96,60 @@ module g2_check_tb;
   int tiny_spans = 0;
   trirast_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
     .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
+  // The unit's form (TestHi): E_L >> F in EB - F bits, A and B in CB bits, the sums' signs from
+  // CB + 2 bits (SW); checked on the trials whose values fit it.
+  localparam int TW = EB - F;
+  logic [3*TW-1:0] s_el, s_a, s_b;
+  logic [1:0] s_valid;
+  logic [2*PB-1:0] s_y, s_xb;
+  logic [2*(PB+1)-1:0] s_xe;
+  int split_boxes = 0;
+  trirast_direct_test_2x2 #(.W (TW), .SW (CB)) u_boxs (.el_i (s_el), .a_i (s_a), .b_i (s_b),
+    .xmax_i (t_xm), .ymax_i (t_ym), .x0_i (x0), .y0_i (y0), .valid_o (s_valid), .y_o (s_y),
+    .xb_o (s_xb), .xe_o (s_xe));
 
-  task automatic box_trial();
+  task automatic box_trial(input bit unit_form);
     longint e[3], av[3], bv[3];
     logic [3*EB-1:0] el_v, a_v, b_v;
+    logic [3*TW-1:0] sel_v, sa_v, sb_v;
+    bit fits;
+    fits = 1;
     for (int k = 0; k < 3; k++) begin
       e[k]  = longint'($urandom % 2001) - 1000;
       av[k] = longint'($urandom % 2001) - 1000;
       bv[k] = longint'($urandom % 2001) - 1000;
-      if ($urandom % 4 == 0) begin  // large values too
+      if (unit_form) begin
+        // E_L = h * 2^CB + l with h around 0 and -1 (where the split form's cases meet), or any;
+        // A, B of up to CB signed bits, often near their ends.
+        longint h, l;
+        case ($urandom % 5)
+          0: h = 0;
+          1: h = -1;
+          2: h = longint'($urandom % 5) - 2;
+          default: h = longint'($urandom % 64) - 32;
+        endcase
+        if ($urandom % 8 == 0) h = h <<< (TW - CB - 7);
+        l = longint'({$urandom, $urandom} % (64'd1 << CB));
+        e[k] = h * (longint'(1) <<< CB) + l;
+        av[k] = longint'({$urandom, $urandom} % (64'd1 << CB)) - (longint'(1) <<< (CB - 1));
+        bv[k] = longint'({$urandom, $urandom} % (64'd1 << CB)) - (longint'(1) <<< (CB - 1));
+      end else if ($urandom % 4 == 0) begin  // large values too
         e[k] = e[k] <<< 30;  av[k] = av[k] <<< 30;  bv[k] = bv[k] <<< 30;
       end
+      if (av[k] >= (longint'(1) <<< (CB - 1)) || av[k] < -(longint'(1) <<< (CB - 1)) ||
+          bv[k] >= (longint'(1) <<< (CB - 1)) || bv[k] < -(longint'(1) <<< (CB - 1)) ||
+          e[k] >= (longint'(1) <<< (TW - 1)) || e[k] < -(longint'(1) <<< (TW - 1)))
+        fits = 0;
       el_v[k*EB +: EB] = EB'(e[k]);
       a_v[k*EB +: EB]  = EB'(av[k]);
       b_v[k*EB +: EB]  = EB'(bv[k]);
+      sel_v[k*TW +: TW] = TW'(e[k]);
+      sa_v[k*TW +: TW]  = TW'(av[k]);
+      sb_v[k*TW +: TW]  = TW'(bv[k]);
     end
+    s_el = sel_v;
+    s_a = sa_v;
+    s_b = sb_v;
     t_el = el_v;
     t_a = a_v;
     t_b = b_v;
@@ -141,8 +180,19 @@ module g2_check_tb;
           first, last + 1, t_valid[j], t_xb[j*PB +: PB] - x0, t_xe[j*(PB+1) +: PB+1] - x0);
         if (errors < 4) $display("   dut: c00 %b c10 %b c01 %b c11 %b el0 %0d", u_box.c00, u_box.c10, u_box.c01, u_box.c11, $signed(t_el[0 +: EB]));
       end
+      if (fits && ((first >= 0) != s_valid[j] ||
+          (first >= 0 && (s_y[j*PB +: PB] != PB'(32'(y0) + j) ||
+                          s_xb[j*PB +: PB] != PB'(32'(x0) + first) ||
+                          s_xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1))))) begin
+        errors++;
+        if (errors < 10) $display("2x2 split row %0d (xmax %0d ymax %0d, e %0d %0d %0d, a %0d %0d %0d, b %0d %0d %0d): want %0d [%0d,%0d), got %0d",
+          j, t_xm, t_ym, e[0], e[1], e[2], av[0], av[1], av[2], bv[0], bv[1], bv[2], first >= 0,
+          first, last + 1, s_valid[j]);
+        if (errors < 4) $display("   split dut: c00 %b c10 %b c01 %b c11 %b", u_boxs.c00, u_boxs.c10, u_boxs.c01, u_boxs.c11);
+      end
       if (first >= 0) tiny_spans++;
     end
+    if (fits) split_boxes++;
   endtask
 
   always #5 clk = ~clk;
@@ -265,9 +315,9 @@ module g2_check_tb;
     for (int t = 0; t < Trials; t++) corner_trial((t % 3 == 0) ? 3 : ((t % 3 == 1) ? 15 : 4000));
     for (int t = 0; t < Trials; t++) walker_trial();
     for (int t = 0; t < 20 * Trials; t++) span_trial();
-    for (int t = 0; t < 10 * Trials; t++) box_trial();
-    $display("g2_check_tb: %0d errors (corner trials %0d, of them narrow %0d; walker bound rows %0d; span rows %0d, of them with a span %0d; 2x2 boxes %0d, spans %0d)",
-             errors, Trials, narrow_checked, bound_rows, 20 * Trials, spans_valid, 10 * Trials, tiny_spans);
+    for (int t = 0; t < 20 * Trials; t++) box_trial(t % 2 == 1);
+    $display("g2_check_tb: %0d errors (corner trials %0d, of them narrow %0d; walker bound rows %0d; span rows %0d, of them with a span %0d; 2x2 boxes %0d, spans %0d, of them in the unit's split form %0d)",
+             errors, Trials, narrow_checked, bound_rows, 20 * Trials, spans_valid, 20 * Trials, tiny_spans, split_boxes);
     if (errors != 0) $fatal(1, "g2_check_tb: FAILED");
     $finish;
   end
