@@ -29,6 +29,8 @@
 #       scripts/gen2_study/g2_corner_check_tb.sv: the MSB-first corner units, pipelined
 #       g2_corner_msb16p included, on full-width operands with the extremes, and its cycle count;
 #       exit 1 on a difference)
+#   scripts/gen2_study.sh --check-blocks [WORKDIR]   (the first two of --check only: g2_check_tb
+#       and g2_walk_check_tb, about a minute; the suite runs it, test gen2_study_check_blocks)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -52,6 +54,7 @@ FREQ=12
 PNR=1
 REPORT=0
 CHECK=0
+CHECK_BLOCKS=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --only) [ $# -ge 2 ] || { echo "$ME: --only needs REGEX" >&2; exit 2; }; ONLY="$2"; shift 2 ;;
@@ -62,6 +65,7 @@ while [ $# -gt 0 ]; do
     --no-pnr) PNR=0; shift ;;
     --report) REPORT=1; shift ;;
     --check) CHECK=1; shift ;;
+    --check-blocks) CHECK=1; CHECK_BLOCKS=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "$ME: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) break ;;
@@ -289,6 +293,7 @@ if [ "$CHECK" = 1 ]; then
     "$R/trirast_span_port.sv" "$R/trirast_walk_stage.sv" "$R/trirast_edge_walker2.sv" \
     "$R/trirast_span_generator2.sv" "$S/g2_walk_slice.sv" "$S/g2_walk_check_tb.sv"
   tb_run g2_walk_check_tb check_walk g2_walk_check_tb ""
+  [ "$CHECK_BLOCKS" = 0 ] || exit 0
   # The span FIFO in block RAM (the iCE40 fit's) against gen1's, depths 2 to 32.
   tb_build g2_fifo_check_tb check_fifo \
     "$R/trirast_span_fifo.sv" "$R/trirast_span_fifo_ram.sv" "$S/g2_fifo_check_tb.sv"
