@@ -43,10 +43,13 @@ module trirast_direct_test_2x2 #(
       assign t10 = $signed({2'b00, e[SW-1:0]}) + (SW + 2)'(a);
       assign t01 = $signed({2'b00, e[SW-1:0]}) + (SW + 2)'(b);
       assign t11 = t10 + (SW + 2)'(b);
-      // x = E_L + step < 0 from t (SW + 2 bits) and h
-      assign c10[k] = !(h0 ? t10[SW+1] : hm1 ? (t10[SW+1] || !t10[SW]) : h[W-SW-1]);
-      assign c01[k] = !(h0 ? t01[SW+1] : hm1 ? (t01[SW+1] || !t01[SW]) : h[W-SW-1]);
-      assign c11[k] = !(h0 ? t11[SW+1] : hm1 ? (t11[SW+1] || !t11[SW]) : h[W-SW-1]);
+      // E_L + x < 0 from t = l + x (SW + 2 bits) and h (see the header)
+      function automatic logic below_zero(input logic signed [SW+1:0] t);
+        below_zero = h0 ? t[SW+1] : hm1 ? (t[SW+1] || !t[SW]) : h[W-SW-1];
+      endfunction
+      assign c10[k] = !below_zero(t10);
+      assign c01[k] = !below_zero(t01);
+      assign c11[k] = !below_zero(t11);
       logic unused_hi;   // a and b are SW-bit values sign-extended to W
       assign unused_hi = ^{a[W-1:SW+2], b[W-1:SW+2]};
     end else begin : g_full

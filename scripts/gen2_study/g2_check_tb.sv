@@ -108,6 +108,20 @@ module g2_check_tb;
     .xmax_i (t_xm), .ymax_i (t_ym), .x0_i (x0), .y0_i (y0), .valid_o (s_valid), .y_o (s_y),
     .xb_o (s_xb), .xe_o (s_xe));
 
+  // Row j of a 2x2 test's outputs against the expected span [first, last] (first < 0: none).
+  function automatic bit row_wrong(input logic [1:0] valid, input logic [2*PB-1:0] y,
+                                   input logic [2*PB-1:0] xb, input logic [2*(PB+1)-1:0] xe,
+                                   input int j, input int first, input int last);
+    row_wrong = (first >= 0) != valid[j] ||
+                (first >= 0 && (y[j*PB +: PB] != PB'(32'(y0) + j) ||
+                                xb[j*PB +: PB] != PB'(32'(x0) + first) ||
+                                xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1)));
+  endfunction
+  // v in `bits` signed bits
+  function automatic bit fits_signed(input longint v, input int bits);
+    fits_signed = v >= -(longint'(1) <<< (bits - 1)) && v < (longint'(1) <<< (bits - 1));
+  endfunction
+
   task automatic box_trial(input bit unit_form);
     longint e[3], av[3], bv[3];
     logic [3*EB-1:0] el_v, a_v, b_v;
@@ -136,10 +150,7 @@ module g2_check_tb;
       end else if ($urandom % 4 == 0) begin  // large values too
         e[k] = e[k] <<< 30;  av[k] = av[k] <<< 30;  bv[k] = bv[k] <<< 30;
       end
-      if (av[k] >= (longint'(1) <<< (CB - 1)) || av[k] < -(longint'(1) <<< (CB - 1)) ||
-          bv[k] >= (longint'(1) <<< (CB - 1)) || bv[k] < -(longint'(1) <<< (CB - 1)) ||
-          e[k] >= (longint'(1) <<< (TW - 1)) || e[k] < -(longint'(1) <<< (TW - 1)))
-        fits = 0;
+      if (!fits_signed(av[k], CB) || !fits_signed(bv[k], CB) || !fits_signed(e[k], TW)) fits = 0;
       el_v[k*EB +: EB] = EB'(e[k]);
       a_v[k*EB +: EB]  = EB'(av[k]);
       b_v[k*EB +: EB]  = EB'(bv[k]);
@@ -170,20 +181,14 @@ module g2_check_tb;
           last = i;
         end
       end
-      if ((first >= 0) != t_valid[j] ||
-          (first >= 0 && (t_y[j*PB +: PB] != PB'(32'(y0) + j) ||
-                          t_xb[j*PB +: PB] != PB'(32'(x0) + first) ||
-                          t_xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1)))) begin
+      if (row_wrong(t_valid, t_y, t_xb, t_xe, j, first, last)) begin
         errors++;
         if (errors < 10) $display("2x2 row %0d (xmax %0d ymax %0d, e %0d %0d %0d, a %0d %0d %0d, b %0d %0d %0d): want %0d [%0d,%0d), got %0d [%0d,%0d)",
           j, t_xm, t_ym, e[0], e[1], e[2], av[0], av[1], av[2], bv[0], bv[1], bv[2], first >= 0,
           first, last + 1, t_valid[j], t_xb[j*PB +: PB] - x0, t_xe[j*(PB+1) +: PB+1] - x0);
         if (errors < 4) $display("   dut: c00 %b c10 %b c01 %b c11 %b el0 %0d", u_box.c00, u_box.c10, u_box.c01, u_box.c11, $signed(t_el[0 +: EB]));
       end
-      if (fits && ((first >= 0) != s_valid[j] ||
-          (first >= 0 && (s_y[j*PB +: PB] != PB'(32'(y0) + j) ||
-                          s_xb[j*PB +: PB] != PB'(32'(x0) + first) ||
-                          s_xe[j*(PB+1) +: PB+1] != (PB + 1)'(32'(x0) + last + 1))))) begin
+      if (fits && row_wrong(s_valid, s_y, s_xb, s_xe, j, first, last)) begin
         errors++;
         if (errors < 10) $display("2x2 split row %0d (xmax %0d ymax %0d, e %0d %0d %0d, a %0d %0d %0d, b %0d %0d %0d): want %0d [%0d,%0d), got %0d",
           j, t_xm, t_ym, e[0], e[1], e[2], av[0], av[1], av[2], bv[0], bv[1], bv[2], first >= 0,
