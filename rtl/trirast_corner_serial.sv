@@ -12,25 +12,28 @@
 // the held sign) instead of to the 50-bit partial product, and the bias enters the last digit's
 // B' * digit sum, so a digit costs two 26-bit negations and one 50-bit three-operand sum instead
 // of two 50-bit negations, their selects and a four-operand sum.
-// AccEdges 2 (trirast_improved2_top's E2Sum): edge 2 has no accumulator (el_o's edge 2 is 0; the
-// caller forms
-// it from the other two), but its magnitudes still set the digit count (the same cycles).
-// keep_y_i with start_i: the y operands are the last start's (the second run at x1 = x0 + Xmax
-// has the first run's cy0 - vy): the y magnitudes and signs are not reloaded, and the y part of
-// the digit count is the one registered at that start, so vy_i and y0_i are not read.
+// run_i with start_i: the edges whose accumulators this run clears and forms; an edge not in it
+// holds its accumulator through the run (trirast_improved2_top's second run forms E_R only for the
+// edges whose lane reads it, so each accumulator ends with the value its lane loads). The run's
+// digit count still covers all three edges' operands: the same cycles whatever the mask.
+// second_i with start_i: the second run, at x1 = x0 + Xmax: dx = cx1 - vx = dxL + Xmax * 2^F is
+// formed from the first run's dxL, which the operand registers still hold (magnitude and sign),
+// and xmax_i; the y operands are the first run's (cy0 - vy): the y magnitudes and signs are not
+// reloaded, and the y part of the digit count is the one registered then. So a second start reads
+// neither the vertices nor x0_i, y0_i.
 module trirast_corner_serial #(
   parameter int DigitBits = 4,
   parameter bit SignFold  = 1'b0,
   // 1 (with SignFold): the sign-applied multiplicands A' = +-A, B' = +-B are registered at the
-  // start (a_i, b_i are read only in the start cycle; with keep_y_i B' is kept too), so a digit
+  // start (a_i, b_i are read only in the start cycle; with second_i B' is kept too), so a digit
   // cycle has no negation: six adder levels from a register to the accumulator, not seven.
-  parameter bit RegMult   = 1'b0,
-  parameter int AccEdges  = 3
+  parameter bit RegMult   = 1'b0
 ) (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   input  logic                                 start_i,
-  input  logic                                 keep_y_i,
+  input  logic                                 second_i,
+  input  logic [2:0]                           run_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]   a_i,
@@ -38,6 +41,7 @@ module trirast_corner_serial #(
   input  logic [2:0]                           bias_i,
   input  logic [trirast_pkg::PixBits-1:0]      x0_i,
   input  logic [trirast_pkg::PixBits-1:0]      y0_i,
+  input  logic [trirast_pkg::BoxBits-1:0]      xmax_i,   // second_i: Xmax
   output logic                                 busy_o,
   output logic [3*trirast_pkg::EdgeBits-1:0]   el_o
 );
@@ -52,14 +56,15 @@ module trirast_corner_serial #(
   localparam int NB = $clog2(ND + 1);
   localparam int PW = CB + DB + 1;                  // A * digit, signed
 
-  logic signed [DW-1:0] cx0, cy0;
+  logic signed [DW-1:0] cx0, cy0, xs;
   assign cx0 = $signed(DW'({x0_i, 1'b1}) << (F - 1));
   assign cy0 = $signed(DW'({y0_i, 1'b1}) << (F - 1));
+  assign xs  = $signed(DW'({xmax_i, F'(0)}));       // second run: Xmax * 2^F
 
   logic [NB-1:0] cnt_q, cnt_d;        // digits left; the current digit is cnt_q - 1
   logic last_q;                       // RegMult: cnt_q == 1 (the last digit), from a register
   logic [ND*DB-1:0] any_x, any_y;     // OR of the start magnitudes of x, of y (the top digit)
-  logic [NB-1:0] ny_q, ny_d;          // digits of the y magnitudes at the last start without keep
+  logic [NB-1:0] ny_q, ny_d;          // digits of the y magnitudes at the last first start
 
   function automatic logic signed [PW-1:0] pp(input logic signed [CB-1:0] m,
                                               input logic [DB-1:0] digit);
@@ -86,94 +91,98 @@ module trirast_corner_serial #(
 
   logic [ND*DB-1:0] mag_k [3][2];
   for (genvar k = 0; k < 3; k++) begin : g_edge
-    logic signed [DW-1:0] dxl, dy;
-    assign dxl = cx0 - DW'($signed(vx_i[k*P +: P]));
-    assign dy  = cy0 - DW'($signed(vy_i[k*P +: P]));
+    logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
+    logic sx_q, sx_d, sy_q, sy_d, run_q, run_d;
+    logic signed [DW-1:0] dxl, dy, mxw, vxw;
+    logic [DW:0] dsum;
+    // dxl: first run cx0 - vx = cx0 + ~vx + 1; second run Xmax * 2^F +- |dxL| (the held
+    // magnitude and sign): one adder, its carry-in from the low bit of {.., 1} + {.., cin}.
+    assign mxw  = $signed(DW'(mx_q[MW-1:0]));
+    assign vxw  = DW'($signed(vx_i[k*P +: P]));
+    assign dsum = {second_i ? xs : cx0, 1'b1}
+                  + {second_i ? (sx_q ? ~mxw : mxw) : ~vxw, second_i ? sx_q : 1'b1};
+    assign dxl  = $signed(dsum[DW:1]);
+    logic unused_cin;   // the carry-in's own sum bit
+    assign unused_cin = dsum[0];
+    assign dy   = cy0 - DW'($signed(vy_i[k*P +: P]));
     logic [MW-1:0] amx, amy;
     assign amx = dxl[DW-1] ? MW'(-dxl) : MW'(dxl);
     assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
     assign mag_k[k][0] = (ND * DB)'(amx);
     assign mag_k[k][1] = (ND * DB)'(amy);
-    if (k < AccEdges) begin : g_acc
-      logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
-      logic sx_q, sx_d, sy_q, sy_d;
-      logic signed [CB-1:0] ak, bk;
-      logic signed [EB-1:0] acc_q, acc_d, tx, ty;
-      logic [DB-1:0] dgx, dgy;
-      assign ak  = $signed(a_i[k*CB +: CB]);
-      assign bk  = $signed(b_i[k*CB +: CB]);
-      // The current digit of each operand: a ND-way select by the counter.
-      always_comb begin
-        dgx = '0;
-        dgy = '0;
-        for (int i = 0; i < ND; i++) begin
-          if (cnt_q == NB'(i + 1)) begin
-            dgx = mx_q[i*DB +: DB];
-            dgy = my_q[i*DB +: DB];
-          end
+    logic signed [CB-1:0] ak, bk;
+    logic signed [EB-1:0] acc_q, acc_d, tx, ty;
+    logic [DB-1:0] dgx, dgy;
+    assign ak  = $signed(a_i[k*CB +: CB]);
+    assign bk  = $signed(b_i[k*CB +: CB]);
+    // The current digit of each operand: a ND-way select by the counter.
+    always_comb begin
+      dgx = '0;
+      dgy = '0;
+      for (int i = 0; i < ND; i++) begin
+        if (cnt_q == NB'(i + 1)) begin
+          dgx = mx_q[i*DB +: DB];
+          dgy = my_q[i*DB +: DB];
         end
       end
-      // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
-      if (!SignFold) begin : g_pp
-        assign tx = EB'(pp(ak, dgx));
-        assign ty = EB'(pp(bk, dgy));
-      end else begin : g_pps
-        // A' * digit + B' * digit - bias_last: signs on the multiplicands (CB + 1 bits: -(-2^24)).
-        // RegMult: A' and B' registered at the start, the last digit flagged by a register.
-        logic signed [CB:0] ake, bke, as, bs;
-        logic signed [PW:0] pxe, pye, px, py, nb;
-        logic last;
-        /* verilator lint_off WIDTH */   // sign extensions by assignment
-        assign ake = ak;
-        assign bke = bk;
-        assign pxe = as;
-        assign pye = bs;
-        /* verilator lint_on WIDTH */
-        if (RegMult) begin : g_reg
-          logic signed [CB:0] as_q, bs_q;
-          always_ff @(posedge clk_i) begin
-            if (start_i) as_q <= dxl[DW-1] ? -ake : ake;
-            if (start_i && !keep_y_i) bs_q <= dy[DW-1] ? -bke : bke;
-          end
-          assign as = as_q;
-          assign bs = bs_q;
-          assign last = last_q;
-        end else begin : g_comb
-          assign as = sx_q ? -ake : ake;
-          assign bs = sy_q ? -bke : bke;
-          assign last = cnt_q == NB'(1);
-        end
-        assign nb  = (last && bias_i[k]) ? '1 : '0;   // -bias on the last digit
-        assign px = pp_sum(pxe, dgx, '0);
-        assign py = pp_sum(pye, dgy, nb);
-        assign tx = EB'(px);
-        assign ty = EB'(py);
-      end
-      always_comb begin
-        mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;
-        if (start_i) begin
-          mx_d = mag_k[k][0];
-          sx_d = dxl[DW-1];
-          if (!keep_y_i) begin
-            my_d = mag_k[k][1];
-            sy_d = dy[DW-1];
-          end
-          acc_d = '0;
-        end else if (cnt_q != '0) begin
-          if (SignFold) acc_d = ((acc_q <<< DB) + tx) + ty;
-          else acc_d = (acc_q <<< DB) + (sx_q ? -tx : tx) + (sy_q ? -ty : ty)
-                       - ((cnt_q == NB'(1)) ? EB'(bias_i[k]) : '0);
-        end
-      end
-      always_ff @(posedge clk_i) begin
-        mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;
-      end
-      assign el_o[k*EB +: EB] = acc_q;
-    end else begin : g_noacc
-      assign el_o[k*EB +: EB] = '0;
-      logic unused;   // the edge's coefficients and bias (its E is formed outside)
-      assign unused = ^{a_i[k*CB +: CB], b_i[k*CB +: CB], bias_i[k]};
     end
+    // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
+    if (!SignFold) begin : g_pp
+      assign tx = EB'(pp(ak, dgx));
+      assign ty = EB'(pp(bk, dgy));
+    end else begin : g_pps
+      // A' * digit + B' * digit - bias_last: signs on the multiplicands (CB + 1 bits: -(-2^24)).
+      // RegMult: A' and B' registered at the start, the last digit flagged by a register.
+      logic signed [CB:0] ake, bke, as, bs;
+      logic signed [PW:0] pxe, pye, px, py, nb;
+      logic last;
+      /* verilator lint_off WIDTH */   // sign extensions by assignment
+      assign ake = ak;
+      assign bke = bk;
+      assign pxe = as;
+      assign pye = bs;
+      /* verilator lint_on WIDTH */
+      if (RegMult) begin : g_reg
+        logic signed [CB:0] as_q, bs_q;
+        always_ff @(posedge clk_i) begin
+          if (start_i) as_q <= dxl[DW-1] ? -ake : ake;
+          if (start_i && !second_i) bs_q <= dy[DW-1] ? -bke : bke;
+        end
+        assign as = as_q;
+        assign bs = bs_q;
+        assign last = last_q;
+      end else begin : g_comb
+        assign as = sx_q ? -ake : ake;
+        assign bs = sy_q ? -bke : bke;
+        assign last = cnt_q == NB'(1);
+      end
+      assign nb  = (last && bias_i[k]) ? '1 : '0;   // -bias on the last digit
+      assign px = pp_sum(pxe, dgx, '0);
+      assign py = pp_sum(pye, dgy, nb);
+      assign tx = EB'(px);
+      assign ty = EB'(py);
+    end
+    always_comb begin
+      mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;  run_d = run_q;
+      if (start_i) begin
+        run_d = run_i[k];
+        mx_d = mag_k[k][0];
+        sx_d = dxl[DW-1];
+        if (!second_i) begin
+          my_d = mag_k[k][1];
+          sy_d = dy[DW-1];
+        end
+        if (run_i[k]) acc_d = '0;
+      end else if (cnt_q != '0 && run_q) begin
+        if (SignFold) acc_d = ((acc_q <<< DB) + tx) + ty;
+        else acc_d = (acc_q <<< DB) + (sx_q ? -tx : tx) + (sy_q ? -ty : ty)
+                     - ((cnt_q == NB'(1)) ? EB'(bias_i[k]) : '0);
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;  run_q <= run_d;
+    end
+    assign el_o[k*EB +: EB] = acc_q;
   end
 
   // The number of digits of the largest operand (priority encoders: x's, y's, the larger).
@@ -188,8 +197,8 @@ module trirast_corner_serial #(
     any_x = mag_k[0][0] | mag_k[1][0] | mag_k[2][0];
     any_y = mag_k[0][1] | mag_k[1][1] | mag_k[2][1];
     nx = digits(any_x);
-    ny = keep_y_i ? ny_q : digits(any_y);
-    ny_d = (start_i && !keep_y_i) ? ny : ny_q;
+    ny = second_i ? ny_q : digits(any_y);
+    ny_d = (start_i && !second_i) ? ny : ny_q;
     cnt_d = (cnt_q != '0) ? cnt_q - 1'b1 : cnt_q;
     if (start_i) cnt_d = (nx > ny) ? nx : ny;
   end

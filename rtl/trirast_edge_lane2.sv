@@ -27,6 +27,8 @@
 //  - D, s, r_s, R and the column value are held without their F low bits: D's and s's are zero,
 //    R's are the numerator's, and the column value's never change (s's are zero), so e's low
 //    bits are E's (E_L or E_R) from the load, for both directions.
+//  - The lane loads one edge value, e_i: E at the column it traverses, E_R (x0 + Xmax) when
+//    dir == mirror, else E_L (x0); the unit's corner stage forms just that one per edge.
 // Cycles (m = Qx, or Q with FixedM; P = PreIter; T = traversal steps; from the cycle after the
 // load to the first cycle with done_o): a horizontal edge T + 1; otherwise
 // max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
@@ -47,8 +49,7 @@ module trirast_edge_lane2 #(
   input  logic                                    load_i,
   input  logic signed [trirast_pkg::CoefBits-1:0] a_i,
   input  logic signed [trirast_pkg::CoefBits-1:0] b_i,
-  input  logic signed [trirast_pkg::EdgeBits-1:0] el_i,
-  input  logic signed [trirast_pkg::EdgeBits-1:0] er_i,
+  input  logic signed [trirast_pkg::EdgeBits-1:0] e_i,   // E_R when dir == mirror, else E_L
   // ---- the triangle's box (held while the lane works) ----
   input  logic [trirast_pkg::BoxBits-1:0]         xmax_i,
   input  logic [trirast_pkg::BoxBits-1:0]         ymax_i,
@@ -128,8 +129,9 @@ module trirast_edge_lane2 #(
   assign horiz_n  = a_i == '0;
   assign mirror_n = !a_i[CB-1] && !horiz_n;
   assign dir_n    = !b_i[CB-1];
-  // dir +: v = T (E_R when mirrored, else E_L); dir -: ~T1 (T1 = E_L when mirrored, else E_R).
-  assign u_load   = (dir_n == mirror_n) ? (dir_n ? er_i : ~er_i) : (dir_n ? el_i : ~el_i);
+  // dir +: v = T (E_R when mirrored, else E_L); dir -: ~T1 (T1 = E_L when mirrored, else E_R):
+  // in both cases e_i, the value at the column the lane traverses.
+  assign u_load   = dir_n ? e_i : ~e_i;
 
   // ---- traversal: registers only decide ----
   logic entered, in_box, trav_done, need_entry;
@@ -255,7 +257,7 @@ module trirast_edge_lane2 #(
       dh_q     <= abs_a[MB-1:0];
       sh_q     <= abs_b[MB-1:0];
       u_q      <= u_load[EB-1:F];
-      elo_q    <= (dir_n == mirror_n) ? er_i[F-1:0] : el_i[F-1:0];
+      elo_q    <= e_i[F-1:0];
       j_q      <= '0;
     end else if (!trav_done) begin
       u_q <= u_d;

@@ -9,7 +9,7 @@
 // unused). Triangle port and span port as rtl/trirast_top.sv's, but the unit reads only the
 // vertices (and the tag): A, B and the bias are formed from them, and the corner values are
 // vertex-relative, E = A*(cx - vx) + B*(cy - vy), so tri_a_i, tri_b_i, tri_bias_i are read only
-// by an assertion (the port's are the vertices'), tri_c_i only with E2Sum.
+// by an assertion (the port's are the vertices'), tri_c_i not at all.
 //
 //   [B] triangle register (tag, vertices) with the box (each axis's clipped first and last pixel)
 //       and its empty flag, formed from the port in the accept cycle; an empty box retires here
@@ -19,8 +19,9 @@
 //       CornerForm 0: trirast_corner_products (multipliers, DSPs on xc7; no extra cycle);
 //       CornerForm 1: trirast_corner_serial (MSB-first radix 16), started as the triangle enters
 //       C: C holds it ceil(bits / 4) + 1 cycles for E_L; a box for the lanes then runs again,
-//       1 + ceil(bits' / 4) more cycles, for E_R (the same unit at x1 = x0 + Xmax; E_L waits in a
-//       register meanwhile). CornerForm 0 forms E_R = E_L + (A * Xmax) << F directly.
+//       1 + ceil(bits' / 4) more cycles, at x1 = x0 + Xmax, and forms E_R in the accumulators
+//       of the edges whose lane reads E_R (the others hold E_L), so each accumulator ends with
+//       its lane's value. CornerForm 0 forms E_R = E_L + (A * Xmax) << F directly.
 //       The direct 2x2 test (trirast_direct_test_2x2) reads E_L and the steps A, B.
 //   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
 //       pixel centres loads the three edge lanes (trirast_edge_lane2: normalizer, adder-based
@@ -33,11 +34,8 @@
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
 // flip-flops); WalkerCs 0, the walkers' carry-in step; SignFold 1, the serial corner unit's signs
-// on the multiplicands; ElReg 1
-// (CornerForm 1 only), the lanes load E_L from its register and the 2x2 test reads the
-// accumulator; TestHi 1, the 2x2 test on E_L >> F and A, B; E2Sum (CornerForm 1 only), edge 2's E
-// from the sum of the port's C values (two corner accumulators). The defaults are the iCE40 form;
-// scripts/synth.sh builds the xc7 form with CornerForm 0.
+// on the multiplicands; TestHi 1, the 2x2 test on E_L >> F and A, B. The defaults are the iCE40
+// form; scripts/synth.sh builds the xc7 form with CornerForm 0.
 `include "trirast_assert.svh"
 
 module trirast_improved2_top #(
@@ -47,16 +45,11 @@ module trirast_improved2_top #(
   parameter bit FifoRam    = 1'b1,
   parameter bit WalkerCs   = 1'b0,
   parameter bit SignFold   = 1'b1,
-  parameter bit ElReg      = 1'b1,
   parameter bit TestHi     = 1'b1,
   // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other
   // values change the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
   parameter int LanePreIter = 0,
-  // 1 (CornerForm 1 only): E_2 = (C_0 + C_1 + C_2 - the biases) - E_0 - E_1, the corner unit
-  // without edge 2's accumulator; reads tri_c_i (the sum of the edges' E is the same at every
-  // point: the A and B of the three edges sum to 0). The same values and cycles.
-  parameter bit E2Sum = 1'b0,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
   input  logic                                  clk_i,
@@ -72,7 +65,7 @@ module trirast_improved2_top #(
   input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // read only with E2Sum
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // not read (vertex-relative E)
   input  logic [2:0]                            tri_bias_i,
   output logic                                  span_valid_o,
   input  logic                                  span_ready_i,
@@ -122,7 +115,6 @@ module trirast_improved2_top #(
   logic b_full_q;
   logic [TB-1:0] b_tag_q;
   logic [3*P-1:0] b_vx_q, b_vy_q;
-  logic [EB-1:0] b_s_q;   // E2Sum: C_0 + C_1 + C_2 - the biases
   logic b_take, b_retire, c_free;
 
   // The box is formed from the port in the accept cycle and registered with the triangle (the
@@ -203,8 +195,6 @@ module trirast_improved2_top #(
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
       b_empty_q <= p_empty;
       b_fx_q <= fx;  b_lx_q <= lx;  b_fy_q <= fy;  b_ly_q <= ly;
-      b_s_q <= tri_c_i[0 +: EB] + tri_c_i[EB +: EB] + tri_c_i[2*EB +: EB]
-               - EB'(tri_bias_i[0]) - EB'(tri_bias_i[1]) - EB'(tri_bias_i[2]);
     end
   end
 
@@ -241,9 +231,18 @@ module trirast_improved2_top #(
   logic [3*P-1:0] c_vx_q, c_vy_q;
   logic [3*CB-1:0] c_a_q, c_b_q;
   logic [2:0] c_bias_q;
-  logic [EB-1:0] c_s_q;
   logic c_tiny, c_ready, c_move, l_free;
-  logic [3*EB-1:0] el, er, el_lane;   // el: E_L for the 2x2 test; el_lane: for the lanes' load
+  logic [3*EB-1:0] el, e_lane;   // el: E_L for the 2x2 test; e_lane: each lane's column value
+
+  // The column whose value edge k's lane traverses (trirast_edge_lane2.sv): x0 + Xmax (E_R) when
+  // dir == mirror (dir: B >= 0; mirror: A > 0), else x0 (E_L).
+  function automatic logic [2:0] lane_reads_right(input logic [3*CB-1:0] a,
+                                                  input logic [3*CB-1:0] b);
+    for (int k = 0; k < 3; k++)
+      lane_reads_right[k] = !b[k*CB + CB - 1] == (!a[k*CB + CB - 1] && a[k*CB +: CB] != '0);
+  endfunction
+  logic [2:0] c_right;
+  assign c_right = lane_reads_right(c_a_q, c_b_q);
 
   assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
   assign c_free = !c_full_q || c_move;
@@ -266,7 +265,6 @@ module trirast_improved2_top #(
       c_a_q    <= b_a;
       c_b_q    <= b_b;
       c_bias_q <= b_bias;
-      c_s_q    <= b_s_q;
     end
   end
 
@@ -282,44 +280,31 @@ module trirast_improved2_top #(
       assign ak = $signed(c_a_q[k*CB +: CB]);
       assign xm = $signed({1'b0, c_xmax_q});
       assign ax = EB'(ak * xm);
-      assign er[k*EB +: EB] = el[k*EB +: EB] + (ax <<< F);
+      assign e_lane[k*EB +: EB] = c_right[k] ? el[k*EB +: EB] + (ax <<< F) : el[k*EB +: EB];
     end
-    assign el_lane = el;
     assign c_ready = 1'b1;
   end else begin : g_msb
     // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
     // (its operands |cx0 - vx|, |cy0 - vy| from B's box, as g2_box_stage.sv forms them into the
     // corner stage's register), and iterates with A, B, bias from C's register. A box for the
-    // lanes then runs again from C's register at x1 = x0 + Xmax for E_R, E_L held in el_q.
+    // lanes then runs again at x1 = x0 + Xmax (its x operands from run 1's, held in the unit, and
+    // C's Xmax), for the edges whose lane reads E_R only (c_right): the others' accumulators hold
+    // E_L, so the lanes load the accumulators.
     logic start2_q, run_q, second_q, busy, start, done;
-    logic [3*EB-1:0] acc, acc_u, el_q;
-    logic [3*P-1:0] s_vx, s_vy;
-    logic [PB-1:0] s_x0, s_y0;
+    logic [3*EB-1:0] acc;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
-    // Run 2 keeps run 1's y operands (keep_y_i): only x moves, so C's vertices are read for x.
-    assign s_vx  = start2_q ? c_vx_q : b_vx_q;
-    assign s_vy  = b_vy_q;
-    assign s_x0  = start2_q ? c_x0_q + PB'(c_xmax_q) : b_fx_q;
-    assign s_y0  = b_fy_q;
     // SignFold (RegMult): A, B are read in the start cycles only, from B (run 1) or C (run 2;
     // B' is kept); without it in every digit cycle, from C.
     logic [3*CB-1:0] s_a, s_b;
     assign s_a = (SignFold && !start2_q) ? b_a : c_a_q;
     assign s_b = SignFold ? b_b : c_b_q;
     trirast_corner_serial #(
-      .DigitBits (4), .SignFold (SignFold), .RegMult (SignFold), .AccEdges (E2Sum ? 2 : 3)
+      .DigitBits (4), .SignFold (SignFold), .RegMult (SignFold)
     ) u_corner (
-      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .keep_y_i (start2_q),
-      .vx_i (s_vx), .vy_i (s_vy), .a_i (s_a), .b_i (s_b), .bias_i (c_bias_q),
-      .x0_i (s_x0), .y0_i (s_y0), .busy_o (busy), .el_o (acc_u));
-    if (E2Sum) begin : g_e2
-      assign acc[0 +: 2*EB] = acc_u[0 +: 2*EB];
-      assign acc[2*EB +: EB] = c_s_q - acc_u[0 +: EB] - acc_u[EB +: EB];
-      logic unused_e2;
-      assign unused_e2 = ^acc_u[2*EB +: EB];
-    end else begin : g_e3
-      assign acc = acc_u;
-    end
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .second_i (start2_q),
+      .run_i (start2_q ? c_right : 3'b111),
+      .vx_i (b_vx_q), .vy_i (b_vy_q), .a_i (s_a), .b_i (s_b), .bias_i (c_bias_q),
+      .x0_i (b_fx_q), .y0_i (b_fy_q), .xmax_i (c_xmax_q), .busy_o (busy), .el_o (acc));
     assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -335,19 +320,10 @@ module trirast_improved2_top #(
         end
       end
     end
-    always_ff @(posedge clk_i) begin
-      if (done && !second_q) el_q <= acc;
-    end
-    if (ElReg) begin : g_elreg
-      // The lanes load only after run 2 (second_q), when E_L is in el_q; the 2x2 test's result
-      // is used only for a tiny box, which moves after run 1 with E_L in acc.
-      assign el      = acc;
-      assign el_lane = el_q;
-    end else begin : g_elsel
-      assign el      = second_q ? el_q : acc;
-      assign el_lane = el;
-    end
-    assign er = acc;
+    // The 2x2 test's result is used only for a tiny box, which moves after run 1 (E_L in every
+    // accumulator); the lanes load after run 2.
+    assign el     = acc;
+    assign e_lane = acc;
     assign c_ready = done && (second_q || c_tiny);
   end
 
@@ -436,8 +412,7 @@ module trirast_improved2_top #(
     /* verilator lint_off PINCONNECTEMPTY */
     trirast_edge_lane2 #(.FixedM (LaneFixedM), .PreIter (LanePreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (lane_load),
-      .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]),
-      .el_i (el_lane[k*EB +: EB]), .er_i (er[k*EB +: EB]),
+      .a_i (c_a_q[k*CB +: CB]), .b_i (c_b_q[k*CB +: CB]), .e_i (e_lane[k*EB +: EB]),
       .xmax_i (l_xmax_q), .ymax_i (l_ymax_q),
       .busy_o (lane_busy_o[k]), .done_o (lane_done[k]),
       .div_o (lane_div_o[k]), .step_o (lane_step_o[k]),
@@ -510,6 +485,6 @@ module trirast_improved2_top #(
   `ASSERT_KNOWN(HandshakesKnown_A, {tri_ready_o, box_retire_o, handoff_o, busy_o}, clk_i, !rst_ni)
 
   logic unused;
-  assign unused = ^{tri_c_i, tri_a_i, tri_b_i, b_s_q, c_s_q, c_vy_q};  // E2Sum, asserts, form 0
+  assign unused = ^{tri_c_i, tri_a_i, tri_b_i, c_vx_q, c_vy_q};  // asserts, form 0
 
 endmodule

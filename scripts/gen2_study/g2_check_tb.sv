@@ -32,12 +32,12 @@ module g2_check_tb;
   logic [3*EB-1:0] m4_el, m16_el, mul_el;
   trirast_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .el_o (mul_el));
-  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
-    .busy_o (busym4), .el_o (m4_el));
-  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
+    .xmax_i ('0), .busy_o (busym4), .el_o (m4_el));
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
-    .busy_o (busym16), .el_o (m16_el));
+    .xmax_i ('0), .busy_o (busym16), .el_o (m16_el));
   g2_corner_narrow #(.NarrowBits (13)) u_narrow (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b),
     .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax), .fits_o (fits), .el_o (n_el), .er_o (n_er));
   g2_corner_digit #(.DigitBits (1), .WithER (1)) u_r2 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),

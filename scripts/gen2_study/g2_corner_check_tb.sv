@@ -27,19 +27,19 @@ module g2_corner_check_tb;
   logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_p0, busy_p1, busy_ps;
   logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_p0, el_p1, el_ps;
 
-  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
-    .busy_o (busy_m4), .el_o (el_m4));
-  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0),
+    .xmax_i ('0), .busy_o (busy_m4), .el_o (el_m4));
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
-    .busy_o (busy_m16), .el_o (el_m16));
+    .xmax_i ('0), .busy_o (busy_m16), .el_o (el_m16));
   trirast_corner_serial #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
-    .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
-    .y0_i (y0), .busy_o (busy_m16s), .el_o (el_m16s));
+    .start_i (start), .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .y0_i (y0), .xmax_i ('0), .busy_o (busy_m16s), .el_o (el_m16s));
   // The unit's form: SignFold with the registered multiplicands.
   trirast_corner_serial #(.DigitBits (4), .SignFold (1), .RegMult (1)) u_m16r (.clk_i (clk),
-    .rst_ni (rst_n), .start_i (start), .keep_y_i (1'b0), .vx_i (vx), .vy_i (vy), .a_i (a),
-    .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .busy_o (busy_m16r), .el_o (el_m16r));
+    .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a),
+    .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_m16r), .el_o (el_m16r));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .busy_o (busy_p0), .el_o (el_p0));

@@ -22,9 +22,6 @@
 `ifndef G2_LANE_PREITER
 `define G2_LANE_PREITER 0
 `endif
-`ifndef G2_E2SUM
-`define G2_E2SUM 0
-`endif
 module g2_unit_tb;
   localparam int P  = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -99,9 +96,8 @@ module g2_unit_tb;
   assign v2 = rst_n && (i2 < n);
   // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles).
   trirast_improved2_top #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
-            .WalkerCs (!`G2_FIT), .SignFold (`G2_FIT), .ElReg (`G2_FIT), .TestHi (`G2_FIT),
-            .LaneFixedM (`G2_LANE_FIXEDM), .LanePreIter (`G2_LANE_PREITER),
-            .E2Sum (`G2_E2SUM)) u_gen2 (
+            .WalkerCs (!`G2_FIT), .SignFold (`G2_FIT), .TestHi (`G2_FIT),
+            .LaneFixedM (`G2_LANE_FIXEDM), .LanePreIter (`G2_LANE_PREITER)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .cfg_fifo_depth_i ($clog2(`G2_FIFO_DEPTH + 1)'(`G2_FIFO_DEPTH)),
