@@ -11,5 +11,6 @@ trirast_edge_walker2.sv
 trirast_span_generator2.sv
 trirast_span_fifo.sv
 trirast_span_fifo_ram.sv
+trirast_stage_ram.sv
 trirast_walk_stage2.sv
 trirast_improved2_top.sv

@@ -34,8 +34,9 @@
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
 // flip-flops); WalkerCs 0, the walkers' carry-in step; SignFold 1, the serial corner unit's signs
-// on the multiplicands; TestHi 1, the 2x2 test on E_L >> F and A, B. The defaults are the iCE40
-// form; scripts/synth.sh builds the xc7 form with CornerForm 0.
+// on the multiplicands; TestHi 1, the 2x2 test on E_L >> F and A, B; CRam 1 (CornerForm 1 with
+// SignFold only), C's register in block RAM but for the vertices and the bias. The defaults are the iCE40 form;
+// scripts/synth.sh builds the xc7 form with CornerForm 0.
 `include "trirast_assert.svh"
 
 module trirast_improved2_top #(
@@ -46,6 +47,7 @@ module trirast_improved2_top #(
   parameter bit WalkerCs   = 1'b0,
   parameter bit SignFold   = 1'b1,
   parameter bit TestHi     = 1'b1,
+  parameter bit CRam       = 1'b1,  // CornerForm 1 with SignFold only: C's fields in block RAM
   // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other
   // values change the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
@@ -253,17 +255,29 @@ module trirast_improved2_top #(
     else if (b_take) c_full_q <= 1'b1;
     else if (c_move) c_full_q <= 1'b0;
   end
+  // C's register. With the digit-serial unit and SignFold (its multiplicands registered at each
+  // start) the fields below are read only when C's values are ready or at the corner unit's
+  // second start, both at least two cycles after the take (run 1 starts in the take cycle and has
+  // at least one digit; CRamReadLate_A): there (CRam) they are held in block RAM
+  // (trirast_stage_ram), the rest in flip-flops. (Without SignFold the unit reads C's A and B in
+  // every digit cycle, from the cycle after the take.)
+  localparam bit UseCRam = CRam && CornerForm != 0 && SignFold;
+  localparam int CW = TB + 2 * PB + 2 * BB + 6 * CB;
+  logic [CW-1:0] c_d, c_q;
+  assign c_d = {b_tag_q, b_fx_q, b_fy_q, BB'(b_lx_q - b_fx_q), BB'(b_ly_q - b_fy_q), b_a, b_b};
+  assign {c_tag_q, c_x0_q, c_y0_q, c_xmax_q, c_ymax_q, c_a_q, c_b_q} = c_q;
+  if (UseCRam) begin : g_cram
+    trirast_stage_ram #(.Bits (CW)) u_cram (
+      .clk_i (clk_i), .rst_ni (rst_ni), .we_i (b_take), .d_i (c_d), .q_o (c_q));
+  end else begin : g_creg
+    always_ff @(posedge clk_i) begin
+      if (b_take) c_q <= c_d;
+    end
+  end
   always_ff @(posedge clk_i) begin
     if (b_take) begin
-      c_tag_q  <= b_tag_q;
-      c_x0_q   <= b_fx_q;
-      c_y0_q   <= b_fy_q;
-      c_xmax_q <= BB'(b_lx_q - b_fx_q);
-      c_ymax_q <= BB'(b_ly_q - b_fy_q);
       c_vx_q   <= b_vx_q;
       c_vy_q   <= b_vy_q;
-      c_a_q    <= b_a;
-      c_b_q    <= b_b;
       c_bias_q <= b_bias;
     end
   end
@@ -324,6 +338,9 @@ module trirast_improved2_top #(
     // accumulator); the lanes load after run 2.
     assign el     = acc;
     assign e_lane = acc;
+    // C's block-RAM fields are read two cycles after the take at the earliest (trirast_stage_ram).
+    `ASSERT(CRamReadLate_A, UseCRam && $past(b_take) |-> !(c_full_q && c_ready) && !start2_q,
+            clk_i, !rst_ni)
     assign c_ready = done && (second_q || c_tiny);
   end
 
