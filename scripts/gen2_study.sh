@@ -31,6 +31,9 @@
 #       exit 1 on a difference)
 #   scripts/gen2_study.sh --check-blocks [WORKDIR]   (the first two of --check only: g2_check_tb
 #       and g2_walk_check_tb, about a minute; the suite runs it, test gen2_study_check_blocks)
+#   scripts/gen2_study.sh --check-unit [WORKDIR]     (the whole-unit check of --check for CornerForm 1
+#       with the build choices' other values, which the RtlImproved2 tests do not build, on
+#       builtin:mixed; needs TRIRAST; the suite runs it, test gen2_study_check_unit)
 #
 # Per design, one tool at a time (the machine is shared):
 #  - Yosys `synth_xilinx -family xc7 -top TOP` of the design alone: LUT (LUT1-6, as scripts/synth.sh
@@ -55,6 +58,7 @@ PNR=1
 REPORT=0
 CHECK=0
 CHECK_BLOCKS=0
+CHECK_UNIT=0
 while [ $# -gt 0 ]; do
   case "$1" in
     --only) [ $# -ge 2 ] || { echo "$ME: --only needs REGEX" >&2; exit 2; }; ONLY="$2"; shift 2 ;;
@@ -66,6 +70,7 @@ while [ $# -gt 0 ]; do
     --report) REPORT=1; shift ;;
     --check) CHECK=1; shift ;;
     --check-blocks) CHECK=1; CHECK_BLOCKS=1; shift ;;
+    --check-unit) CHECK=1; CHECK_UNIT=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "$ME: unknown option $1 (see --help)" >&2; exit 2 ;;
     *) break ;;
@@ -274,12 +279,63 @@ scene_tris() {
   echo "$tri"
 }
 
+# check_unit CFGS SCENES NEED: the whole-unit prototype trirast_improved2_top against gen1's
+# trirast_top (scripts/gen2_study/g2_unit_tb.sv) for each configuration of CFGS (0: CornerForm 0;
+# 1: CornerForm 1 with the build choices' other values; 1fit: CornerForm 1 with the iCE40 fit's,
+# the unit's defaults) on the SCENES exported by TRIRAST: spans equal span for span (sinks always
+# ready, then both ready in two cycles of three), and both units' cycles. Without TRIRAST it is
+# skipped, or (NEED non-empty) an error.
+check_unit() {
+  local cfgs="$1" scenes="$2" need="$3" cfg form fit lab sc hex st tri f
+  local -a gen1_srcs
+  if [ -x "$TRIRAST" ]; then
+    gen1_srcs=()
+    while read -r f; do
+      case "$f" in trirast_pkg.sv) ;; trirast_*.sv) gen1_srcs+=("$R/$f") ;; esac
+    done < "$R/trirast_improved.f"
+    for sc in $scenes; do
+      tri="$(scene_tris "$sc")"; hex="$WORK/unit_${sc#builtin:}.hex"
+      python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
+        { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
+    done
+    # CornerForm 0 and 1, and CornerForm 1 with the iCE40 fit's build choices (G2_FIT:
+    # g2_unit_ice40.sv's; the same cycles as CornerForm 1).
+    for cfg in $cfgs; do
+      form="${cfg:0:1}"; fit=0; lab=""
+      [ "$cfg" = 1fit ] && { fit=1; lab=", iCE40 fit"; }
+      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit \
+        "${gen1_srcs[@]}" \
+        "$R/trirast_corner_products.sv" "$R/trirast_corner_serial.sv" "$R/trirast_direct_test_2x2.sv" "$R/trirast_edge_lane2.sv" \
+        "$R/trirast_edge_walker2.sv" "$R/trirast_span_generator2.sv" "$R/trirast_span_fifo_ram.sv" "$R/trirast_walk_stage2.sv" \
+        "$R/trirast_stage_ram.sv" "$R/trirast_improved2_top.sv" "$S/g2_unit_tb.sv"
+      for sc in $scenes; do
+        hex="$WORK/unit_${sc#builtin:}.hex"
+        for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
+          # shellcheck disable=SC2046,SC2086
+          tb_run g2_unit_tb "check_unit$cfg" \
+            "g2_unit_tb (CornerForm $form$lab, $sc${st:+, $st})" "" \
+            +tris="$hex" $(cat "$hex.args") $st
+        done
+      done
+    done
+  elif [ -n "$need" ]; then
+    echo "$ME: $TRIRAST not found: the whole-unit check needs it (set TRIRAST)" >&2; exit 1
+  else
+    echo "$ME: $TRIRAST not found: the whole-unit check is skipped (set TRIRAST)" >&2
+  fi
+}
+
 if [ "$CHECK" = 1 ]; then
   command -v verilator >/dev/null || { echo "$ME: verilator not found in PATH" >&2; exit 1; }
   python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 8 --coord-bits 16 --box-bits 14 \
     --endpoints 1 --fifo-depth 8 --sv "$PKG" >/dev/null ||
     { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
   rm -f "$WORK"/scene_*.tri
+  if [ "$CHECK_UNIT" = 1 ]; then
+    # The build choices the suite's RtlImproved2 tests (the unit's defaults) do not run.
+    check_unit 1 builtin:mixed need
+    exit 0
+  fi
   tb_build g2_check_tb check \
     "$R/trirast_edge_walker.sv" "$R/trirast_span_generator.sv" "$S/g2_corner_narrow.sv" \
     "$S/g2_corner_digit.sv" "$R/trirast_corner_serial.sv" "$R/trirast_corner_products.sv" "$R/trirast_edge_walker2.sv" \
@@ -325,44 +381,7 @@ if [ "$CHECK" = 1 ]; then
   tb_build g2_box_check_tb check_box \
     "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv"
   tb_run g2_box_check_tb check_box g2_box_check_tb ""
-  # The whole-unit prototype trirast_improved2_top (both corner forms) against gen1's trirast_top on the scenes
-  # UNIT_SCENES (default builtin:mixed builtin:highpoly-far, exported by TRIRAST; skipped when it
-  # is missing): spans equal span for span (sinks always ready, then both ready in two cycles of
-  # three), and both units' cycles.
-  UNIT_SCENES="${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}"
-  if [ -x "$TRIRAST" ]; then
-    gen1_srcs=()
-    while read -r f; do
-      case "$f" in trirast_pkg.sv) ;; trirast_*.sv) gen1_srcs+=("$R/$f") ;; esac
-    done < "$R/trirast_improved.f"
-    for sc in $UNIT_SCENES; do
-      tri="$(scene_tris "$sc")"; hex="$WORK/unit_${sc#builtin:}.hex"
-      python3 "$S/unit_tris.py" "$tri" "$hex" > "$hex.args" ||
-        { echo "$ME: scripts/gen2_study/unit_tris.py failed on $tri" >&2; exit 1; }
-    done
-    # CornerForm 0 and 1, and CornerForm 1 with the iCE40 fit's build choices (G2_FIT:
-    # g2_unit_ice40.sv's; the same cycles as CornerForm 1).
-    for cfg in 0 1 1fit; do
-      form="${cfg:0:1}"; fit=0; lab=""
-      [ "$cfg" = 1fit ] && { fit=1; lab=", iCE40 fit"; }
-      tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit \
-        "${gen1_srcs[@]}" \
-        "$R/trirast_corner_products.sv" "$R/trirast_corner_serial.sv" "$R/trirast_direct_test_2x2.sv" "$R/trirast_edge_lane2.sv" \
-        "$R/trirast_edge_walker2.sv" "$R/trirast_span_generator2.sv" "$R/trirast_span_fifo_ram.sv" "$R/trirast_walk_stage2.sv" \
-        "$R/trirast_stage_ram.sv" "$R/trirast_improved2_top.sv" "$S/g2_unit_tb.sv"
-      for sc in $UNIT_SCENES; do
-        hex="$WORK/unit_${sc#builtin:}.hex"
-        for st in "" +stall; do   # sinks always ready; both ready in two cycles of three
-          # shellcheck disable=SC2046,SC2086
-          tb_run g2_unit_tb "check_unit$cfg" \
-            "g2_unit_tb (CornerForm $form$lab, $sc${st:+, $st})" "" \
-            +tris="$hex" $(cat "$hex.args") $st
-        done
-      done
-    done
-  else
-    echo "$ME: $TRIRAST not found: the whole-unit check is skipped (set TRIRAST)" >&2
-  fi
+  check_unit "0 1 1fit" "${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}" ""
   # The MSB-first corner units on independent full-width operands with the extremes, and
   # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
   tb_build g2_corner_check_tb check_corner \
