@@ -283,19 +283,13 @@ module trirast_improved2_top #(
   end
 
   if (CornerForm == 0) begin : g_mul
-    // E_L from the products in one (combinational) step; E_R = E_L + (A * Xmax) << F.
+    // The values in one (combinational) step from the products: E_L for a tiny box (the 2x2
+    // test), else each edge's at the column its lane reads (E_R at x0 + Xmax when c_right).
     trirast_corner_products u_corner (
       .vx_i (c_vx_q), .vy_i (c_vy_q), .a_i (c_a_q), .b_i (c_b_q), .bias_i (c_bias_q),
-      .x0_i (c_x0_q), .y0_i (c_y0_q), .el_o (el));
-    for (genvar k = 0; k < 3; k++) begin : g_er
-      logic signed [CB-1:0] ak;
-      logic signed [BB:0] xm;
-      logic signed [EB-1:0] ax;
-      assign ak = $signed(c_a_q[k*CB +: CB]);
-      assign xm = $signed({1'b0, c_xmax_q});
-      assign ax = EB'(ak * xm);
-      assign e_lane[k*EB +: EB] = c_right[k] ? el[k*EB +: EB] + (ax <<< F) : el[k*EB +: EB];
-    end
+      .x0_i (c_x0_q), .x1_i (c_x0_q + PB'(c_xmax_q)), .x1sel_i (c_tiny ? 3'b000 : c_right),
+      .y0_i (c_y0_q), .el_o (el));
+    assign e_lane = el;
     assign c_ready = 1'b1;
   end else begin : g_msb
     // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C

@@ -31,6 +31,7 @@ module g2_check_tb;
   logic busy2, busy4, busy16, busym4, busym16;
   logic [3*EB-1:0] m4_el, m16_el, mul_el;
   trirast_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+    .x1_i (x0), .x1sel_i (3'b000),
     .y0_i (y0), .el_o (mul_el));
   trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
