@@ -21,7 +21,7 @@
 //       C: C holds it ceil(bits / 4) + 1 cycles for E_L; a box for the lanes then runs again,
 //       1 + ceil(bits' / 4) more cycles, at x1 = x0 + Xmax, and forms E_R in the accumulators
 //       of the edges whose lane reads E_R (the others hold E_L), so each accumulator ends with
-//       its lane's value. CornerForm 0 forms E_R = E_L + (A * Xmax) << F directly.
+//       its lane's value. CornerForm 0 forms each edge's value at its lane's column directly.
 //       The direct 2x2 test (trirast_direct_test_2x2) reads E_L and the steps A, B.
 //   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
 //       pixel centres loads the three edge lanes (trirast_edge_lane2: normalizer, adder-based
@@ -35,8 +35,8 @@
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
 // flip-flops); WalkerCs 0, the walkers' carry-in step; SignFold 1, the serial corner unit's signs
 // on the multiplicands; TestHi 1, the 2x2 test on E_L >> F and A, B; CRam 1 (CornerForm 1 with
-// SignFold only), C's register in block RAM but for the vertices and the bias. The defaults are the iCE40 form;
-// scripts/synth.sh builds the xc7 form with CornerForm 0.
+// SignFold only), C's register in block RAM but for the vertices and the bias. The defaults are
+// the iCE40 form; scripts/synth.sh builds the xc7 form with CornerForm 0.
 `include "trirast_assert.svh"
 
 module trirast_improved2_top #(
@@ -236,15 +236,11 @@ module trirast_improved2_top #(
   logic c_tiny, c_ready, c_move, l_free;
   logic [3*EB-1:0] el, e_lane;   // el: E_L for the 2x2 test; e_lane: each lane's column value
 
-  // The column whose value edge k's lane traverses (trirast_edge_lane2.sv): x0 + Xmax (E_R) when
-  // dir == mirror (dir: B >= 0; mirror: A > 0), else x0 (E_L).
-  function automatic logic [2:0] lane_reads_right(input logic [3*CB-1:0] a,
-                                                  input logic [3*CB-1:0] b);
-    for (int k = 0; k < 3; k++)
-      lane_reads_right[k] = !b[k*CB + CB - 1] == (!a[k*CB + CB - 1] && a[k*CB +: CB] != '0);
-  endfunction
+  // Per edge: its lane traverses x0 + Xmax (E_R), not x0 (E_L).
   logic [2:0] c_right;
-  assign c_right = lane_reads_right(c_a_q, c_b_q);
+  for (genvar k = 0; k < 3; k++) begin : g_right
+    assign c_right[k] = trirast_pkg::lane_reads_right(c_a_q[k*CB +: CB], c_b_q[k*CB +: CB]);
+  end
 
   assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
   assign c_free = !c_full_q || c_move;

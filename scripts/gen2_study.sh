@@ -87,6 +87,10 @@ mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
 WORK="$(cd "$WORK" && pwd)"
 R="$ROOT/rtl"
 S="$ROOT/scripts/gen2_study"
+# The whole gen2 unit's sources: its file list, rtl/trirast_improved2.f, without the package
+# (each run writes its own, PKG).
+I2_SRCS="$(sed -e '/^\/\//d' -e '/^trirast_pkg\.sv$/d' -e "s|^|$R/|" "$R/trirast_improved2.f" | tr '\n' ' ')"
+I2_SRCS="${I2_SRCS% }"
 TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
 LANE_SCENES="${LANE_SCENES:-builtin:highpoly-far builtin:mixed}"
 PKG="$WORK/trirast_pkg.sv"
@@ -129,15 +133,15 @@ DESIGNS=(
 "g2.walk_fifo|g2_walk_slice|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
 "g2.box2x2_w50|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
 "g2.box2x2_w26|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
-"g2.unit|trirast_improved2_top|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv|CornerForm=0,FifoRam=0,WalkerCs=1,SignFold=0,TestHi=0|whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
-"g2.unit_msb16|g2_unit_msb16|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
-"g2.unit_xc7|trirast_improved2_top|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv|CornerForm=0,FifoRam=0,TestHi=1,WalkerCs=0|g2.unit (DSP corner) with the two iCE40 fit choices that apply to it: the 2x2 test on E_L >> F and the walkers' carry-in step (same spans and cycles)"
-"g2.unit_ice40|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, 2x2 test on E_L >> F; no tri_c_i port|bram"
-"g2.unit_ice40_pre|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (trirast_edge_lane2 PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
-"g2.unit_ice40_ff|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
-"g2.unit_ice40_cs|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
-"g2.unit_ice40_nosf|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
-"g2.unit_ice40_notest|g2_unit_ice40|$R/trirast_corner_products.sv $R/trirast_corner_serial.sv $R/trirast_direct_test_2x2.sv $R/trirast_edge_lane2.sv $R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv $R/trirast_stage_ram.sv $R/trirast_improved2_top.sv $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
+"g2.unit|trirast_improved2_top|$I2_SRCS|CornerForm=0,FifoRam=0,WalkerCs=1,SignFold=0,TestHi=0|whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
+"g2.unit_msb16|g2_unit_msb16|$I2_SRCS $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
+"g2.unit_xc7|trirast_improved2_top|$I2_SRCS|CornerForm=0,FifoRam=0,TestHi=1,WalkerCs=0|g2.unit (DSP corner) with the two iCE40 fit choices that apply to it: the 2x2 test on E_L >> F and the walkers' carry-in step (same spans and cycles)"
+"g2.unit_ice40|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, 2x2 test on E_L >> F; no tri_c_i port|bram"
+"g2.unit_ice40_pre|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (trirast_edge_lane2 PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
+"g2.unit_ice40_ff|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
+"g2.unit_ice40_cs|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
+"g2.unit_ice40_nosf|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
+"g2.unit_ice40_notest|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
 "g2.walk_ice40|trirast_walk_stage2|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (trirast_walk_stage2: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
 "g2.walker_ci|trirast_edge_walker2|$R/trirast_edge_walker2.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
 "g2.corner_msb16f|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
@@ -303,11 +307,9 @@ check_unit() {
     for cfg in $cfgs; do
       form="${cfg:0:1}"; fit=0; lab=""
       [ "$cfg" = 1fit ] && { fit=1; lab=", iCE40 fit"; }
+      # shellcheck disable=SC2086
       tb_build g2_unit_tb "check_unit$cfg" -DG2_CORNER_FORM=$form -DG2_FIT=$fit \
-        "${gen1_srcs[@]}" \
-        "$R/trirast_corner_products.sv" "$R/trirast_corner_serial.sv" "$R/trirast_direct_test_2x2.sv" "$R/trirast_edge_lane2.sv" \
-        "$R/trirast_edge_walker2.sv" "$R/trirast_span_generator2.sv" "$R/trirast_span_fifo_ram.sv" "$R/trirast_walk_stage2.sv" \
-        "$R/trirast_stage_ram.sv" "$R/trirast_improved2_top.sv" "$S/g2_unit_tb.sv"
+        "${gen1_srcs[@]}" $I2_SRCS "$S/g2_unit_tb.sv"
       for sc in $scenes; do
         hex="$WORK/unit_${sc#builtin:}.hex"
         for st in "" +stall; do   # sinks always ready; both ready in two cycles of three

@@ -99,6 +99,13 @@ def make_sv(base, d):
         "",
         "  /* verilator lint_on UNUSEDPARAM */",
         "",
+        "  // ---- the column an edge lane traverses (rtl/trirast_edge_lane2.sv, gen2) ----",
+        "  // x0 + Xmax (E_R) when dir == mirror (dir: B >= 0; mirror: A > 0), else x0 (E_L).",
+        "  function automatic logic lane_reads_right(input logic [CoefBits-1:0] a,",
+        "                                            input logic [CoefBits-1:0] b);",
+        "    lane_reads_right = !b[CoefBits-1] == (!a[CoefBits-1] && a != '0);",
+        "  endfunction",
+        "",
         "endpackage",
         "",
     ]

@@ -80,10 +80,9 @@ module g2_lane_tb #(
   logic [WB-1:0] g2_je;
   logic [1:0] g2_est;
   logic signed [XB-1:0] g2_ex;
-  // The value at the column the lane traverses (trirast_improved2_top's lane_reads_right):
-  // E_R when dir == mirror (dir: B >= 0; mirror: A > 0), else E_L.
+  // The value at the column the lane traverses.
   logic signed [EB-1:0] lane_e;
-  assign lane_e = (!b[CB-1] == (!a[CB-1] && a != '0)) ? er : el;
+  assign lane_e = trirast_pkg::lane_reads_right(a, b) ? er : el;
   trirast_edge_lane2 #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
     .e_i (lane_e), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),

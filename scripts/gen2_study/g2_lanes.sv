@@ -62,8 +62,8 @@ module g2_lanes #(
     trirast_edge_lane2 #(.FixedM ((Adaptive != 0) ? 0 : QB), .PreIter (PreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (load_i),
       .a_i (a_i[k*CB +: CB]), .b_i (b_i[k*CB +: CB]),
-      .e_i ((!b_i[k*CB + CB - 1] == (!a_i[k*CB + CB - 1] && a_i[k*CB +: CB] != '0))
-            ? er_i[k*EB +: EB] : el_i[k*EB +: EB]),   // the lane's column (E_R when dir == mirror)
+      .e_i (trirast_pkg::lane_reads_right(a_i[k*CB +: CB], b_i[k*CB +: CB])
+            ? er_i[k*EB +: EB] : el_i[k*EB +: EB]),   // the value at the lane's column
       .xmax_i (xmax_i), .ymax_i (ymax_i),
       .busy_o (busy_o[k]), .done_o (done_o[k]),
       .horiz_o (), .mirror_o (mirror_o[k]), .dir_down_o (dir_down_o[k]),
