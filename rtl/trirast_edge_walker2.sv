@@ -4,8 +4,10 @@
 //  - carry-select Bresenham step: both X' + inc and X' + inc + 1 (dir +; dir -: - q_s, - q_s - 1)
 //    and both e + de_a and e + de_b (dir +: r_s and r_s - D; dir -: -r_s and D - r_s), the sign of
 //    one sum selecting the pair;
-//  - the leave test (dir +: X' >= Xmax, dir -: X' < 0) as X' >= threshold against two thresholds
-//    prepared at the load (Xmax - inc, ...), in parallel with the adds;
+//  - the leave test (dir +: X' >= Xmax, dir -: X' < 0) as the sign of the stepped X' itself: the
+//    walker keeps X' as its leave offset o = X' - Xmax (dir +) or X' (dir -), so the row leaves
+//    exactly when the stepped o is >= 0 (dir +) or < 0 (dir -): no thresholds, no compares (the
+//    span generator reads the bound register below, so X' itself is read nowhere else);
 //  - the entry row from a down counter with a registered "next row enters" flag, not a compare of
 //    the walk stage's row counter;
 //  - the restored span bound (mirrored: Xmax - X', else X' + 1) kept in its own register, stepped
@@ -69,7 +71,10 @@ module trirast_edge_walker2 #(
   logic mirror_q, dir_q, ssat_q, enters_q, ent_q, ent_d;
   logic [WB-1:0] cnt_q, cnt_d;
   logic [1:0] est_q, st_q, st_d;
-  logic signed [XB-1:0] ex_q, inca_q, incb_q, tha_q, thb_q, x_q, x_d;
+  // x_q: the leave offset o (X' - Xmax for dir +, X' for dir -; see the header). X' is in
+  // [0, Xmax) on a bound row and a step moves it by at most q_s + 1 <= 2^Q (right for dir +, left
+  // for dir -), so the stepped o lies in [-2^Q, 2^Q): XB = Q + 2 signed bits hold it.
+  logic signed [XB-1:0] ex_q, inca_q, incb_q, x_q, x_d;
   logic signed [XB-1:0] bx_q, bx_d, binca_q, bincb_q, bex_q;   // bound register and its steps
   logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // e >> F, signed
   logic [EW-2:0] ee_q;
@@ -91,13 +96,12 @@ module trirast_edge_walker2 #(
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
     logic signed [EW-1:0] ea, eb;
     logic signed [XB-1:0] xs, bs;
-    logic ga, gb, selb, leave;
+    logic selb, leave;
     assign ea = e_r[r] + dea_q;
     assign eb = e_r[r] + deb_q;
-    assign ga = x_r[r] >= tha_q;          // the leave test of xa (dir -: negated)
-    assign gb = x_r[r] >= thb_q;
     assign selb = dir_q ? !eb[EW-1] : ea[EW-1];
-    assign leave = ssat_q || (dir_q ? (selb ? gb : ga) : !(selb ? gb : ga));
+    // The stepped offset's sign: dir + leaves when it is >= 0, dir - when it is < 0.
+    assign leave = ssat_q || (xs[XB-1] ^ dir_q);
     if (CarrySelect) begin : g_cs
       logic signed [XB-1:0] xa, xb, ba, bb;
       assign xa = x_r[r] + inca_q;
@@ -169,7 +173,7 @@ module trirast_edge_walker2 #(
     if (load_i) begin
       cnt_d = j_entry_i - 1'b1;
       ent_d = enters_i && (j_entry_i == WB'(1));
-      x_d   = entry_x_i;
+      x_d   = entry_o;
       e_d   = $signed({1'b0, entry_e_i[RB-1:F]});
       bx_d  = mirror_i ? $signed(XB'(xmax_i)) - entry_x_i : entry_x_i + 1'b1;
       st_d  = (enters_i && j_entry_i == '0) ? entry_state_i : (dir_down_i ? RowOut : RowClear);
@@ -185,7 +189,7 @@ module trirast_edge_walker2 #(
   end
 
   // ---- load-time preparation ----
-  logic signed [XB-1:0] qse, inca, incb, xm;
+  logic signed [XB-1:0] qse, inca, incb, xm, entry_o;
   logic signed [EW-1:0] rse, de;
   assign qse  = $signed(XB'(qs_i));
   assign xm   = $signed(XB'(xmax_i));
@@ -193,6 +197,7 @@ module trirast_edge_walker2 #(
   assign de   = $signed({1'b0, d_i[trirast_pkg::StepBits-1:F]});
   assign inca = dir_down_i ? qse : -qse;
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
+  assign entry_o = dir_down_i ? entry_x_i - xm : entry_x_i;   // the entry row's leave offset
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -210,7 +215,7 @@ module trirast_edge_walker2 #(
       enters_q <= enters_i;
       est_q    <= entry_state_i;
       if (CarrySelect) begin   // the entry row's copies (CarrySelect 0: x_q, e_q, bx_q hold them)
-        ex_q     <= entry_x_i;
+        ex_q     <= entry_o;
         ee_q     <= entry_e_i[RB-1:F];
         bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
       end
@@ -227,14 +232,6 @@ module trirast_edge_walker2 #(
       end
       dea_q    <= dir_down_i ? rse : -rse;
       deb_q    <= dir_down_i ? rse - de : de - rse;
-      // dir +: leave when x + inc >= Xmax, i.e. x >= Xmax - inc; dir -: stay when x + inc >= 0.
-      if (CarrySelect) begin
-        tha_q    <= dir_down_i ? xm - inca : -inca;
-        thb_q    <= dir_down_i ? xm - incb : -incb;
-      end else begin
-        tha_q    <= dir_down_i ? xm - qse : qse;
-        thb_q    <= dir_down_i ? xm + ~qse : qse + 1'b1;
-      end
     end
   end
 
