@@ -20,13 +20,14 @@
 //    (separate adder and registers); the entry-x division starts when both are done.
 //  - dir - edges keep u = ~v = -v - 1 (so the traversal always adds s and "entered" is always
 //    u >= 0) and divide u instead of -v = u + 1: X' = Xmax - 1 - q and e = D - 1 - r follow
-//    from u's q, r without a correction. e's high bits are ~(r - D), the saturation test's
-//    difference; X' is one adder whose first operand is a register (Xmax, or zero for dir +,
+//    from u's q, r without a correction, and the lane hands off r itself in both directions
+//    (entry_e_o: the gen2 walker's direction-free error term f, e for dir + and D - 1 - e for
+//    dir -); X' is one adder whose first operand is a register (Xmax, or zero for dir +,
 //    taken the cycle after the load). The entry test q >= Xmax (both directions) is formed
 //    bit-serially during the iterations.
 //  - D, s, r_s, R and the column value are held without their F low bits: D's and s's are zero,
-//    R's are the numerator's, and the column value's never change (s's are zero), so e's low
-//    bits are E's (E_L or E_R) from the load, for both directions.
+//    R's are the numerator's, and the column value's never change (s's are zero), so r's low
+//    bits are u's from the load (E's for dir +, ~E's for dir -).
 //  - The lane loads one edge value, e_i: E at the column it traverses, E_R (x0 + Xmax) when
 //    dir == mirror, else E_L (x0); the unit's corner stage forms just that one per edge.
 // Cycles (m = Qx, or Q with FixedM; P = PreIter; T = traversal steps; from the cycle after the
@@ -70,7 +71,8 @@ module trirast_edge_lane2 #(
   output logic [trirast_pkg::RowBits-1:0]         j_entry_o,
   output logic [1:0]                              entry_state_o,
   output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o,
-  output logic [trirast_pkg::RemBits-1:0]         entry_e_o
+  output logic [trirast_pkg::RemBits-1:0]         entry_e_o  // gen2: f, e for dir +, D - 1 - e
+                                                             // for dir - (not gen1's e)
 );
   localparam int F = trirast_pkg::FracBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -297,11 +299,14 @@ module trirast_edge_lane2 #(
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
   // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
   assign entry_x_o  = XB'(xm_q) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
-  if (Pre) begin : g_e_direct
-    assign entry_e_o = {rh_q, elo_q};  // already D - 1 - r for dir -
-  end else begin : g_e_conv
-    assign entry_e_o = {dir_q ? rh_q : ~r_minus_d[MB-1:0],
-                        elo_q};
+  // The walker's error term f (rtl/trirast_edge_walker2.sv): e for dir +, D - 1 - e for dir -,
+  // which is the division's remainder r in both directions (r's low bits are u's: E's for dir +,
+  // ~E's for dir -).
+  if (Pre) begin : g_e_conv
+    assign entry_e_o = {dir_q ? rh_q : ~r_minus_d[MB-1:0],   // R holds D - 1 - r for dir -
+                        dir_q ? elo_q : ~elo_q};
+  end else begin : g_e_direct
+    assign entry_e_o = {rh_q, dir_q ? elo_q : ~elo_q};
   end
 
   // Bits no result reads: |A|, |B|'s top bit (they are < 2^p), the column value's F low bits

@@ -2,12 +2,16 @@
 // The same row sequence as rtl/trirast_edge_walker.sv (docs/unit.md, section 4), but every test of
 // a step is computed beside its add instead of after it:
 //  - carry-select Bresenham step: both X' + inc and X' + inc + 1 (dir +; dir -: - q_s, - q_s - 1)
-//    and both e + de_a and e + de_b (dir +: r_s and r_s - D; dir -: -r_s and D - r_s), the sign of
-//    one sum selecting the pair;
+//    and both e + de_a and e + de_b, the sign of one sum selecting the pair;
+//  - one step for both directions: the walker keeps the error term as f = e (dir +) or
+//    D - 1 - e (dir -), the entry division's remainder r as the lane leaves it, so a row adds r_s
+//    and r_s - D (dir -: e - r_s < 0 exactly when f + r_s - D >= 0, and the two new e are f's two
+//    sums mirrored), with no negation or select of the steps at the load;
 //  - the leave test (dir +: X' >= Xmax, dir -: X' < 0) as the sign of the stepped X' itself: the
-//    walker keeps X' as its leave offset o = X' - Xmax (dir +) or X' (dir -), so the row leaves
-//    exactly when the stepped o is >= 0 (dir +) or < 0 (dir -): no thresholds, no compares (the
-//    span generator reads the bound register below, so X' itself is read nowhere else);
+//    walker keeps X' as its leave offset o = X' - Xmax (dir +) or -X' - 1 (dir -), which every
+//    row steps by + q_s (+ 1), so the row leaves exactly when the stepped o is >= 0: no
+//    thresholds, no compares (the span generator reads the bound register below, so X' itself is
+//    read nowhere else);
 //  - the entry row from a down counter with a registered "next row enters" flag, not a compare of
 //    the walk stage's row counter;
 //  - the restored span bound (mirrored: Xmax - X', else X' + 1) kept in its own register, stepped
@@ -20,12 +24,12 @@
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and
 // the bound from the running registers, which hold the values loaded with the job until then (no
 // copies ex, ee, bex).
-// e without its F low bits: the lane hands off D and r_s with F zero low bits (D = |A| * 2^F, r_s
-// the remainder of |B| * 2^F), so e's low bits are those of the entry e for ever and never carry
-// into the sum whose sign decides a step (e + de >= 0 exactly when (e >> F) + (de >> F) >= 0):
-// the walker keeps e >> F only (asserted at the load), in RB - F + 1 signed bits: e lies in
-// [0, D), the sum whose sign is read (dir +: e + r_s - D, dir -: e - r_s) in (-D, D), and the
-// other sum, which may overflow, is taken only when it lies in [0, D).
+// f without its F low bits: the lane hands off D and r_s with F zero low bits (D = |A| * 2^F, r_s
+// the remainder of |B| * 2^F), so f's low bits are those of the entry f for ever and never carry
+// into the sum whose sign decides a step (f + de >= 0 exactly when (f >> F) + (de >> F) >= 0):
+// the walker keeps f >> F only (asserted at the load), in RB - F + 1 signed bits: f lies in
+// [0, D), the sum whose sign is read (f + r_s - D) in (-D, D), and the other sum (f + r_s), which
+// may overflow, is taken only when it lies in [0, D).
 // NumEndpoints N > 1 (the walk stage's N rows per cycle, docs/timing.md): the step
 // above is built N times in a chain, row r + 1 one step after row r (row 0: the registers), as
 // rtl/trirast_edge_walker.sv's chain; the walker presents rows j .. j + N - 1 and advances by the
@@ -49,7 +53,7 @@ module trirast_edge_walker2 #(
   input  logic [trirast_pkg::RowBits-1:0]      j_entry_i,
   input  logic [1:0]                           entry_state_i,
   input  logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_i,
-  input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,
+  input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,   // f: e (dir +), D - 1 - e (dir -)
   input  logic [trirast_pkg::BoxBits-1:0]      xmax_i,
   input  logic                                 adv_i,
   input  logic [2:0]                           adv_rows_i,   // rows per group (1..N)
@@ -60,7 +64,7 @@ module trirast_edge_walker2 #(
 );
   localparam int RB = trirast_pkg::RemBits;
   localparam int F  = trirast_pkg::FracBits;
-  localparam int EW = RB - F + 1;   // e >> F, signed (see the header)
+  localparam int EW = RB - F + 1;   // f >> F, signed (see the header)
   localparam int WB = trirast_pkg::RowBits;
   localparam int XB = trirast_pkg::WalkerXBits;
   localparam int BB = trirast_pkg::BoxBits;
@@ -71,12 +75,12 @@ module trirast_edge_walker2 #(
   logic mirror_q, dir_q, ssat_q, enters_q, ent_q, ent_d;
   logic [WB-1:0] cnt_q, cnt_d;
   logic [1:0] est_q, st_q, st_d;
-  // x_q: the leave offset o (X' - Xmax for dir +, X' for dir -; see the header). X' is in
-  // [0, Xmax) on a bound row and a step moves it by at most q_s + 1 <= 2^Q (right for dir +, left
-  // for dir -), so the stepped o lies in [-2^Q, 2^Q): XB = Q + 2 signed bits hold it.
+  // x_q: the leave offset o (X' - Xmax for dir +, -X' - 1 for dir -; see the header). X' is in
+  // [0, Xmax) on a bound row, so o is in [-Xmax, 0), and a step adds at most q_s + 1 <= 2^Q: the
+  // stepped o lies in [-2^BB, 2^Q], which XB = Q + 2 signed bits hold.
   logic signed [XB-1:0] ex_q, inca_q, incb_q, x_q, x_d;
   logic signed [XB-1:0] bx_q, bx_d, binca_q, bincb_q, bex_q;   // bound register and its steps
-  logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // e >> F, signed
+  logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // f >> F, r_s >> F, (r_s - D) >> F
   logic [EW-2:0] ee_q;
 
   // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
@@ -99,9 +103,8 @@ module trirast_edge_walker2 #(
     logic selb, leave;
     assign ea = e_r[r] + dea_q;
     assign eb = e_r[r] + deb_q;
-    assign selb = dir_q ? !eb[EW-1] : ea[EW-1];
-    // The stepped offset's sign: dir + leaves when it is >= 0, dir - when it is < 0.
-    assign leave = ssat_q || (xs[XB-1] ^ dir_q);
+    assign selb = !eb[EW-1];
+    assign leave = ssat_q || !xs[XB-1];   // the stepped offset is >= 0
     if (CarrySelect) begin : g_cs
       logic signed [XB-1:0] xa, xb, ba, bb;
       assign xa = x_r[r] + inca_q;
@@ -111,12 +114,11 @@ module trirast_edge_walker2 #(
       assign xs = selb ? xb : xa;
       assign bs = selb ? bb : ba;
     end else begin : g_ci
-      // inca_q / binca_q hold inc_m; incb_q / bincb_q are unused (the carry-in below).
+      // inca_q = q_s, binca_q the bound's inc_m; incb_q / bincb_q are unused (the carry-in below).
       logic [XB:0] xsum, bsum;
-      logic tx, tbx;
-      assign tx   = dir_q ? selb : !selb;
+      logic tbx;
       assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
-      assign xsum = {x_r[r], 1'b1} + {inca_q, tx};
+      assign xsum = {x_r[r], 1'b1} + {inca_q, selb};
       assign bsum = {bx_r[r], 1'b1} + {binca_q, tbx};
       assign xs = $signed(xsum[XB:1]);
       assign bs = $signed(bsum[XB:1]);
@@ -195,9 +197,9 @@ module trirast_edge_walker2 #(
   assign xm   = $signed(XB'(xmax_i));
   assign rse  = $signed({1'b0, rs_i[RB-1:F]});
   assign de   = $signed({1'b0, d_i[trirast_pkg::StepBits-1:F]});
-  assign inca = dir_down_i ? qse : -qse;
+  assign inca = dir_down_i ? qse : -qse;                      // X' steps (the bound's)
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
-  assign entry_o = dir_down_i ? entry_x_i - xm : entry_x_i;   // the entry row's leave offset
+  assign entry_o = dir_down_i ? entry_x_i - xm : ~entry_x_i;  // the entry row's leave offset
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -219,19 +221,18 @@ module trirast_edge_walker2 #(
         ee_q     <= entry_e_i[RB-1:F];
         bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
       end
+      inca_q   <= qse;   // the offset's steps: q_s, q_s + 1 in both directions
       if (CarrySelect) begin
-        inca_q   <= inca;
-        incb_q   <= incb;
+        incb_q   <= qse + 1'b1;
         binca_q  <= mirror_i ? -inca : inca;
         bincb_q  <= mirror_i ? -incb : incb;
       end else begin
-        // inc_m: X' + inca = X' + inc_m + !dir, X' + incb = X' + inc_m + dir (the same for the
-        // bound with dir ^ mirror); incb_q, bincb_q are left unused.
-        inca_q   <= dir_down_i ? qse : ~qse;
+        // inc_m: X' + inca = X' + inc_m + !dir, X' + incb = X' + inc_m + dir for the bound with
+        // dir ^ mirror; incb_q, bincb_q are left unused.
         binca_q  <= (dir_down_i ^ mirror_i) ? qse : ~qse;
       end
-      dea_q    <= dir_down_i ? rse : -rse;
-      deb_q    <= dir_down_i ? rse - de : de - rse;
+      dea_q    <= rse;
+      deb_q    <= rse - de;
     end
   end
 

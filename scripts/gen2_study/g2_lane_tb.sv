@@ -76,7 +76,7 @@ module g2_lane_tb #(
   logic g2_busy, g2_done, g2_horiz, g2_mirror, g2_dir, g2_ssat, g2_enters;
   logic [SB-1:0] g2_d;
   logic [QB-1:0] g2_qs;
-  logic [RB-1:0] g2_rs, g2_ee;
+  logic [RB-1:0] g2_rs, g2_ee, g2_f;
   logic [WB-1:0] g2_je;
   logic [1:0] g2_est;
   logic signed [XB-1:0] g2_ex;
@@ -87,7 +87,9 @@ module g2_lane_tb #(
     .e_i (lane_e), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),
     .rs_o (g2_rs), .ssat_o (g2_ssat), .enters_o (g2_enters), .j_entry_o (g2_je),
-    .entry_state_o (g2_est), .entry_x_o (g2_ex), .entry_e_o (g2_ee));
+    .entry_state_o (g2_est), .entry_x_o (g2_ex), .entry_e_o (g2_f));
+  // gen2's lane hands off f (e for dir +, D - 1 - e for dir -); gen1's e from it:
+  assign g2_ee = g2_dir ? g2_f : RB'(g2_d) - 1'b1 - g2_f;
 
   // ---- two gen1 walkers, one per lane's results ----
   logic wload, wadv;
