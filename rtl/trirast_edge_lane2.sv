@@ -22,9 +22,9 @@
 //    u >= 0) and divide u instead of -v = u + 1: X' = Xmax - 1 - q and e = D - 1 - r follow
 //    from u's q, r without a correction, and the lane hands off r itself in both directions
 //    (entry_e_o: the gen2 walker's direction-free error term f, e for dir + and D - 1 - e for
-//    dir -); X' is one adder whose first operand is a register (Xmax, or zero for dir +,
-//    taken the cycle after the load). The entry test q >= Xmax (both directions) is formed
-//    bit-serially during the iterations.
+//    dir -), and X' as the walker's leave offset q - Xmax, the same in both directions (one
+//    subtraction from Xmax registered the cycle after the load). The entry test q >= Xmax (both
+//    directions) is formed bit-serially during the iterations.
 //  - D, s, r_s, R and the column value are held without their F low bits: D's and s's are zero,
 //    R's are the numerator's, and the column value's never change (s's are zero), so r's low
 //    bits are u's from the load (E's for dir +, ~E's for dir -).
@@ -70,7 +70,7 @@ module trirast_edge_lane2 #(
   output logic                                    enters_o,
   output logic [trirast_pkg::RowBits-1:0]         j_entry_o,
   output logic [1:0]                              entry_state_o,
-  output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o,
+  output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o,  // gen2: q - Xmax (not X')
   output logic [trirast_pkg::RemBits-1:0]         entry_e_o  // gen2: f, e for dir +, D - 1 - e
                                                              // for dir - (not gen1's e)
 );
@@ -117,9 +117,7 @@ module trirast_edge_lane2 #(
   logic [MB-1:0] rsh_q, rsh_d;               // r_s without its F zero bits
   logic ssat_q, ssat_d;
   logic gt_q, gt_d, eq_q, eq_d;              // entry quotient vs Xmax, MSB first
-  // X' = Xmax - 1 - q's first operand, zero for dir + (a flip-flop with a synchronous reset, so
-  // the adder reads a register, not a select).
-  logic [BB-1:0] xm_q;
+  logic [BB-1:0] xm_q;                       // Xmax, registered the cycle after the load
   logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----
@@ -265,7 +263,7 @@ module trirast_edge_lane2 #(
       u_q <= u_d;
       j_q <= j_q + 1'b1;
     end
-    if (ld_q) xm_q <= dir_q ? '0 : xmax_i;
+    if (ld_q) xm_q <= xmax_i;
     ld_q    <= load_i;
     cnt_q   <= cnt_d;
     first_q <= first_d;
@@ -296,9 +294,9 @@ module trirast_edge_lane2 #(
   // Past the entry a horizontal edge is clear (dir +) or out (dir -); otherwise the entry test.
   assign entry_state_o = (horiz_q || sat_q || gt_q || eq_q) ? (dir_q ? RowClear : RowOut)
                                                             : RowBound;
-  // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1).
-  // (Written as one adder with muxed operands, so the muxes fold into its bit cells.)
-  assign entry_x_o  = XB'(xm_q) + (dir_q ? XB'(qe_q) : ~(XB'(qe_q)));
+  // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1). The gen2
+  // walker's leave offset (X' - Xmax for dir +, -X' - 1 for dir -) is q - Xmax in both.
+  assign entry_x_o  = XB'(qe_q) - XB'(xm_q);
   // The walker's error term f (rtl/trirast_edge_walker2.sv): e for dir +, D - 1 - e for dir -,
   // which is the division's remainder r in both directions (r's low bits are u's: E's for dir +,
   // ~E's for dir -).

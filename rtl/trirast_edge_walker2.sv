@@ -8,8 +8,9 @@
 //    and r_s - D (dir -: e - r_s < 0 exactly when f + r_s - D >= 0, and the two new e are f's two
 //    sums mirrored), with no negation or select of the steps at the load;
 //  - the leave test (dir +: X' >= Xmax, dir -: X' < 0) as the sign of the stepped X' itself: the
-//    walker keeps X' as its leave offset o = X' - Xmax (dir +) or -X' - 1 (dir -), which every
-//    row steps by + q_s (+ 1), so the row leaves exactly when the stepped o is >= 0: no
+//    walker keeps X' as its leave offset o = X' - Xmax (dir +) or -X' - 1 (dir -), q - Xmax in
+//    both directions for the lane's entry quotient q (the lane hands off o, entry_x_i), which
+//    every row steps by + q_s (+ 1), so the row leaves exactly when the stepped o is >= 0: no
 //    thresholds, no compares (the span generator reads the bound register below, so X' itself is
 //    read nowhere else);
 //  - the entry row from a down counter with a registered "next row enters" flag, not a compare of
@@ -52,7 +53,7 @@ module trirast_edge_walker2 #(
   input  logic                                 enters_i,
   input  logic [trirast_pkg::RowBits-1:0]      j_entry_i,
   input  logic [1:0]                           entry_state_i,
-  input  logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_i,
+  input  logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_i,   // the leave offset o (below)
   input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,   // f: e (dir +), D - 1 - e (dir -)
   input  logic [trirast_pkg::BoxBits-1:0]      xmax_i,
   input  logic                                 adv_i,
@@ -78,15 +79,18 @@ module trirast_edge_walker2 #(
   // x_q: the leave offset o (X' - Xmax for dir +, -X' - 1 for dir -; see the header). X' is in
   // [0, Xmax) on a bound row, so o is in [-Xmax, 0), and a step adds at most q_s + 1 <= 2^Q: the
   // stepped o lies in [-2^BB, 2^Q], which XB = Q + 2 signed bits hold.
+  // The lane hands off the entry row's o, qe - Xmax in both directions (qe the entry quotient).
   logic signed [XB-1:0] ex_q, inca_q, incb_q, x_q, x_d;
-  logic signed [XB-1:0] bx_q, bx_d, binca_q, bincb_q, bex_q;   // bound register and its steps
+  // The bound register and its steps, BB + 1 bits: the bound lies in [0, Xmax + 1] on a bound row
+  // (a leaving row's, outside, is not read), and its low bits do not depend on the ones above.
+  logic [BB:0] bx_q, bx_d, binca_q, bincb_q, bex_q, bx_load;
   logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // f >> F, r_s >> F, (r_s - D) >> F
   logic [EW-2:0] ee_q;
 
   // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
   logic [1:0] st_r [0:NumEndpoints] /* verilator split_var */;
   logic signed [XB-1:0] x_r [0:NumEndpoints] /* verilator split_var */;
-  logic signed [XB-1:0] bx_r [0:NumEndpoints] /* verilator split_var */;
+  logic [BB:0] bx_r [0:NumEndpoints] /* verilator split_var */;
   logic signed [EW-1:0] e_r [0:NumEndpoints] /* verilator split_var */;
   logic [WB-1:0] cnt_r [0:NumEndpoints] /* verilator split_var */;
   logic ent_r [0:NumEndpoints] /* verilator split_var */;
@@ -99,14 +103,16 @@ module trirast_edge_walker2 #(
 
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
     logic signed [EW-1:0] ea, eb;
-    logic signed [XB-1:0] xs, bs;
+    logic signed [XB-1:0] xs;
+    logic [BB:0] bs;
     logic selb, leave;
     assign ea = e_r[r] + dea_q;
     assign eb = e_r[r] + deb_q;
     assign selb = !eb[EW-1];
     assign leave = ssat_q || !xs[XB-1];   // the stepped offset is >= 0
     if (CarrySelect) begin : g_cs
-      logic signed [XB-1:0] xa, xb, ba, bb;
+      logic signed [XB-1:0] xa, xb;
+      logic [BB:0] ba, bb;
       assign xa = x_r[r] + inca_q;
       assign xb = x_r[r] + incb_q;
       assign ba = bx_r[r] + binca_q;
@@ -115,19 +121,21 @@ module trirast_edge_walker2 #(
       assign bs = selb ? bb : ba;
     end else begin : g_ci
       // inca_q = q_s, binca_q the bound's inc_m; incb_q / bincb_q are unused (the carry-in below).
-      logic [XB:0] xsum, bsum;
+      logic [XB:0] xsum;
+      logic [BB+1:0] bsum;
       logic tbx;
       assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
       assign xsum = {x_r[r], 1'b1} + {inca_q, selb};
       assign bsum = {bx_r[r], 1'b1} + {binca_q, tbx};
       assign xs = $signed(xsum[XB:1]);
-      assign bs = $signed(bsum[XB:1]);
+      assign bs = bsum[BB+1:1];
       logic unused_ci;
       assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
     end
 
     logic [1:0] st_n;
-    logic signed [XB-1:0] x_n, bx_n;
+    logic signed [XB-1:0] x_n;
+    logic [BB:0] bx_n;
     logic signed [EW-1:0] e_n;
     always_comb begin
       st_n = st_r[r];  x_n = x_r[r];  e_n = e_r[r];  bx_n = bx_r[r];
@@ -156,7 +164,7 @@ module trirast_edge_walker2 #(
   // so Verilator splits it).
   logic [1:0] st_c [1:NumEndpoints];
   logic signed [XB-1:0] x_c [1:NumEndpoints];
-  logic signed [XB-1:0] bx_c [1:NumEndpoints];
+  logic [BB:0] bx_c [1:NumEndpoints];
   logic signed [EW-1:0] e_c [1:NumEndpoints];
   logic [WB-1:0] cnt_c [1:NumEndpoints];
   logic ent_c [1:NumEndpoints];
@@ -175,9 +183,9 @@ module trirast_edge_walker2 #(
     if (load_i) begin
       cnt_d = j_entry_i - 1'b1;
       ent_d = enters_i && (j_entry_i == WB'(1));
-      x_d   = entry_o;
+      x_d   = entry_x_i;
       e_d   = $signed({1'b0, entry_e_i[RB-1:F]});
-      bx_d  = mirror_i ? $signed(XB'(xmax_i)) - entry_x_i : entry_x_i + 1'b1;
+      bx_d  = bx_load;
       st_d  = (enters_i && j_entry_i == '0) ? entry_state_i : (dir_down_i ? RowOut : RowClear);
     end else if (adv_i) begin
       // Advance by the group: row j + adv_rows (N = 1: row j + 1).
@@ -191,15 +199,20 @@ module trirast_edge_walker2 #(
   end
 
   // ---- load-time preparation ----
-  logic signed [XB-1:0] qse, inca, incb, xm, entry_o;
+  logic signed [XB-1:0] qse, inca, incb;
+  logic [BB:0] xm, ob;
   logic signed [EW-1:0] rse, de;
   assign qse  = $signed(XB'(qs_i));
-  assign xm   = $signed(XB'(xmax_i));
+  assign xm   = (BB+1)'(xmax_i);
   assign rse  = $signed({1'b0, rs_i[RB-1:F]});
   assign de   = $signed({1'b0, d_i[trirast_pkg::StepBits-1:F]});
   assign inca = dir_down_i ? qse : -qse;                      // X' steps (the bound's)
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
-  assign entry_o = dir_down_i ? entry_x_i - xm : ~entry_x_i;  // the entry row's leave offset
+  // The entry row's bound from o: mirrored, Xmax - X' (dir +: -o, dir -: Xmax + 1 + o); else
+  // X' + 1 (dir +: o + Xmax + 1, dir -: -o). One adder, its operands selected.
+  assign ob = entry_x_i[BB:0];
+  assign bx_load = ((mirror_i == dir_down_i) ? ~ob : ob) + ((mirror_i == dir_down_i) ? '0 : xm)
+                   + 1'b1;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -217,19 +230,19 @@ module trirast_edge_walker2 #(
       enters_q <= enters_i;
       est_q    <= entry_state_i;
       if (CarrySelect) begin   // the entry row's copies (CarrySelect 0: x_q, e_q, bx_q hold them)
-        ex_q     <= entry_o;
+        ex_q     <= entry_x_i;
         ee_q     <= entry_e_i[RB-1:F];
-        bex_q    <= mirror_i ? xm - entry_x_i : entry_x_i + 1'b1;
+        bex_q    <= bx_load;
       end
       inca_q   <= qse;   // the offset's steps: q_s, q_s + 1 in both directions
       if (CarrySelect) begin
         incb_q   <= qse + 1'b1;
-        binca_q  <= mirror_i ? -inca : inca;
-        bincb_q  <= mirror_i ? -incb : incb;
+        binca_q  <= (BB+1)'(mirror_i ? -inca : inca);
+        bincb_q  <= (BB+1)'(mirror_i ? -incb : incb);
       end else begin
         // inc_m: X' + inca = X' + inc_m + !dir, X' + incb = X' + inc_m + dir for the bound with
         // dir ^ mirror; incb_q, bincb_q are left unused.
-        binca_q  <= (dir_down_i ^ mirror_i) ? qse : ~qse;
+        binca_q  <= (BB+1)'((dir_down_i ^ mirror_i) ? qse : ~qse);
       end
       dea_q    <= rse;
       deb_q    <= rse - de;
@@ -239,7 +252,7 @@ module trirast_edge_walker2 #(
   assign mirror_o = mirror_q;
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_out
     assign row_state_o[2*r +: 2]       = st_r[r];
-    assign row_bound_o[r*(BB+1) +: BB+1] = bx_r[r][BB:0];
+    assign row_bound_o[r*(BB+1) +: BB+1] = bx_r[r];
   end
   logic unused_rows;
   assign unused_rows = ^{adv_rows_i,       // N = 1: one row per advance

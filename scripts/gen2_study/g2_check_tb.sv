@@ -58,6 +58,9 @@ module g2_check_tb;
   logic [RB-1:0] rs, ee, ef;
   // gen2's walkers take the error term as f: e for dir +, D - 1 - e for dir - (the lane's r).
   assign ef = dir ? ee : RB'(d) - 1'b1 - ee;
+  // ... and X' as the leave offset o: X' - Xmax (dir +), -X' - 1 (dir -).
+  logic signed [XB-1:0] eo;
+  assign eo = dir ? ex - XB'(xmax) : -ex - 1'b1;
   logic [WB-1:0] je, row;
   logic [1:0] est, st1, st2, st3;
   logic signed [XB-1:0] ex, x1;
@@ -70,12 +73,12 @@ module g2_check_tb;
     .row_state_o (st1), .row_x_o (x1));
   trirast_edge_walker2 u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
     .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
-    .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ef), .xmax_i (xmax),
+    .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef), .xmax_i (xmax),
     .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
   // The iCE40 fit's walker (carry-in step, no entry copies): the same rows.
   trirast_edge_walker2 #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
-    .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ef),
+    .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef),
     .xmax_i (xmax), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
 
   // ---------------- span generators ----------------

@@ -79,7 +79,7 @@ module g2_lane_tb #(
   logic [RB-1:0] g2_rs, g2_ee, g2_f;
   logic [WB-1:0] g2_je;
   logic [1:0] g2_est;
-  logic signed [XB-1:0] g2_ex;
+  logic signed [XB-1:0] g2_ex, g2_o;
   // The value at the column the lane traverses.
   logic signed [EB-1:0] lane_e;
   assign lane_e = trirast_pkg::lane_reads_right(a, b) ? er : el;
@@ -87,7 +87,9 @@ module g2_lane_tb #(
     .e_i (lane_e), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),
     .rs_o (g2_rs), .ssat_o (g2_ssat), .enters_o (g2_enters), .j_entry_o (g2_je),
-    .entry_state_o (g2_est), .entry_x_o (g2_ex), .entry_e_o (g2_f));
+    .entry_state_o (g2_est), .entry_x_o (g2_o), .entry_e_o (g2_f));
+  // ... and the leave offset o = q - Xmax; gen1's X' from it (dir +: o + Xmax, dir -: -o - 1):
+  assign g2_ex = g2_dir ? g2_o + XB'(xmax) : -g2_o - 1'b1;
   // gen2's lane hands off f (e for dir +, D - 1 - e for dir -); gen1's e from it:
   assign g2_ee = g2_dir ? g2_f : RB'(g2_d) - 1'b1 - g2_f;
 
