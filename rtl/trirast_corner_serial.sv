@@ -2,11 +2,16 @@
 // iCE40 form): vertex-relative E_L by digit-serial
 // shift-add, MSB first, DigitBits operand bits per cycle (2: radix 4, 4: radix 16), for the three
 // edges at once:  E_L = A*dxL + B*dy - bias,  dxL = cx0 - vx, dy = cy0 - vy.
+// The vertex of an edge: edge k runs from v_k to v_k+1, and v0 lies on edges 0 and 2, so both
+// take their operands from v0 and edge 1 from v1 (E is the same from any point of the edge's
+// line: A and B must be the vertices' edge coefficients, A_k = y_k - y_k+1, B_k = x_k+1 - x_k):
+// two operand pairs, not three, and v2 is not read.
 // Per cycle and edge: acc = (acc << DigitBits) +- A*digit(|dxL|) +- B*digit(|dy|) (the operand's
 // sign picks add or subtract; A*digit by shift-and-add). Starts at the top non-zero digit of the
-// largest operand of the three edges, so it takes ceil(bits / DigitBits) cycles (at least one)
+// largest operand (of v0's and v1's), so it takes ceil(bits / DigitBits) cycles (at least one)
 // after the start cycle. Against g2_corner_digit (LSB first) it keeps no shifted multiplicands:
-// the registers are the two operand magnitudes and the accumulator per edge, and a digit counter.
+// the registers are the two operand magnitudes per vertex, the accumulator per edge, and a digit
+// counter.
 // SignFold 1 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same values and cycles):
 // the operand's sign is applied to the 25-bit multiplicand (A' = +-A, B' = +-B, each cycle from
 // the held sign) instead of to the 50-bit partial product, and the bias enters the last digit's
@@ -89,10 +94,15 @@ module trirast_corner_serial #(
     pp_sum = sum;
   endfunction
 
-  logic [ND*DB-1:0] mag_k [3][2];
-  for (genvar k = 0; k < 3; k++) begin : g_edge
+  // ---- the operands of the two vertices (v0: edges 0 and 2; v1: edge 1) ----
+  logic [ND*DB-1:0] mag_k [2][2];
+  logic [2*DB-1:0] dgx_v, dgy_v;         // the current digits
+  logic [1:0] sx_v, sy_v;                // the operands' signs (held)
+  logic [1:0] dxs_v, dys_v;              // the signs of the operands being loaded
+  for (genvar k = 0; k < 2; k++) begin : g_vertex
     logic [ND*DB-1:0] mx_q, mx_d, my_q, my_d;
-    logic sx_q, sx_d, sy_q, sy_d, run_q, run_d;
+    logic sx_q, sx_d, sy_q, sy_d;
+    logic [DB-1:0] dgx, dgy;
     logic signed [DW-1:0] dxl, dy, mxw, vxw;
     logic [DW:0] dsum;
     // dxl: first run cx0 - vx = cx0 + ~vx + 1; second run Xmax * 2^F +- |dxL| (the held
@@ -110,11 +120,6 @@ module trirast_corner_serial #(
     assign amy = dy[DW-1] ? MW'(-dy) : MW'(dy);
     assign mag_k[k][0] = (ND * DB)'(amx);
     assign mag_k[k][1] = (ND * DB)'(amy);
-    logic signed [CB-1:0] ak, bk;
-    logic signed [EB-1:0] acc_q, acc_d, tx, ty;
-    logic [DB-1:0] dgx, dgy;
-    assign ak  = $signed(a_i[k*CB +: CB]);
-    assign bk  = $signed(b_i[k*CB +: CB]);
     // The current digit of each operand: a ND-way select by the counter.
     always_comb begin
       dgx = '0;
@@ -126,6 +131,44 @@ module trirast_corner_serial #(
         end
       end
     end
+    assign dgx_v[k*DB +: DB] = dgx;
+    assign dgy_v[k*DB +: DB] = dgy;
+    always_comb begin
+      mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;
+      if (start_i) begin
+        mx_d = mag_k[k][0];
+        sx_d = dxl[DW-1];
+        if (!second_i) begin
+          my_d = mag_k[k][1];
+          sy_d = dy[DW-1];
+        end
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;
+    end
+    assign sx_v[k] = sx_q;
+    assign sy_v[k] = sy_q;
+    assign dxs_v[k] = dxl[DW-1];
+    assign dys_v[k] = dy[DW-1];
+  end
+  logic unused_v2;   // v2: no edge takes its operands from it; the loading signs: RegMult's
+  assign unused_v2 = ^{vx_i[2*P +: P], vy_i[2*P +: P], dxs_v, dys_v};
+
+  // ---- the three edges: multiplicands, digit products, accumulators ----
+  for (genvar k = 0; k < 3; k++) begin : g_edge
+    localparam int V = (k == 1) ? 1 : 0;   // the edge's vertex
+    logic run_q, run_d;
+    logic sx_q, sy_q;
+    logic signed [CB-1:0] ak, bk;
+    logic signed [EB-1:0] acc_q, acc_d, tx, ty;
+    logic [DB-1:0] dgx, dgy;
+    assign sx_q = sx_v[V];
+    assign sy_q = sy_v[V];
+    assign dgx  = dgx_v[V*DB +: DB];
+    assign dgy  = dgy_v[V*DB +: DB];
+    assign ak  = $signed(a_i[k*CB +: CB]);
+    assign bk  = $signed(b_i[k*CB +: CB]);
     // The multiplicands A, B: held by the unit's corner-stage input register (here the inputs).
     if (!SignFold) begin : g_pp
       assign tx = EB'(pp(ak, dgx));
@@ -145,8 +188,8 @@ module trirast_corner_serial #(
       if (RegMult) begin : g_reg
         logic signed [CB:0] as_q, bs_q;
         always_ff @(posedge clk_i) begin
-          if (start_i) as_q <= dxl[DW-1] ? -ake : ake;
-          if (start_i && !second_i) bs_q <= dy[DW-1] ? -bke : bke;
+          if (start_i) as_q <= dxs_v[V] ? -ake : ake;
+          if (start_i && !second_i) bs_q <= dys_v[V] ? -bke : bke;
         end
         assign as = as_q;
         assign bs = bs_q;
@@ -163,15 +206,9 @@ module trirast_corner_serial #(
       assign ty = EB'(py);
     end
     always_comb begin
-      mx_d = mx_q;  my_d = my_q;  sx_d = sx_q;  sy_d = sy_q;  acc_d = acc_q;  run_d = run_q;
+      acc_d = acc_q;  run_d = run_q;
       if (start_i) begin
         run_d = run_i[k];
-        mx_d = mag_k[k][0];
-        sx_d = dxl[DW-1];
-        if (!second_i) begin
-          my_d = mag_k[k][1];
-          sy_d = dy[DW-1];
-        end
         if (run_i[k]) acc_d = '0;
       end else if (cnt_q != '0 && run_q) begin
         if (SignFold) acc_d = ((acc_q <<< DB) + tx) + ty;
@@ -180,7 +217,7 @@ module trirast_corner_serial #(
       end
     end
     always_ff @(posedge clk_i) begin
-      mx_q <= mx_d;  my_q <= my_d;  sx_q <= sx_d;  sy_q <= sy_d;  acc_q <= acc_d;  run_q <= run_d;
+      acc_q <= acc_d;  run_q <= run_d;
     end
     assign el_o[k*EB +: EB] = acc_q;
   end
@@ -194,8 +231,8 @@ module trirast_corner_serial #(
   endfunction
   logic [NB-1:0] nx, ny;
   always_comb begin
-    any_x = mag_k[0][0] | mag_k[1][0] | mag_k[2][0];
-    any_y = mag_k[0][1] | mag_k[1][1] | mag_k[2][1];
+    any_x = mag_k[0][0] | mag_k[1][0];
+    any_y = mag_k[0][1] | mag_k[1][1];
     nx = digits(any_x);
     ny = second_i ? ny_q : digits(any_y);
     ny_d = (start_i && !second_i) ? ny : ny_q;

@@ -384,7 +384,7 @@ if [ "$CHECK" = 1 ]; then
     "$R/trirast_interface.sv" "$S/g2_box_stage.sv" "$S/g2_box_stage3.sv" "$S/g2_box_check_tb.sv"
   tb_run g2_box_check_tb check_box g2_box_check_tb ""
   check_unit "0 1 1fit" "${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}" ""
-  # The MSB-first corner units on independent full-width operands with the extremes, and
+  # The MSB-first corner units on full-width vertices with the extremes, and
   # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
   tb_build g2_corner_check_tb check_corner \
     "$R/trirast_corner_serial.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv"

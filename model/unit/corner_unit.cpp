@@ -11,16 +11,17 @@ namespace trirast {
 CornerUnit::CornerUnit(const RasterConfig& cfg) : cfg_(cfg) {}
 
 int64_t CornerUnit::corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const {
-  const int64_t dx = pixel_centre(x0, cfg_) - t.v[k].x;
-  const int64_t dy = pixel_centre(y0, cfg_) - t.v[k].y;
+  const int v = operand_vertex(k);
+  const int64_t dx = pixel_centre(x0, cfg_) - t.v[v].x;
+  const int64_t dy = pixel_centre(y0, cfg_) - t.v[v].y;
   return t.edge[k].A * dx + t.edge[k].B * dy + t.edge[k].bias;
 }
 
 int CornerUnit::digits(const TriangleSetup& t, int64_t x0, int64_t y0) const {
   uint64_t any = 0;
-  for (int k = 0; k < 3; ++k) {
-    const int64_t dx = pixel_centre(x0, cfg_) - t.v[k].x;
-    const int64_t dy = pixel_centre(y0, cfg_) - t.v[k].y;
+  for (int v = 0; v < 2; ++v) {  // the operands of v0 and v1 (operand_vertex)
+    const int64_t dx = pixel_centre(x0, cfg_) - t.v[v].x;
+    const int64_t dy = pixel_centre(y0, cfg_) - t.v[v].y;
     any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
   }
   const int bits = unsigned_bits(any);

@@ -16,16 +16,20 @@ namespace trirast {
 class CornerUnit {
  public:
   explicit CornerUnit(const RasterConfig& cfg);
-  // E_L of edge k at the pixel centre of (x0, y0), vertex-relative.
+  // E_L of edge k at the pixel centre of (x0, y0), relative to the edge's operand_vertex(k).
   int64_t corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const;
   // The digit-serial unit's run length at (x0, y0): the digits of 4 bits of the largest operand
-  // magnitude |cx0 - vx|, |cy0 - vy| over the three edges, at least 1 (trirast_corner_serial's counter).
+  // magnitude |cx0 - vx|, |cy0 - vy| of v0 and v1, at least 1 (trirast_corner_serial's counter;
+  // edges 0 and 2 take their operands from v0, which lies on both, edge 1 from v1).
   int digits(const TriangleSetup& t, int64_t x0, int64_t y0) const;
   // Fills E_L and E_R of every edge of `box` (its a, b, x0, y0, Xmax already set) and checks them
   // against gen1's (`gen1`): a difference is a model bug (std::logic_error).
   void run(const TriangleSetup& t, InterfaceOut& box, const InterfaceOut& gen1) const;
 
   static constexpr int kDigitBits = 4;  // radix 16
+  // The vertex edge k's operands are taken from: v0 lies on edges 0 (v0 -> v1) and 2 (v2 -> v0),
+  // so the hardware forms two operand pairs, v0's and v1's.
+  static constexpr int operand_vertex(int k) { return k == 1 ? 1 : 0; }
 
  private:
   RasterConfig cfg_;

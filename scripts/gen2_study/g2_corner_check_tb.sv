@@ -2,9 +2,11 @@
 // 4 and 16, radix 16 with SignFold, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
 // E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
 // (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
-// of a triangle near the box), the operands here are independent and include the extremes:
-// A, B in {-2^(CB-1), -1, 0, 1, 2^(CB-1) - 1}, vertices in {-2^(P-1), 2^(P-1) - 1, cx0, cy0 (a zero
-// operand)}, box corners 0 and 2^PB - 1. It also checks g2_corner_msb16p's cycle count: busy for
+// of a triangle near the box), the vertices here are drawn over the full widths and include the
+// extremes: vertices in {-2^(P-1), 2^(P-1) - 1, cx0, cy0 (a zero operand)}, so A and B (the
+// vertices' edge coefficients, A_k = y_k - y_k+1, B_k = x_k+1 - x_k, as the unit forms them:
+// trirast_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box corners 0
+// and 2^PB - 1. It also checks g2_corner_msb16p's cycle count: busy for
 // max(1, ceil(bits / 4)) + Depth cycles after the start, bits = the largest bit length of the six
 // magnitudes |cx0 - vx|, |cy0 - vy|. Not part of the test suite.
 module g2_corner_check_tb;
@@ -63,16 +65,6 @@ module g2_corner_check_tb;
     end
   endfunction
 
-  // A coefficient: uniform over CB bits, or (one in three) an extreme.
-  function automatic logic [CB-1:0] coef();
-    unique case ($urandom % 9)
-      0: coef = {1'b1, {(CB - 1){1'b0}}};  // -2^(CB-1): the largest |A|
-      1: coef = {1'b0, {(CB - 1){1'b1}}};  // 2^(CB-1) - 1
-      2: coef = '0;
-      default: coef = CB'({$urandom, $urandom});
-    endcase
-    if ($urandom % 9 == 0) coef = ($urandom % 2) ? CB'(1) : '1;  // +-1
-  endfunction
   // A vertex coordinate against the box corner c (c = cx0 or cy0): uniform over P bits, near c,
   // or an extreme, or c itself (a zero operand).
   function automatic logic [P-1:0] vert(input longint c);
@@ -104,18 +96,20 @@ module g2_corner_check_tb;
     bits = 0;
     ext = 0;
     for (int k = 0; k < 3; k++) begin
-      a[k*CB +: CB] = coef();
-      b[k*CB +: CB] = coef();
       vx[k*P +: P] = vert(cx0);
       vy[k*P +: P] = vert(cy0);
-      if (a[k*CB +: CB] == {1'b1, {(CB - 1){1'b0}}} || b[k*CB +: CB] == {1'b1, {(CB - 1){1'b0}}} ||
-          vx[k*P +: P] == {1'b1, {(P - 1){1'b0}}} || vy[k*P +: P] == {1'b1, {(P - 1){1'b0}}}) ext = 1;
+      if (vx[k*P +: P] == {1'b1, {(P - 1){1'b0}}} || vy[k*P +: P] == {1'b1, {(P - 1){1'b0}}} ||
+          vx[k*P +: P] == {1'b0, {(P - 1){1'b1}}} || vy[k*P +: P] == {1'b0, {(P - 1){1'b1}}}) ext = 1;
       mag = cx0 - sx(64'(vx[k*P +: P]), P);
       if (mag < 0) mag = -mag;
       if (bitlen(mag) > bits) bits = bitlen(mag);
       mag = cy0 - sx(64'(vy[k*P +: P]), P);
       if (mag < 0) mag = -mag;
       if (bitlen(mag) > bits) bits = bitlen(mag);
+    end
+    for (int k = 0; k < 3; k++) begin   // the vertices' edge coefficients
+      a[k*CB +: CB] = CB'(sx(64'(vy[k*P +: P]), P) - sx(64'(vy[((k + 1) % 3)*P +: P]), P));
+      b[k*CB +: CB] = CB'(sx(64'(vx[((k + 1) % 3)*P +: P]), P) - sx(64'(vx[k*P +: P]), P));
     end
     if (ext) extremes++;
     bias = 3'($urandom);
