@@ -137,10 +137,26 @@ TEST(ScImproved2, WalkTakesOneCyclePerGroupOfNRows) {
   }
 }
 
+// docs/timing.md's d, read independently of CornerUnit: max(1, ceil(bits / 4)), bits the bit
+// length of the largest |cx - vx|, |cy - vy| of the vertices v0 and v1 at the run's corner.
+static uint64_t contract_digits(const TriangleSetup& t, int64_t x0, int64_t y0,
+                                const RasterConfig& cfg) {
+  uint64_t any = 0;
+  for (int v = 0; v < 2; ++v) {
+    const int64_t dx = pixel_centre(x0, cfg) - t.v[v].x, dy = pixel_centre(y0, cfg) - t.v[v].y;
+    any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
+  }
+  uint64_t bits = 0;
+  for (; any != 0; any >>= 1) ++bits;
+  return std::max<uint64_t>(1, (bits + 3) / 4);
+}
+
 // The model against an independent cycle-by-cycle reading of docs/timing.md "The
 // second-generation improved unit" (dv/reference/improved2_cycle_reference.hpp), which takes from
-// the datapath only what the contract's cycles depend on: all sixteen columns of every triangle,
-// both corner forms, N = 1, 2, 4, FIFO depths 1 .. 8 (N at least), three sinks.
+// the datapath only what the contract's cycles depend on (the corner unit's digit counts it reads
+// from the contract itself, contract_digits, and checks the datapath's against them): all sixteen
+// columns of every triangle, both corner forms, N = 1, 2, 4, FIFO depths 1 .. 8 (N at least),
+// three sinks.
 TEST(ScImproved2, CyclesFollowTheContractStepByStep) {
   size_t compared = 0;
   for (const char* scene : {"hard-all", "mixed:objects=3", "random:count=3000,size=mixed,seed=4",
@@ -156,8 +172,15 @@ TEST(ScImproved2, CyclesFollowTheContractStepByStep) {
       r.tri = t.index;
       r.empty = x.box.empty;
       r.tiny = x.tiny;
-      r.digits_l = uint64_t(x.corner_digits_l);
-      r.digits_r = uint64_t(x.corner_digits_r);
+      // C's runs: E_L for every box that reaches C, E_R at x0 + Xmax for a lane job.
+      if (!x.box.empty) {
+        r.digits_l = contract_digits(t, x.box.x0, x.box.y0, cfg);
+        ASSERT_EQ(uint64_t(x.corner_digits_l), r.digits_l) << scene << " triangle " << t.index;
+        if (!x.tiny) {
+          r.digits_r = contract_digits(t, x.box.x0 + x.box.Xmax, x.box.y0, cfg);
+          ASSERT_EQ(uint64_t(x.corner_digits_r), r.digits_r) << scene << " triangle " << t.index;
+        }
+      }
       r.lane_cycles = x.lane_cycles;
       for (const Improved2Row& row : x.rows)
         r.row_pixels.push_back(row.valid ? uint64_t(row.span.pixels()) : 0);
