@@ -117,7 +117,9 @@ module trirast_edge_lane2 #(
   logic [MB-1:0] rsh_q, rsh_d;               // r_s without its F zero bits
   logic ssat_q, ssat_d;
   logic gt_q, gt_d, eq_q, eq_d;              // entry quotient vs Xmax, MSB first
-  logic [BB-1:0] xm_q;                       // Xmax, registered the cycle after the load
+  logic [BB-1:0] xm_q;                       // Xmax, registered the cycle after the load (xmax_i
+                                             // itself holds; reading it measured no smaller:
+                                             // docs/gen2-design.md, "Measured, not kept")
   logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----

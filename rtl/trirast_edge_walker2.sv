@@ -84,7 +84,7 @@ module trirast_edge_walker2 #(
   // The bound register and its steps, BB + 1 bits: the bound lies in [0, Xmax + 1] on a bound row
   // (a leaving row's, outside, is not read), and its low bits do not depend on the ones above.
   logic [BB:0] bx_q, bx_d, binca_q, bincb_q, bex_q, bx_load;
-  logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // f >> F, r_s >> F, (r_s - D) >> F
+  logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // r_s >> F, (r_s - D) >> F, f >> F
   logic [EW-2:0] ee_q;
 
   // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
@@ -256,9 +256,9 @@ module trirast_edge_walker2 #(
   end
   logic unused_rows;
   assign unused_rows = ^{adv_rows_i,       // N = 1: one row per advance
-                         entry_e_i[F-1:0], rs_i[F-1:0], d_i[F-1:0]};   // e's low bits
+                         entry_e_i[F-1:0], rs_i[F-1:0], d_i[F-1:0]};   // f's low bits
 
-  // D and r_s have F zero low bits (the lane's), so e's stay the entry e's (see the header).
+  // D and r_s have F zero low bits (the lane's), so f's stay the entry f's (see the header).
   `ASSERT(StepLowBitsZero_A, load_i |-> rs_i[F-1:0] == '0 && d_i[F-1:0] == '0, clk_i, !rst_ni)
 
 endmodule

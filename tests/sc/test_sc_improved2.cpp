@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fixed_point.hpp"
 #include "core/setup.hpp"
 #include "golden/golden.hpp"
 #include "reference/cycle_columns.hpp"
@@ -146,9 +147,7 @@ static uint64_t contract_digits(const TriangleSetup& t, int64_t x0, int64_t y0,
     const int64_t dx = pixel_centre(x0, cfg) - t.v[v].x, dy = pixel_centre(y0, cfg) - t.v[v].y;
     any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
   }
-  uint64_t bits = 0;
-  for (; any != 0; any >>= 1) ++bits;
-  return std::max<uint64_t>(1, (bits + 3) / 4);
+  return std::max<uint64_t>(1, (uint64_t(unsigned_bits(any)) + 3) / 4);
 }
 
 // The model against an independent cycle-by-cycle reading of docs/timing.md "The
