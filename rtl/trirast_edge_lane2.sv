@@ -71,6 +71,8 @@ module trirast_edge_lane2 #(
   output logic [trirast_pkg::RowBits-1:0]         j_entry_o,
   output logic [1:0]                              entry_state_o,
   output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o,  // gen2: q - Xmax (not X')
+  output logic [trirast_pkg::BoxBits:0]           entry_b_o,  // gen2: the entry row's span bound
+                                                              // - 1 (rtl/trirast_edge_walker2.sv)
   output logic [trirast_pkg::RemBits-1:0]         entry_e_o  // gen2: f, e for dir +, D - 1 - e
                                                              // for dir - (not gen1's e)
 );
@@ -101,7 +103,9 @@ module trirast_edge_lane2 #(
 
   logic [2:0] op_q, op_d;
   logic horiz_q, mirror_q, dir_q;
-  logic [MB-1:0] dh_q, sh_q;                 // |A|, |B| (D and s without their F zero bits)
+  logic [MB-1:0] dhn_q, sh_q;                // ~|A|, |B| (D and s without their F zero bits; D
+                                             // complemented, so the subtractions of D need no
+                                             // inverter LUTs)
   logic signed [EB-F-1:0] u_q, u_d;          // column value v (dir +) or ~v (dir -) without its F
                                              // low bits (s's are zero: they never change)
   logic [F-1:0] elo_q;                       // E's F low bits: e's (r's low bits are u's; dir -
@@ -117,17 +121,22 @@ module trirast_edge_lane2 #(
   logic [MB-1:0] rsh_q, rsh_d;               // r_s without its F zero bits
   logic ssat_q, ssat_d;
   logic gt_q, gt_d, eq_q, eq_d;              // entry quotient vs Xmax, MSB first
-  logic [BB-1:0] xm_q;                       // Xmax, registered the cycle after the load (xmax_i
+  logic [BB-1:0] xmn_q;                      // ~Xmax, registered the cycle after the load (xmax_i
                                              // itself holds; reading it measured no smaller:
-                                             // docs/gen2-design.md, "Measured, not kept")
+                                             // docs/gen2-design.md, "Measured, not kept");
+                                             // complemented, so the subtraction from q needs no
+                                             // inverter LUTs
   logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----
   logic [CB-1:0] abs_a, abs_b;
   logic horiz_n, mirror_n, dir_n;
   logic signed [EB-1:0] u_load;
-  assign abs_a    = a_i[CB-1] ? CB'(-a_i) : CB'(a_i);
-  assign abs_b    = b_i[CB-1] ? CB'(-b_i) : CB'(b_i);
+  // |x| = (x - s) ^ s for the sign s (x - 1 complemented when negative): one adder whose carry
+  // chain takes s as its other operand and whose sum LUTs absorb the complement (a negation and
+  // a select map to three LUT4 per bit).
+  assign abs_a    = (a_i + {CB{a_i[CB-1]}}) ^ {CB{a_i[CB-1]}};
+  assign abs_b    = (b_i + {CB{b_i[CB-1]}}) ^ {CB{b_i[CB-1]}};
   assign horiz_n  = a_i == '0;
   assign mirror_n = !a_i[CB-1] && !horiz_n;
   assign dir_n    = !b_i[CB-1];
@@ -163,7 +172,9 @@ module trirast_edge_lane2 #(
   // s's (bit c of |B|) or the column value's, which stays put while the entry division runs (the
   // traversal is over).
   assign nbit    = (op_q == OpSlope) ? sh_q[$clog2(MB)'(cnt_q)] : u_q[$clog2(EB - F)'(cnt_q)];
-  assign trial   = {1'b0, x_hi} - {2'b0, dh_q};
+  logic [MB+2:0] tsum;   // {R, bit} + ~D + 1, the carry-in from the low bit
+  assign tsum    = {1'b0, x_hi, 1'b1} + {2'b11, dhn_q, 1'b1};
+  assign trial   = tsum[MB+2:1];
   assign fits    = !trial[MB+1];
   if (Pre) begin : g_pre
     assign pre    = first_q;
@@ -183,7 +194,9 @@ module trirast_edge_lane2 #(
   // R - D on R's high bits: its sign is the saturation test (first iteration) and, in the
   // end, ~(r - D) = D - 1 - r is a dir - edge's e.
   logic [MB:0] r_minus_d;
-  assign r_minus_d = {1'b0, rh_q} - {1'b0, dh_q};
+  logic [MB+1:0] rdsum;
+  assign rdsum     = {1'b0, rh_q, 1'b1} + {1'b1, dhn_q, 1'b1};
+  assign r_minus_d = rdsum[MB+1:1];
   assign sat_now = stk_q || !r_minus_d[MB];
   assign xbit    = (32'(cnt_q) < BB) ? xmax_i[cnt_q] : 1'b0;
 
@@ -256,7 +269,7 @@ module trirast_edge_lane2 #(
       horiz_q  <= horiz_n;
       mirror_q <= mirror_n;
       dir_q    <= dir_n;
-      dh_q     <= abs_a[MB-1:0];
+      dhn_q    <= ~abs_a[MB-1:0];
       sh_q     <= abs_b[MB-1:0];
       u_q      <= u_load[EB-1:F];
       elo_q    <= e_i[F-1:0];
@@ -265,7 +278,7 @@ module trirast_edge_lane2 #(
       u_q <= u_d;
       j_q <= j_q + 1'b1;
     end
-    if (ld_q) xm_q <= xmax_i;
+    if (ld_q) xmn_q <= ~xmax_i;
     ld_q    <= load_i;
     cnt_q   <= cnt_d;
     first_q <= first_d;
@@ -287,7 +300,7 @@ module trirast_edge_lane2 #(
   assign horiz_o    = horiz_q;
   assign mirror_o   = mirror_q;
   assign dir_down_o = dir_q;
-  assign d_o        = {dh_q, {F{1'b0}}};
+  assign d_o        = {~dhn_q, {F{1'b0}}};
   assign qs_o       = qs_q;
   assign rs_o       = {rsh_q, {F{1'b0}}};
   assign ssat_o     = ssat_q;
@@ -298,7 +311,13 @@ module trirast_edge_lane2 #(
                                                             : RowBound;
   // dir +: X' = q, e = r. dir -: X' = Xmax - 1 - q, e = D - 1 - r (q, r of u = -v - 1). The gen2
   // walker's leave offset (X' - Xmax for dir +, -X' - 1 for dir -) is q - Xmax in both.
-  assign entry_x_o  = XB'(qe_q) - XB'(xm_q);
+  logic [XB:0] xsum;   // q + ~Xmax + 1, the carry-in from the low bit
+  assign xsum       = {XB'(qe_q), 1'b1} + {{(XB-BB){1'b1}}, xmn_q, 1'b1};
+  assign entry_x_o  = xsum[XB:1];
+  // The walker's bound - 1 at the entry row: mirrored Xmax - X' - 1, else X': with o = q - Xmax,
+  // ~o = Xmax - q - 1 when mirror == dir (mirrored dir +: X' = q; not mirrored dir -:
+  // X' = Xmax - 1 - q), else q (mirrored dir -: Xmax - X' - 1 = q; not mirrored dir +: X' = q).
+  assign entry_b_o  = (mirror_q == dir_q) ? ~entry_x_o[BB:0] : qe_q[BB:0];
   // The walker's error term f (rtl/trirast_edge_walker2.sv): e for dir +, D - 1 - e for dir -,
   // which is the division's remainder r in both directions (r's low bits are u's: E's for dir +,
   // ~E's for dir -).
@@ -312,6 +331,6 @@ module trirast_edge_lane2 #(
   // Bits no result reads: |A|, |B|'s top bit (they are < 2^p), the column value's F low bits
   // (E's, kept in elo_q), the complement flag without the pre-iteration.
   logic unused;
-  assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl};
+  assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl, xsum[0], tsum[0], rdsum[0]};
 
 endmodule

@@ -15,8 +15,10 @@
 //    read nowhere else);
 //  - the entry row from a down counter with a registered "next row enters" flag, not a compare of
 //    the walk stage's row counter;
-//  - the restored span bound (mirrored: Xmax - X', else X' + 1) kept in its own register, stepped
-//    with the same select, so the span generator starts from registers.
+//  - the restored span bound minus one (mirrored: Xmax - X' - 1, else X') kept in its own
+//    register, stepped with the same select, so the span generator starts from registers; the
+//    lane hands off its entry value (entry_b_i), and the walk stage adds the one back with a
+//    carry-in.
 // The load-time preparation (a few subtractions) sits on the hand-off path, which a gen2 unit
 // registers (hand-off buffer).
 // CarrySelect 0 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same rows): X' and the
@@ -55,13 +57,13 @@ module trirast_edge_walker2 #(
   input  logic [1:0]                           entry_state_i,
   input  logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_i,   // the leave offset o (below)
   input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,   // f: e (dir +), D - 1 - e (dir -)
-  input  logic [trirast_pkg::BoxBits-1:0]      xmax_i,
+  input  logic [trirast_pkg::BoxBits:0]        entry_b_i,   // the entry row's bound - 1
   input  logic                                 adv_i,
   input  logic [2:0]                           adv_rows_i,   // rows per group (1..N)
   output logic                                 mirror_o,
   output logic [2*NumEndpoints-1:0]            row_state_o,  // row j + r: state
   output logic [NumEndpoints*(trirast_pkg::BoxBits+1)-1:0] row_bound_o  // row j + r: the
-                                                                         // restored bound
+                                                                         // restored bound - 1
 );
   localparam int RB = trirast_pkg::RemBits;
   localparam int F  = trirast_pkg::FracBits;
@@ -81,7 +83,7 @@ module trirast_edge_walker2 #(
   // stepped o lies in [-2^BB, 2^Q], which XB = Q + 2 signed bits hold.
   // The lane hands off the entry row's o, qe - Xmax in both directions (qe the entry quotient).
   logic signed [XB-1:0] ex_q, inca_q, incb_q, x_q, x_d;
-  // The bound register and its steps, BB + 1 bits: the bound lies in [0, Xmax + 1] on a bound row
+  // The bound - 1 register and its steps, BB + 1 bits: the bound lies in [1, Xmax] on a bound row
   // (a leaving row's, outside, is not read), and its low bits do not depend on the ones above.
   logic [BB:0] bx_q, bx_d, binca_q, bincb_q, bex_q, bx_load;
   logic signed [EW-1:0] dea_q, deb_q, e_q, e_d;                // r_s >> F, (r_s - D) >> F, f >> F
@@ -200,19 +202,13 @@ module trirast_edge_walker2 #(
 
   // ---- load-time preparation ----
   logic signed [XB-1:0] qse, inca, incb;
-  logic [BB:0] xm, ob;
   logic signed [EW-1:0] rse, de;
   assign qse  = $signed(XB'(qs_i));
-  assign xm   = (BB+1)'(xmax_i);
   assign rse  = $signed({1'b0, rs_i[RB-1:F]});
   assign de   = $signed({1'b0, d_i[trirast_pkg::StepBits-1:F]});
   assign inca = dir_down_i ? qse : -qse;                      // X' steps (the bound's)
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
-  // The entry row's bound from o: mirrored, Xmax - X' (dir +: -o, dir -: Xmax + 1 + o); else
-  // X' + 1 (dir +: o + Xmax + 1, dir -: -o). One adder, its operands selected.
-  assign ob = entry_x_i[BB:0];
-  assign bx_load = ((mirror_i == dir_down_i) ? ~ob : ob) + ((mirror_i == dir_down_i) ? '0 : xm)
-                   + 1'b1;
+  assign bx_load = entry_b_i;   // the lane's (trirast_edge_lane2's entry_b_o)
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin

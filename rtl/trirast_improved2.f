@@ -12,5 +12,6 @@ trirast_span_generator2.sv
 trirast_span_fifo.sv
 trirast_span_fifo_ram.sv
 trirast_stage_ram.sv
+trirast_job_ring.sv
 trirast_walk_stage2.sv
 trirast_improved2_top.sv

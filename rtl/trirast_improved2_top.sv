@@ -33,10 +33,9 @@
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
-// flip-flops); WalkerCs 0, the walkers' carry-in step; SignFold 1, the serial corner unit's signs
-// on the multiplicands; TestHi 1, the 2x2 test on E_L >> F and A, B; CRam 1 (CornerForm 1 with
-// SignFold only), C's register in block RAM but for the vertices and the bias. The defaults are
-// the iCE40 form; scripts/synth.sh builds the xc7 form with CornerForm 0.
+// flip-flops); WalkerCs 0, the walkers' carry-in step; TestHi 1, the 2x2 test on E_L >> F and
+// A, B; CRam 1 (CornerForm 1 only), C's register in block RAM but for the vertices and the bias.
+// The defaults are the iCE40 form; scripts/synth.sh builds the xc7 form with CornerForm 0.
 `include "trirast_assert.svh"
 
 module trirast_improved2_top #(
@@ -45,9 +44,9 @@ module trirast_improved2_top #(
   parameter int CornerForm = 1,  // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
   parameter bit FifoRam    = 1'b1,
   parameter bit WalkerCs   = 1'b0,
-  parameter bit SignFold   = 1'b1,
   parameter bit TestHi     = 1'b1,
-  parameter bit CRam       = 1'b1,  // CornerForm 1 with SignFold only: C's fields in block RAM
+  parameter bit CRam       = 1'b1,  // CornerForm 1 only: C's fields in block RAM
+  parameter bit JobRing    = 1'b1,  // the walk stage's tag, box from a job ring (block RAM)
   // trirast_edge_lane2's FixedM and PreIter (0, 0: the adaptive divider as measured; other
   // values change the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
   parameter int LaneFixedM  = 0,
@@ -120,28 +119,31 @@ module trirast_improved2_top #(
   logic b_take, b_retire, c_free;
 
   // The box is formed from the port in the accept cycle and registered with the triangle (the
-  // port holds the triangle while it is offered): B holds each axis's clipped first and last
-  // pixel and the empty flag, so the retire and move decisions read registers. The first and
-  // last pixels are kept at PB bits: they are read only for a box that is not empty, where
-  // 0 <= first <= last <= the viewport's last pixel.
+  // port holds the triangle while it is offered): B holds each axis's clipped first pixel, its
+  // last pixel (clipped to the viewport at the take, a compare beside the Xmax subtraction) and
+  // the empty flag, so the retire and move decisions read registers. The first pixel is kept at
+  // PB bits: it is read only for a box that is not empty, where 0 <= first <= the clipped last
+  // <= the viewport's last pixel.
   // Per axis, with u = 2^F, h = u / 2 and each vertex v = hi * u + lo: the first pixel whose
   // centre p * u + h is >= v is ceil((v - h) / u) = hi + (lo > h), the last one whose centre is
   // <= v is t = floor((v - h) / u) = hi - (lo < h); both grow with v, so the box's first pixel is
   // the smallest vertex's (by three compares of the vertices, beside the t subtractions) and its
   // last the largest vertex's t. Unclipped, the box is empty exactly when no vertex has lo = h and
   // the three t are equal (no pixel centre between the smallest and the largest vertex): that
-  // test reads the t and the low bits only, so the empty flag is one carry chain deep; the
-  // clipped first and last pixels two.
+  // test reads the t and the low bits only, and the box starts past the viewport exactly when
+  // every vertex's first pixel does (a compare per vertex), so the empty flag is one carry chain
+  // deep; the first pixel two, its clip to 0 read from the smallest vertex's hi beside its
+  // increment.
   localparam int HB = (P - F + 2 > PB + 2) ? P - F + 2 : PB + 2;  // signed bits of hi, t, the box
-  function automatic logic [2*PB:0] axis_box(input logic [3*P-1:0] v, input logic [PB-1:0] vpi);
+  function automatic logic [PB+HB:0] axis_box(input logic [3*P-1:0] v, input logic [PB-1:0] vpi);
     logic signed [HB-1:0] hi [3];
     logic signed [HB-1:0] t [3];
     logic [2:0] lo_lt, lo_gt, lo_eq;
     logic signed [P+1:0] vw;
-    /* verilator lint_off UNUSEDSIGNAL */   // last's bits above PB (read only for a box)
-    logic signed [HB-1:0] vp, hmin, tmax, first, last;
+    /* verilator lint_off UNUSEDSIGNAL */   // first's bits above PB (read only for a box)
+    logic signed [HB-1:0] vp, hmin, tmax, first;
     /* verilator lint_on UNUSEDSIGNAL */
-    logic lt01, lt02, lt12, gtmin, all_neg, unclipped_empty, past_end;
+    logic lt01, lt02, lt12, gtmin, all_neg, unclipped_empty, past_end, first_neg;
     vp = HB'(vpi);
     for (int k = 0; k < 3; k++) begin
       vw = {{2{v[k*P+P-1]}}, v[k*P +: P]};
@@ -165,21 +167,27 @@ module trirast_improved2_top #(
     else if (lt01 && !lt12) tmax = t[1];
     else tmax = t[2];
     first = hmin + HB'(gtmin);
-    last = (tmax > vp) ? vp : tmax;
+    // first < 0 (clipped to 0) from hmin, beside the increment: hmin < 0 but for hmin = -1, gt
+    first_neg = hmin[HB-1] && !(hmin == '1 && gtmin);
     all_neg = t[0][HB-1] && t[1][HB-1] && t[2][HB-1];
     unclipped_empty = !(|lo_eq) && t[0] == t[1] && t[1] == t[2];
-    // first > vp: hmin + gtmin > vp
-    past_end = gtmin ? hmin >= vp : hmin > vp;
-    axis_box = {all_neg || past_end || unclipped_empty, PB'(first[HB-1] ? '0 : first), PB'(last)};
+    // first > vp: the smallest vertex's first pixel hi + gt is past vp, so every vertex's is (a
+    // compare per vertex, beside the vertex compares instead of after them)
+    past_end = 1'b1;
+    for (int k = 0; k < 3; k++) past_end = past_end && (lo_gt[k] ? hi[k] >= vp : hi[k] > vp);
+    // The last pixel unclipped (tmax): B clips it to the viewport at the take.
+    axis_box = {all_neg || past_end || unclipped_empty, PB'(first_neg ? '0 : first), tmax};
   endfunction
 
-  logic [PB-1:0] fx, lx, fy, ly;
+  logic [PB-1:0] fx, fy;
+  logic signed [HB-1:0] tx, ty;   // the last pixels, not clipped
   logic x_empty, y_empty, p_empty;
-  assign {x_empty, fx, lx} = axis_box(tri_vx_i, cfg_vp_xmax_i);
-  assign {y_empty, fy, ly} = axis_box(tri_vy_i, cfg_vp_ymax_i);
+  assign {x_empty, fx, tx} = axis_box(tri_vx_i, cfg_vp_xmax_i);
+  assign {y_empty, fy, ty} = axis_box(tri_vy_i, cfg_vp_ymax_i);
   assign p_empty = x_empty || y_empty;
   logic b_empty_q;
-  logic [PB-1:0] b_fx_q, b_lx_q, b_fy_q, b_ly_q;
+  logic [PB-1:0] b_fx_q, b_fy_q;
+  logic signed [HB-1:0] b_tx_q, b_ty_q;
 
   assign b_retire = b_full_q && b_empty_q;
   assign b_take   = b_full_q && !b_empty_q && c_free;
@@ -196,7 +204,7 @@ module trirast_improved2_top #(
     if (tri_valid_i && tri_ready_o) begin
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
       b_empty_q <= p_empty;
-      b_fx_q <= fx;  b_lx_q <= lx;  b_fy_q <= fy;  b_ly_q <= ly;
+      b_fx_q <= fx;  b_tx_q <= tx;  b_fy_q <= fy;  b_ty_q <= ty;
     end
   end
 
@@ -222,8 +230,13 @@ module trirast_improved2_top #(
     edge_coefs = {ca, cb, cbias};
   endfunction
   logic [3*CB-1:0] b_a, b_b;
+  logic [3*(CB+1)-1:0] b_p;   // A + B per edge: the corner unit's multiplicand, the 2x2 test's step
   logic [2:0] b_bias;
   assign {b_a, b_b, b_bias} = edge_coefs(b_vx_q, b_vy_q);
+  for (genvar k = 0; k < 3; k++) begin : g_p
+    assign b_p[k*(CB+1) +: CB+1] = (CB+1)'($signed(b_a[k*CB +: CB])) +
+                                   (CB+1)'($signed(b_b[k*CB +: CB]));
+  end
 
   // ---------------------------------------------------------------- C: corner values
   logic c_full_q;
@@ -232,9 +245,11 @@ module trirast_improved2_top #(
   logic [BB-1:0] c_xmax_q, c_ymax_q;
   logic [3*P-1:0] c_vx_q, c_vy_q;
   logic [3*CB-1:0] c_a_q, c_b_q;
+  logic [3*(CB+1)-1:0] c_p_q;
   logic [2:0] c_bias_q;
   logic c_tiny, c_ready, c_move, l_free;
   logic [3*EB-1:0] el, e_lane;   // el: E_L for the 2x2 test; e_lane: each lane's column value
+  logic [2:0] e_far, e_fneg;     // E_L far from 0 and its sign (the 2x2 test's split form)
 
   // Per edge: its lane traverses x0 + Xmax (E_R), not x0 (E_L).
   logic [2:0] c_right;
@@ -242,7 +257,6 @@ module trirast_improved2_top #(
     assign c_right[k] = trirast_pkg::lane_reads_right(c_a_q[k*CB +: CB], c_b_q[k*CB +: CB]);
   end
 
-  assign c_tiny = (c_xmax_q <= BB'(1)) && (c_ymax_q <= BB'(1));
   assign c_free = !c_full_q || c_move;
   assign c_move = c_full_q && c_ready && l_free;
 
@@ -251,17 +265,32 @@ module trirast_improved2_top #(
     else if (b_take) c_full_q <= 1'b1;
     else if (c_move) c_full_q <= 1'b0;
   end
-  // C's register. With the digit-serial unit and SignFold (its multiplicands registered at each
-  // start) the fields below are read only when C's values are ready or at the corner unit's
-  // second start, both at least two cycles after the take (run 1 starts in the take cycle and has
-  // at least one digit; CRamReadLate_A): there (CRam) they are held in block RAM
-  // (trirast_stage_ram), the rest in flip-flops. (Without SignFold the unit reads C's A and B in
-  // every digit cycle, from the cycle after the take.)
-  localparam bit UseCRam = CRam && CornerForm != 0 && SignFold;
-  localparam int CW = TB + 2 * PB + 2 * BB + 6 * CB;
+  // C's register. With the digit-serial unit (its multiplicands registered at the first start)
+  // the fields below are read only when C's values are ready or at the corner unit's second
+  // start, both at least two cycles after the take (run 1 starts in the take cycle and has at
+  // least one digit; CRamReadLate_A): there (CRam) they are held in block RAM
+  // (trirast_stage_ram), the rest in flip-flops.
+  localparam bit UseCRam = CRam && CornerForm != 0;
+  // C's x0, y0: read by the products (CornerForm 0) and copied to L without the job ring only.
+  localparam bit CXY = CornerForm == 0 || !JobRing;
+  localparam int CW = TB + (CXY ? 2 * PB : 0) + 2 * BB + 6 * CB + 3 * (CB + 1);
   logic [CW-1:0] c_d, c_q;
-  assign c_d = {b_tag_q, b_fx_q, b_fy_q, BB'(b_lx_q - b_fx_q), BB'(b_ly_q - b_fy_q), b_a, b_b};
-  assign {c_tag_q, c_x0_q, c_y0_q, c_xmax_q, c_ymax_q, c_a_q, c_b_q} = c_q;
+  logic [BB-1:0] b_xmax, b_ymax;
+  // The box's last pixels clipped to the viewport (a box that is not empty has 0 <= t, and
+  // first <= the clipped last), then Xmax, Ymax: at the take, from B's registers.
+  logic [PB-1:0] b_lx, b_ly;
+  assign b_lx = (b_tx_q > HB'(cfg_vp_xmax_i)) ? cfg_vp_xmax_i : PB'(b_tx_q);
+  assign b_ly = (b_ty_q > HB'(cfg_vp_ymax_i)) ? cfg_vp_ymax_i : PB'(b_ty_q);
+  assign b_xmax = BB'(b_lx - b_fx_q);
+  assign b_ymax = BB'(b_ly - b_fy_q);
+  if (CXY) begin : g_cxy
+    assign c_d = {b_tag_q, b_fx_q, b_fy_q, b_xmax, b_ymax, b_a, b_b, b_p};
+    assign {c_tag_q, c_x0_q, c_y0_q, c_xmax_q, c_ymax_q, c_a_q, c_b_q, c_p_q} = c_q;
+  end else begin : g_cnoxy
+    assign c_d = {b_tag_q, b_xmax, b_ymax, b_a, b_b, b_p};
+    assign {c_tag_q, c_xmax_q, c_ymax_q, c_a_q, c_b_q, c_p_q} = c_q;
+    assign {c_x0_q, c_y0_q} = '0;   // not read
+  end
   if (UseCRam) begin : g_cram
     trirast_stage_ram #(.Bits (CW)) u_cram (
       .clk_i (clk_i), .rst_ni (rst_ni), .we_i (b_take), .d_i (c_d), .q_o (c_q));
@@ -270,8 +299,13 @@ module trirast_improved2_top #(
       if (b_take) c_q <= c_d;
     end
   end
+  // The tiny flag in a flip-flop of its own, formed at the take (the move decisions read it, and
+  // C's block-RAM fields come late in the cycle).
+  logic c_tiny_q;
+  assign c_tiny = c_tiny_q;
   always_ff @(posedge clk_i) begin
     if (b_take) begin
+      c_tiny_q <= (b_xmax <= BB'(1)) && (b_ymax <= BB'(1));
       c_vx_q   <= b_vx_q;
       c_vy_q   <= b_vy_q;
       c_bias_q <= b_bias;
@@ -286,29 +320,30 @@ module trirast_improved2_top #(
       .x0_i (c_x0_q), .x1_i (c_x0_q + PB'(c_xmax_q)), .x1sel_i (c_tiny ? 3'b000 : c_right),
       .y0_i (c_y0_q), .el_o (el));
     assign e_lane = el;
+    for (genvar k = 0; k < 3; k++) begin : g_far
+      logic [EB-F-CB-3:0] top;   // E's bits F + CB + 2 and up: far means |E| >= 2^(F+CB+2)
+      assign top = el[k*EB + F + CB + 2 +: EB - F - CB - 2];
+      assign e_far[k]  = !((&top) || !(|top));
+      assign e_fneg[k] = el[k*EB + EB - 1];
+    end
     assign c_ready = 1'b1;
   end else begin : g_msb
     // Digit-serial: run 1 forms E_L at x0; it starts in the cycle the triangle moves from B to C
-    // (its operands |cx0 - vx|, |cy0 - vy| from B's box, as g2_box_stage.sv forms them into the
-    // corner stage's register), and iterates with A, B, bias from C's register. A box for the
+    // (its operands cx0 - vx, cy0 - vy from B's box and vertices, its multiplicands from A, B
+    // formed from B's vertices), and C's bias enters its output. A box for the
     // lanes then runs again at x1 = x0 + Xmax (its x operands from run 1's, held in the unit, and
     // C's Xmax), for the edges whose lane reads E_R only (c_right): the others' accumulators hold
     // E_L, so the lanes load the accumulators.
     logic start2_q, run_q, second_q, busy, start, done;
     logic [3*EB-1:0] acc;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
-    // SignFold (RegMult): A, B are read in the start cycles only, from B (run 1) or C (run 2;
-    // B' is kept); without it in every digit cycle, from C.
-    logic [3*CB-1:0] s_a, s_b;
-    assign s_a = (SignFold && !start2_q) ? b_a : c_a_q;
-    assign s_b = SignFold ? b_b : c_b_q;
-    trirast_corner_serial #(
-      .DigitBits (4), .SignFold (SignFold), .RegMult (SignFold)
-    ) u_corner (
+    // A, B are read at the first start only, from B (the unit keeps A + B and A - B).
+    trirast_corner_serial #(.DigitBits (4)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .second_i (start2_q),
       .run_i (start2_q ? c_right : 3'b111),
-      .vx_i (b_vx_q), .vy_i (b_vy_q), .a_i (s_a), .b_i (s_b), .bias_i (c_bias_q),
-      .x0_i (b_fx_q), .y0_i (b_fy_q), .xmax_i (c_xmax_q), .busy_o (busy), .el_o (acc));
+      .vx_i (b_vx_q), .vy_i (b_vy_q), .a_i (b_a), .b_i (b_b), .p_i (b_p), .bias_i (c_bias_q),
+      .x0_i (b_fx_q), .y0_i (b_fy_q), .xmax_i (c_xmax_q), .busy_o (busy), .el_o (acc),
+      .far_o (e_far), .fneg_o (e_fneg));
     assign done = run_q && !start2_q && !busy;   // the current run's result is in acc
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -337,18 +372,20 @@ module trirast_improved2_top #(
   // The direct 2x2 test (box-relative: x0 = y0 = 0). TestHi: E_L + A*u (u = 2^F) >= 0 exactly
   // when floor(E_L / u) + A >= 0, so the test runs on E_L's bits above F and on A, B.
   localparam int TW = TestHi ? EB - F : EB;
-  logic [3*TW-1:0] t_el, a_step, b_step;
+  logic [3*TW-1:0] t_el, a_step, b_step, ab_step;
   for (genvar k = 0; k < 3; k++) begin : g_step
     if (TestHi) begin : g_hi
       assign t_el[k*TW +: TW]   = el[k*EB + F +: TW];
       assign a_step[k*TW +: TW] = TW'($signed(c_a_q[k*CB +: CB]));
       assign b_step[k*TW +: TW] = TW'($signed(c_b_q[k*CB +: CB]));
+      assign ab_step[k*TW +: TW] = TW'($signed(c_p_q[k*(CB+1) +: CB+1]));
       logic unused_lo;
       assign unused_lo = ^el[k*EB +: F];   // below the test's sign (floor)
     end else begin : g_full
       assign t_el[k*TW +: TW]   = el[k*EB +: EB];
       assign a_step[k*TW +: TW] = EB'($signed(c_a_q[k*CB +: CB])) <<< F;
       assign b_step[k*TW +: TW] = EB'($signed(c_b_q[k*CB +: CB])) <<< F;
+      assign ab_step[k*TW +: TW] = EB'($signed(c_p_q[k*(CB+1) +: CB+1])) <<< F;
     end
   end
   logic [1:0] t_valid;
@@ -356,14 +393,14 @@ module trirast_improved2_top #(
   logic [2*(PB+1)-1:0] t_xe;
   /* verilator lint_off PINCONNECTEMPTY */
   trirast_direct_test_2x2 #(.W (TW), .SW (TestHi ? CB : CB + F)) u_box2x2 (
-    .el_i (t_el), .a_i (a_step), .b_i (b_step), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
+    .el_i (t_el), .a_i (a_step), .b_i (b_step), .ab_i (ab_step), .far_i (e_far),
+    .fneg_i (e_fneg), .xmax_i (c_xmax_q[0]), .ymax_i (c_ymax_q[0]),
     .x0_i (PB'(0)), .y0_i (PB'(0)), .valid_o (t_valid), .y_o (), .xb_o (t_xb), .xe_o (t_xe));
   /* verilator lint_on PINCONNECTEMPTY */
 
   // ---------------------------------------------------------------- L: job register, lanes
   logic l_full_q, l_tiny_q;
   logic [TB-1:0] l_tag_q;
-  logic [PB-1:0] l_x0_q, l_y0_q;
   logic [BB-1:0] l_xmax_q, l_ymax_q;
   logic [1:0] l_tvalid_q, l_tbegin_q, l_tend1_q;
   logic lane_load, hand_valid, hand_ready;
@@ -380,8 +417,6 @@ module trirast_improved2_top #(
   always_ff @(posedge clk_i) begin
     if (c_move) begin
       l_tag_q    <= c_tag_q;
-      l_x0_q     <= c_x0_q;
-      l_y0_q     <= c_y0_q;
       l_xmax_q   <= c_xmax_q;
       l_ymax_q   <= c_ymax_q;
       l_tiny_q   <= c_tiny;
@@ -398,6 +433,7 @@ module trirast_improved2_top #(
   logic [3*WB-1:0] hand_j_entry;
   logic [5:0] hand_entry_state;
   logic [3*XB-1:0] hand_entry_x;
+  logic [3*(BB+1)-1:0] hand_entry_b;
   // The three redesigned lanes as g2_lanes.sv connects them, except for the box: the lanes read
   // Xmax, Ymax from the cycle after the load on, and the job register L holds them (in the load
   // cycle L may still hold the job being handed off, whose entry X' reads its own Xmax); the
@@ -427,6 +463,7 @@ module trirast_improved2_top #(
       .d_o (hand_d[k*SB +: SB]), .qs_o (hand_qs[k*QB +: QB]), .rs_o (hand_rs[k*RB +: RB]),
       .ssat_o (hand_ssat[k]), .enters_o (hand_enters[k]), .j_entry_o (hand_j_entry[k*WB +: WB]),
       .entry_state_o (hand_entry_state[2*k +: 2]), .entry_x_o (hand_entry_x[k*XB +: XB]),
+      .entry_b_o (hand_entry_b[k*(BB+1) +: BB+1]),
       .entry_e_o (hand_entry_e[k*RB +: RB]));
     /* verilator lint_on PINCONNECTEMPTY */
   end
@@ -434,19 +471,47 @@ module trirast_improved2_top #(
   assign hand_valid = l_full_q && (l_tiny_q || (&lane_done));
 
   // ---------------------------------------------------------------- W: walk stage, FIFO
+  // The walk stage's tag and box: JobRing, read from a ring of the jobs' fields written at C's
+  // take (every job taken into C reaches the walk stage, in order; C, L and W hold at most three
+  // of them, so four words), from the cycle after the hand-off (the walk stage reads them from
+  // then on: HandHeld); else copied from L at the hand-off, with L's x0, y0 copied from C.
+  localparam int JW = TB + 2 * PB + 2 * BB;
+  logic [JW-1:0] w_job;
+  if (JobRing) begin : g_ring
+    trirast_job_ring #(.Bits (JW), .Words (4)) u_ring (
+      .clk_i (clk_i), .rst_ni (rst_ni), .we_i (b_take),
+      .d_i ({b_tag_q, b_fx_q, b_fy_q, b_xmax, b_ymax}), .next_i (hand_valid && hand_ready),
+      .q_o (w_job));
+    // The ring shows the job just handed off: the tag and box L held.
+    `ASSERT(JobRingInOrder_A, $past(hand_valid && hand_ready) |->
+            {w_job[JW-1 -: TB], w_job[2*BB-1:0]} == $past({l_tag_q, l_xmax_q, l_ymax_q}),
+            clk_i, !rst_ni)
+  end else begin : g_lcopy
+    logic [PB-1:0] l_x0_q, l_y0_q;
+    always_ff @(posedge clk_i) begin
+      if (c_move) begin
+        l_x0_q <= c_x0_q;
+        l_y0_q <= c_y0_q;
+      end
+    end
+    assign w_job = {l_tag_q, l_x0_q, l_y0_q, l_xmax_q, l_ymax_q};
+  end
   logic walk_busy;
   logic [TB+3*PB:0] span;
   trirast_walk_stage2 #(
-    .FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .NumEndpoints (NumEndpoints)
+    .FifoDepth (FifoDepth), .FifoRam (FifoRam), .WalkerCs (WalkerCs), .HandHeld (JobRing),
+    .NumEndpoints (NumEndpoints)
   ) u_walk (
     .clk_i (clk_i), .rst_ni (rst_ni),
     .hand_valid_i (hand_valid), .hand_ready_o (hand_ready),
-    .hand_tag_i (l_tag_q), .hand_x0_i (l_x0_q), .hand_y0_i (l_y0_q),
-    .hand_xmax_i (l_xmax_q), .hand_ymax_i (l_ymax_q),
+    .hand_tag_i (w_job[JW-1 -: TB]), .hand_x0_i (w_job[2*PB+2*BB-1 -: PB]),
+    .hand_y0_i (w_job[PB+2*BB-1 -: PB]), .hand_xmax_i (w_job[2*BB-1 -: BB]),
+    .hand_ymax_i (w_job[BB-1:0]),
     .hand_mirror_i (hand_mirror), .hand_dir_down_i (hand_dir_down),
     .hand_d_i (hand_d), .hand_qs_i (hand_qs), .hand_rs_i (hand_rs), .hand_ssat_i (hand_ssat),
     .hand_enters_i (hand_enters), .hand_j_entry_i (hand_j_entry),
     .hand_entry_state_i (hand_entry_state), .hand_entry_x_i (hand_entry_x),
+    .hand_entry_b_i (hand_entry_b),
     .hand_entry_e_i (hand_entry_e),
     .hand_tiny_i (l_tiny_q), .hand_tiny_valid_i (l_tvalid_q),
     .hand_tiny_begin_i (l_tbegin_q), .hand_tiny_end1_i (l_tend1_q),
@@ -492,6 +557,6 @@ module trirast_improved2_top #(
   `ASSERT_KNOWN(HandshakesKnown_A, {tri_ready_o, box_retire_o, handoff_o, busy_o}, clk_i, !rst_ni)
 
   logic unused;
-  assign unused = ^{tri_c_i, tri_a_i, tri_b_i, c_vx_q, c_vy_q};  // asserts, form 0
+  assign unused = ^{tri_c_i, tri_a_i, tri_b_i, c_vx_q, c_vy_q, c_x0_q, c_y0_q};  // asserts, form 0
 
 endmodule

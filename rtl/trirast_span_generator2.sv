@@ -1,9 +1,11 @@
 // The second-generation improved unit's span generator of one row (rtl/trirast_improved2.f), with
-// parallel compares. Takes the three walkers' restored bounds (trirast_edge_walker2 keeps them in
-// registers), computes the six ordered compares b_i < b_j at once and derives from them, in one
-// level of selection each: begin = max(0, mirrored bounds), end = min(Xmax + 1, other bounds),
-// and valid = no edge out and every mirrored bound < every other bound (= begin < end, since a
-// bound edge's bound lies in [0, Xmax + 1]).
+// parallel compares. Takes the three walkers' restored bounds minus one, b = bound - 1
+// (trirast_edge_walker2 keeps them in registers; a bound row's bound lies in [1, Xmax], so b in
+// [0, Xmax - 1]), computes the six ordered compares b_i < b_j at once and derives from them, in
+// one level of selection each: begin - 1 = max(-1, mirrored b), end - 1 = min(Xmax, other b),
+// and valid = no edge out and every mirrored b < every other b (= begin < end). The outputs are
+// begin - 1 (BoxBits + 1 bits, two's complement: -1 when no mirrored bound) and end - 1: the walk
+// stage adds x0 + 1 with one carry-in, and end needs no incrementer for its default Xmax + 1.
 module trirast_span_generator2 (
   input  logic [5:0]                          state_i,
   input  logic [3*(trirast_pkg::BoxBits+1)-1:0] bound_i,
@@ -36,10 +38,10 @@ module trirast_span_generator2 (
         lt[3*i + j] = (i != j) && (bound_i[i*B1 +: B1] < bound_i[j*B1 +: B1]);
       end
     end
-    // begin: the OR of the mirrored bounds that no other mirrored bound exceeds (ties select
-    // equal values, so the OR is still that value); end: likewise the smallest non-mirrored
-    // bound, or Xmax + 1 when there is none.
-    begin_o = '0;
+    // begin - 1: the AND of the mirrored b that no other mirrored b exceeds (ties select equal
+    // values, so the AND is still that value), all ones (-1) when there is none; end - 1: the OR
+    // of the smallest non-mirrored b likewise, or Xmax when there is none.
+    begin_o = '1;   // -1: begin 0
     e = '0;
     for (int i = 0; i < 3; i++) begin
       top = ism[i];
@@ -50,10 +52,10 @@ module trirast_span_generator2 (
           if (isn[j] && lt[3*j + i]) low = 1'b0;
         end
       end
-      if (top) begin_o = begin_o | bound_i[i*B1 +: B1];
+      if (top) begin_o = begin_o & bound_i[i*B1 +: B1];
       if (low) e = e | bound_i[i*B1 +: B1];
     end
-    end_o = (isn == 3'b000) ? B1'(xmax_i) + 1'b1 : e;
+    end_o = (isn == 3'b000) ? B1'(xmax_i) : e;
     ok = !out;
     for (int i = 0; i < 3; i++) begin
       for (int j = 0; j < 3; j++) begin

@@ -8,7 +8,8 @@
 // it ends after row 0 when row 1 is empty or outside the box (a job without spans takes one cycle).
 // The walkers load stale hand-off values for a tiny job; their outputs are not read.
 // Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
-// FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops;
+// FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops,
+// written from the push register's inputs a cycle ahead of the push (no push data register);
 // WalkerCs 0 gives the walkers trirast_edge_walker2's carry-in step (one X' and one bound adder
 // each).
 // NumEndpoints N (docs/timing.md, "The second-generation improved unit", W): each walk cycle
@@ -20,10 +21,14 @@
 // group is the one reaching past Ymax; its rows past Ymax push nothing. A tiny job's rows 0 and 1
 // are one group when n >= 2 (n = 1: as above, row 1 only when it has a span). FifoRam applies
 // to N = 1 only (the block RAM FIFO has one write port): with N > 1 the FIFO is in flip-flops.
+// HandHeld 1: the job's tag, x0, y0, Xmax and Ymax (hand_tag_i .. hand_ymax_i) are held outside
+// the stage from the cycle after the load until the next load (trirast_improved2_top's job ring),
+// and read from then on instead of being copied at the load.
 module trirast_walk_stage2 #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
   parameter bit FifoRam   = 1'b0,
   parameter bit WalkerCs  = 1'b1,
+  parameter bit HandHeld  = 1'b0,
   parameter int NumEndpoints = 1,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
@@ -46,6 +51,7 @@ module trirast_walk_stage2 #(
   input  logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_i,
   input  logic [5:0]                            hand_entry_state_i,
   input  logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_i,
+  input  logic [3*(trirast_pkg::BoxBits+1)-1:0] hand_entry_b_i,     // the bounds - 1
   input  logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_i,
   input  logic                                  hand_tiny_i,        // a tiny job (2x2 test)
   input  logic [1:0]                            hand_tiny_valid_i,  // row j has a span
@@ -82,6 +88,20 @@ module trirast_walk_stage2 #(
   logic [TB-1:0] tag_q;
   logic [PB-1:0] x0_q, y0_q;
   logic [BB-1:0] xmax_q, ymax_q;
+  if (HandHeld) begin : g_held
+    assign {tag_q, x0_q, y0_q, xmax_q, ymax_q} =
+        {hand_tag_i, hand_x0_i, hand_y0_i, hand_xmax_i, hand_ymax_i};
+  end else begin : g_copy
+    always_ff @(posedge clk_i) begin
+      if (load) begin
+        tag_q  <= hand_tag_i;
+        x0_q   <= hand_x0_i;
+        y0_q   <= hand_y0_i;
+        xmax_q <= hand_xmax_i;
+        ymax_q <= hand_ymax_i;
+      end
+    end
+  end
   logic [WB-1:0] row_q, row_d;
   logic [2:0] mirror;
   logic [3*2*NB-1:0] st;             // walker k, row r: [2*(k*NB + r) +: 2]
@@ -118,8 +138,8 @@ module trirast_walk_stage2 #(
       .j_entry_i     (hand_j_entry_i[k*WB +: WB]),
       .entry_state_i (hand_entry_state_i[2*k +: 2]),
       .entry_x_i     (hand_entry_x_i[k*XB +: XB]),
+      .entry_b_i     (hand_entry_b_i[k*(BB+1) +: BB+1]),
       .entry_e_i     (hand_entry_e_i[k*RB +: RB]),
-      .xmax_i        (hand_xmax_i),
       .adv_i         (go),
       .adv_rows_i    (n),
       .mirror_o      (mirror[k]),
@@ -130,7 +150,7 @@ module trirast_walk_stage2 #(
 
   // The registered push (up to n spans) and its credit.
   logic [NB-1:0] push_q, push_d;
-  logic [NB*EntryBits-1:0] data_q, data_d;
+  logic [NB*EntryBits-1:0] data_d;
   logic [CountBits-1:0] count;
   logic room;
   if (NB == 1) begin : g_room1
@@ -184,9 +204,16 @@ module trirast_walk_stage2 #(
     // Rows of the group inside the box (N = 1: the row always is).
     assign inbox = (NB == 1) || ((r < 32'(n)) && (row_r <= WB'(ymax_q)));
     assign push_d[r] = go && inbox && (tiny_q ? tv : gvalid);
-    assign data_d[r*EntryBits +: EntryBits] = tiny_q ?
-        {tag_q, y0_q + PB'(row_r), x0_q + PB'(tb), {1'b0, x0_q} + (PB + 1)'({te1, ~te1})} :
-        {tag_q, y0_q + PB'(row_r), x0_q + PB'(gbegin), {1'b0, x0_q} + (PB + 1)'(gend)};
+    // The span generator gives begin - 1 (two's complement) and end - 1, a tiny job begin and
+    // end - 1 (te1 + 0): x0 + that + 1 with the carry-in from the low bit of {.., 1} + {.., cin}.
+    logic [PB:0] xb_sum;
+    logic [PB+1:0] xe_sum;
+    assign xb_sum = {x0_q, 1'b1} + {tiny_q ? PB'(tb) : PB'($signed(gbegin)), !tiny_q};
+    assign xe_sum = {1'b0, x0_q, 1'b1} + {tiny_q ? (PB + 1)'(te1) : (PB + 1)'(gend), 1'b1};
+    assign data_d[r*EntryBits +: EntryBits] =
+        {tag_q, y0_q + PB'(row_r), xb_sum[PB:1], xe_sum[PB+1:1]};
+    logic unused_cin;
+    assign unused_cin = ^{xb_sum[0], xe_sum[0]};
   end
 
   always_comb begin
@@ -212,13 +239,7 @@ module trirast_walk_stage2 #(
   end
   always_ff @(posedge clk_i) begin
     row_q  <= row_d;
-    data_q <= data_d;
     if (load) begin
-      tag_q  <= hand_tag_i;
-      x0_q   <= hand_x0_i;
-      y0_q   <= hand_y0_i;
-      xmax_q <= hand_xmax_i;
-      ymax_q <= hand_ymax_i;
       tiny_q <= hand_tiny_i;
       tvalid_q <= hand_tiny_valid_i;
       tbegin_q <= hand_tiny_begin_i;
@@ -233,14 +254,19 @@ module trirast_walk_stage2 #(
     ) u_fifo (
       .clk_i   (clk_i),
       .rst_ni  (rst_ni),
+      .wr_i    (push_d[0]),
+      .wdata_i (data_d),
       .push_i  (push_q[0]),
-      .data_i  (data_q),
       .count_o (count),
       .valid_o (span_valid_o),
       .ready_i (span_ready_i),
       .data_o  (span_o)
     );
   end else begin : g_fifo_ff
+    logic [NB*EntryBits-1:0] data_q;   // the registered push's spans
+    always_ff @(posedge clk_i) begin
+      data_q <= data_d;
+    end
     trirast_span_fifo #(
       .NumEndpoints (NB),
       .FifoDepth    (FifoDepth),

@@ -110,8 +110,8 @@ DESIGNS=(
 "g2.corner_r4_lr|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=1|shift-add radix 4, E_L and E_R, ceil(bits/2) cycles"
 "g2.corner_r4_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=2,WithER=0|shift-add radix 4, E_L only, ceil(bits/2) cycles"
 "g2.corner_r16_l|g2_corner_digit|$S/g2_corner_digit.sv|DigitBits=4,WithER=0|digit-serial 25x4 (radix 16), E_L only, ceil(bits/4) cycles"
-"g2.corner_msb4|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
-"g2.corner_msb16|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
+"g2.corner_msb4|g2_corner_signmag|$S/g2_corner_signmag.sv|DigitBits=2|MSB-first radix 4, E_L only, 1 + ceil(bits/2) cycles, no shifted multiplicands"
+"g2.corner_msb16|g2_corner_signmag|$S/g2_corner_signmag.sv|DigitBits=4|MSB-first radix 16, E_L only, 1 + ceil(bits/4) cycles, no shifted multiplicands"
 "g2.corner_msb16p|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=0|MSB-first radix 16 pipelined: +-A, 3A, -+B, 3B registered at the start, s = A*digit + B*digit registered, E_L only, 1 + ceil(bits/4) + 1 cycles"
 "g2.corner_msb16p2|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegDigit=1|the same with the digit select registered too, 1 + ceil(bits/4) + 2 cycles"
 "g2.corner_msb16ps|g2_corner_msb16p|$S/g2_corner_msb16p.sv|RegStart=1|g2.corner_msb16p with the operand magnitudes, signs, A, B registered first (B2's registers in the unit), 1 + 1 + ceil(bits/4) + 1 cycles"
@@ -133,18 +133,18 @@ DESIGNS=(
 "g2.walk_fifo|g2_walk_slice|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $S/g2_walk_slice.sv||retimed walk stage + span FIFO (registered push, credit)"
 "g2.box2x2_w50|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=50|direct 2x2 box test, 50-bit corner values (any triangle), 1 cycle"
 "g2.box2x2_w26|trirast_direct_test_2x2|$R/trirast_direct_test_2x2.sv|W=26|direct 2x2 box test, 26-bit corner values (narrow path), 1 cycle"
-"g2.unit|trirast_improved2_top|$I2_SRCS|CornerForm=0,FifoRam=0,WalkerCs=1,SignFold=0,TestHi=0|whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
+"g2.unit|trirast_improved2_top|$I2_SRCS|CornerForm=0,FifoRam=0,WalkerCs=1,TestHi=0|whole gen2 unit prototype (N = 1, FIFO 8): box, E_L and E_R by DSP products, 2x2 test, 3 redesigned lanes, retimed walk + FIFO"
 "g2.unit_msb16|g2_unit_msb16|$I2_SRCS $S/g2_unit_msb16.sv||the same with the MSB-first radix-16 corner unit (E_L, then E_R for lane boxes), the iCE40 form"
 "g2.unit_xc7|trirast_improved2_top|$I2_SRCS|CornerForm=0,FifoRam=0,TestHi=1,WalkerCs=0|g2.unit (DSP corner) with the two iCE40 fit choices that apply to it: the 2x2 test on E_L >> F and the walkers' carry-in step (same spans and cycles)"
 "g2.unit_ice40|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv||g2.unit_msb16 with the iCE40 fit's build choices (same spans and cycles): span FIFO in block RAM (5 SB_RAM40_4K), walkers' carry-in step, corner signs on the multiplicands, 2x2 test on E_L >> F; no tri_c_i port|bram"
 "g2.unit_ice40_pre|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|LanePreIter=1|g2.unit_ice40 with the lanes' pre-iteration (trirast_edge_lane2 PreIter 1: one more cycle per division; highpoly-far 3.11 cycles per triangle, mixed 12.20)|bram"
 "g2.unit_ice40_ff|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|FifoRam=0|g2.unit_ice40 without FifoRam: the span FIFO in flip-flops (the wrapper's synthesis with -nobram)"
 "g2.unit_ice40_cs|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|WalkerCs=1|g2.unit_ice40 without WalkerCs 0: carry-select walkers with the entry copies|bram"
-"g2.unit_ice40_nosf|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|SignFold=0|g2.unit_ice40 without SignFold: the signs on the 50-bit partial products|bram"
 "g2.unit_ice40_notest|g2_unit_ice40|$I2_SRCS $S/g2_unit_ice40.sv|TestHi=0|g2.unit_ice40 without TestHi: the 2x2 test on the 50-bit E_L|bram"
 "g2.walk_ice40|trirast_walk_stage2|$R/trirast_edge_walker2.sv $R/trirast_span_generator2.sv $R/trirast_span_fifo.sv $R/trirast_span_fifo_ram.sv $R/trirast_walk_stage2.sv|FifoRam=1,WalkerCs=0|the whole unit's walk stage (trirast_walk_stage2: retimed walk, tiny jobs, registered push) with the fit's span FIFO in block RAM and the walkers' carry-in step|bram"
 "g2.walker_ci|trirast_edge_walker2|$R/trirast_edge_walker2.sv|CarrySelect=0|g2.walker_cs with the carry-in step (one X' and one bound adder, after the e sum's sign)"
-"g2.corner_msb16f|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
+"g2.corner_msb16f|g2_corner_signmag|$S/g2_corner_signmag.sv|DigitBits=4,SignFold=1|g2.corner_msb16 with the signs on the 25-bit multiplicands and the bias in the last digit's sum (1 + ceil(bits/4) cycles)"
+"g2.corner_sd16|trirast_corner_serial|$R/trirast_corner_serial.sv|DigitBits=4|rtl/'s corner unit: MSB-first radix 16 on signed-digit pairs (four terms of P or M a digit, one accumulator add; E from the accumulator by one subtraction), 1 + ceil(signed bits/4) cycles"
 "g2.span_fifo_ram|trirast_span_fifo_ram|$R/trirast_span_fifo_ram.sv|EntryBits=78|span FIFO, 8 entries, storage in block RAM (registered read, bypass register): the same cycles as g1.span_fifo|bram"
 )
 
@@ -387,7 +387,8 @@ if [ "$CHECK" = 1 ]; then
   # The MSB-first corner units on full-width vertices with the extremes, and
   # g2_corner_msb16p's cycle count (scripts/gen2_study/g2_corner_check_tb.sv).
   tb_build g2_corner_check_tb check_corner \
-    "$R/trirast_corner_serial.sv" "$S/g2_corner_msb16p.sv" "$S/g2_corner_check_tb.sv"
+    "$R/trirast_corner_serial.sv" "$S/g2_corner_signmag.sv" "$S/g2_corner_msb16p.sv" \
+    "$S/g2_corner_check_tb.sv"
   tb_run g2_corner_check_tb check_corner g2_corner_check_tb ""
   exit 0
 fi

@@ -130,22 +130,28 @@ TEST(Improved2Datapath, DirectTestIsTheFourCentreTests) {
   EXPECT_GT(spans, 1000u);
 }
 
-// The digit-serial corner unit's run length: digits of 4 bits of the largest operand magnitude of
-// v0 and v1 (edge 2 takes its operands from v0).
+// The digit-serial corner unit's run length: the fewest digits of 4 bits in which every operand of
+// v0 and v1 fits as a two's complement number (edge 2 takes its operands from v0).
 TEST(Improved2Datapath, CornerDigits) {
   RasterConfig cfg;  // S = 8: a pixel centre is x * 256 + 128
   TriangleSetup t{};
   for (auto& v : t.v) v = Vec2i{128, 128};
   CornerUnit c(cfg);
   EXPECT_EQ(c.digits(t, 0, 0), 1);  // all operands 0
-  EXPECT_EQ(c.digits(t, 0, 1), 3);  // 256: 9 bits
-  t.v[1] = Vec2i{128 + 15, 128};    // |dx| = 15: one digit
+  EXPECT_EQ(c.digits(t, 0, 1), 3);  // 256: 10 signed bits
+  t.v[1] = Vec2i{128 + 8, 128};     // dx = -8: one digit
   EXPECT_EQ(c.digits(t, 0, 0), 1);
-  t.v[1] = Vec2i{128 - 16, 128};  // |dx| = 16: two digits
+  t.v[1] = Vec2i{128 + 9, 128};  // dx = -9: two digits
+  EXPECT_EQ(c.digits(t, 0, 0), 2);
+  t.v[1] = Vec2i{128 - 7, 128};  // dx = 7: one digit
+  EXPECT_EQ(c.digits(t, 0, 0), 1);
+  t.v[1] = Vec2i{128 - 8, 128};  // dx = 8: two digits
   EXPECT_EQ(c.digits(t, 0, 0), 2);
   t.v[2] = Vec2i{128, 128 - (int64_t(1) << 23)};  // v2 is no operand
   EXPECT_EQ(c.digits(t, 0, 0), 2);
-  t.v[0] = Vec2i{128, 128 - (int64_t(1) << 23)};  // 2^23: 24 bits, 6 digits
+  t.v[0] = Vec2i{128, 128 - (int64_t(1) << 23)};  // 2^23: 25 signed bits, 7 digits
+  EXPECT_EQ(c.digits(t, 0, 0), 7);
+  t.v[0] = Vec2i{128, 128 + (int64_t(1) << 23)};  // -2^23: 24 signed bits, 6 digits
   EXPECT_EQ(c.digits(t, 0, 0), 6);
   EXPECT_EQ(CornerUnit::operand_vertex(0), 0);
   EXPECT_EQ(CornerUnit::operand_vertex(1), 1);

@@ -18,14 +18,15 @@ int64_t CornerUnit::corner_value(const TriangleSetup& t, int k, int64_t x0, int6
 }
 
 int CornerUnit::digits(const TriangleSetup& t, int64_t x0, int64_t y0) const {
+  // d fits in m signed bits exactly when d (d >= 0) or ~d (d < 0) has at most m - 1 bits.
   uint64_t any = 0;
   for (int v = 0; v < 2; ++v) {  // the operands of v0 and v1 (operand_vertex)
     const int64_t dx = pixel_centre(x0, cfg_) - t.v[v].x;
     const int64_t dy = pixel_centre(y0, cfg_) - t.v[v].y;
-    any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
+    any |= uint64_t(dx < 0 ? ~dx : dx) | uint64_t(dy < 0 ? ~dy : dy);
   }
-  const int bits = unsigned_bits(any);
-  return std::max(1, (bits + kDigitBits - 1) / kDigitBits);
+  const int bits = unsigned_bits(any) + 1;  // the sign bit
+  return (bits + kDigitBits - 1) / kDigitBits;
 }
 
 void CornerUnit::run(const TriangleSetup& t, InterfaceOut& box, const InterfaceOut& gen1) const {

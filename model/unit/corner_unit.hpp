@@ -3,7 +3,8 @@
 // E vanishes at the edge's own vertex vx, vy), and E_R = E_L + Xmax*a. The same values as gen1's
 // interface (E(c) + bias, unit/interface.hpp); the hardware forms them either as DSP products in
 // one cycle or digit-serially, MSB first, 4 operand bits per cycle
-// (rtl/trirast_corner_serial.sv, DigitBits 4), whose run length is digits().
+// (rtl/trirast_corner_serial.sv, DigitBits 4: signed-digit pairs of two's complement operands),
+// whose run length is digits().
 #pragma once
 #include <cstdint>
 
@@ -18,9 +19,10 @@ class CornerUnit {
   explicit CornerUnit(const RasterConfig& cfg);
   // E_L of edge k at the pixel centre of (x0, y0), relative to the edge's operand_vertex(k).
   int64_t corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const;
-  // The digit-serial unit's run length at (x0, y0): the digits of 4 bits of the largest operand
-  // magnitude |cx0 - vx|, |cy0 - vy| of v0 and v1, at least 1 (trirast_corner_serial's counter;
-  // edges 0 and 2 take their operands from v0, which lies on both, edge 1 from v1).
+  // The digit-serial unit's run length at (x0, y0): the fewest digits of 4 bits in which every
+  // operand cx0 - vx, cy0 - vy of v0 and v1 fits as a two's complement number (its sign bit
+  // included; at least 1): trirast_corner_serial's counter. Edges 0 and 2 take their operands
+  // from v0, which lies on both, edge 1 from v1.
   int digits(const TriangleSetup& t, int64_t x0, int64_t y0) const;
   // Fills E_L and E_R of every edge of `box` (its a, b, x0, y0, Xmax already set) and checks them
   // against gen1's (`gen1`): a difference is a model bug (std::logic_error).

@@ -22,6 +22,7 @@ module g2_check_tb;
   // ---------------- corner values ----------------
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic [BB-1:0] xmax;
@@ -34,10 +35,10 @@ module g2_check_tb;
     .x1_i (x0), .x1sel_i (3'b000),
     .y0_i (y0), .el_o (mul_el));
   trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
-    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym4), .el_o (m4_el));
   trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
-    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
+    .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym16), .el_o (m16_el));
   g2_corner_narrow #(.NarrowBits (13)) u_narrow (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b),
     .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i (xmax), .fits_o (fits), .el_o (n_el), .er_o (n_er));
@@ -61,6 +62,9 @@ module g2_check_tb;
   // ... and X' as the leave offset o: X' - Xmax (dir +), -X' - 1 (dir -).
   logic signed [XB-1:0] eo;
   assign eo = dir ? ex - XB'(xmax) : -ex - 1'b1;
+  // ... and the entry row's span bound - 1: Xmax - X' - 1 (mirrored), X' (not).
+  logic [BB:0] eb;
+  assign eb = mirror ? (BB + 1)'(XB'(xmax) - ex - 1'b1) : (BB + 1)'(ex);
   logic [WB-1:0] je, row;
   logic [1:0] est, st1, st2, st3;
   logic signed [XB-1:0] ex, x1;
@@ -73,13 +77,13 @@ module g2_check_tb;
     .row_state_o (st1), .row_x_o (x1));
   trirast_edge_walker2 u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
     .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
-    .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef), .xmax_i (xmax),
+    .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef), .entry_b_i (eb),
     .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
   // The iCE40 fit's walker (carry-in step, no entry copies): the same rows.
   trirast_edge_walker2 #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef),
-    .xmax_i (xmax), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
+    .entry_b_i (eb), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
 
   // ---------------- span generators ----------------
   logic [5:0] gst;
@@ -87,30 +91,33 @@ module g2_check_tb;
   logic [3*(BB+1)-1:0] gb;
   logic [2:0] gm;
   logic v1, v2;
-  logic [BB:0] b1, e1, b2, e2;
+  logic [BB:0] b1, e1, b2, e2;   // gen2's: begin - 1, end - 1 (its bounds are gen1's - 1)
   trirast_span_generator u_g1 (.state_i (gst), .x_i (gx), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v1), .begin_o (b1), .end_o (e1));
   trirast_span_generator2 u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v2), .begin_o (b2), .end_o (e2));
 
   // ---------------- 2x2 direct test ----------------
-  logic [3*EB-1:0] t_el, t_a, t_b;
+  logic [3*EB-1:0] t_el, t_a, t_b, t_ab;
   logic t_xm, t_ym;
   logic [1:0] t_valid;
   logic [2*PB-1:0] t_y, t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   int tiny_spans = 0;
-  trirast_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .xmax_i (t_xm), .ymax_i (t_ym),
+  trirast_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .ab_i (t_ab), .far_i (3'b000),
+    .fneg_i (3'b000), .xmax_i (t_xm), .ymax_i (t_ym),
     .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
   // The unit's form (TestHi): E_L >> F in EB - F bits, A and B in CB bits, the sums' signs from
   // CB + 2 bits (SW); checked on the trials whose values fit it.
   localparam int TW = EB - F;
-  logic [3*TW-1:0] s_el, s_a, s_b;
+  logic [3*TW-1:0] s_el, s_a, s_b, s_ab;
   logic [1:0] s_valid;
   logic [2*PB-1:0] s_y, s_xb;
   logic [2*(PB+1)-1:0] s_xe;
   int split_boxes = 0;
-  trirast_direct_test_2x2 #(.W (TW), .SW (CB)) u_boxs (.el_i (s_el), .a_i (s_a), .b_i (s_b),
+  logic [2:0] s_far, s_fneg;   // E_L outside [-2^(CB+2), 2^(CB+2)), as the unit's corner unit says
+  trirast_direct_test_2x2 #(.W (TW), .SW (CB)) u_boxs (.el_i (s_el), .a_i (s_a), .b_i (s_b), .ab_i (s_ab),
+    .far_i (s_far), .fneg_i (s_fneg),
     .xmax_i (t_xm), .ymax_i (t_ym), .x0_i (x0), .y0_i (y0), .valid_o (s_valid), .y_o (s_y),
     .xb_o (s_xb), .xe_o (s_xe));
 
@@ -170,6 +177,12 @@ module g2_check_tb;
     t_el = el_v;
     t_a = a_v;
     t_b = b_v;
+    for (int k = 0; k < 3; k++) begin
+      s_far[k] = e[k] < -(longint'(1) <<< (CB + 2)) || e[k] >= (longint'(1) <<< (CB + 2));
+      s_fneg[k] = e[k] < 0;
+      s_ab[k*TW +: TW] = TW'(av[k] + bv[k]);
+      t_ab[k*EB +: EB] = EB'(av[k] + bv[k]);
+    end
     t_xm = 1'($urandom);
     t_ym = 1'($urandom);
     x0 = PB'($urandom % 1000);
@@ -228,6 +241,7 @@ module g2_check_tb;
       bx = sx(64'(vx[((k+1)%3)*P +: P]), P);  by = sx(64'(vy[((k+1)%3)*P +: P]), P);
       a[k*CB +: CB] = CB'(ay - by);
       b[k*CB +: CB] = CB'(bx - ax);
+      p[k*(CB+1) +: CB+1] = (CB+1)'((ay - by) + (bx - ax));
     end
     bias = 3'($urandom);
     // The box near the vertices (its centres inside their extent when ext is small).
@@ -290,7 +304,7 @@ module g2_check_tb;
     @(negedge clk); load = 1; @(negedge clk); load = 0;
     for (int j = 0; j < rows; j++) begin
       logic [BB:0] want;
-      want = m1 ? (BB + 1)'(32'(xmax) - 32'(x1)) : (BB + 1)'(x1 + 1'b1);
+      want = m1 ? (BB + 1)'(32'(xmax) - 32'(x1) - 1) : (BB + 1)'(x1);   // the bound - 1
       if (st1 != st2 || (st1 == trirast_pkg::RowBound && want != bnd2) ||
           st1 != st3 || (st1 == trirast_pkg::RowBound && want != bnd3)) begin
         errors++;
@@ -302,18 +316,19 @@ module g2_check_tb;
   endtask
 
   task automatic span_trial();
-    xmax = BB'($urandom % 40);
+    // a bound row's X' lies in [0, Xmax) (the walker leaves at X' >= Xmax or X' < 0), so Xmax >= 1
+    xmax = BB'(1 + $urandom % 40);
     for (int k = 0; k < 3; k++) begin
       logic signed [XB-1:0] x;
       gst[2*k +: 2] = ($urandom % 8 == 0) ? trirast_pkg::RowOut : (($urandom % 4 == 0) ? trirast_pkg::RowClear : trirast_pkg::RowBound);
-      x = XB'($urandom % (32'(xmax) + 1));
+      x = XB'($urandom % 32'(xmax));
       gm[k] = 1'($urandom);
       gx[k*XB +: XB] = x;
-      gb[k*(BB+1) +: BB+1] = gm[k] ? (BB + 1)'(32'(xmax) - 32'(x)) : (BB + 1)'(x + 1'b1);
+      gb[k*(BB+1) +: BB+1] = gm[k] ? (BB + 1)'(32'(xmax) - 32'(x) - 1) : (BB + 1)'(x);
     end
     #1;
     if (v1) spans_valid++;
-    if (v1 != v2 || (v1 && (b1 != b2 || e1 != e2))) begin
+    if (v1 != v2 || (v1 && (b1 != b2 + 1'b1 || e1 != e2 + 1'b1))) begin
       errors++;
       if (errors < 10) $display("span gen: gen1 %0d [%0d,%0d) gen2 %0d [%0d,%0d)", v1, b1, e1, v2, b2, e2);
     end

@@ -1,5 +1,7 @@
-// gen2 study: a random cross-check of the MSB-first corner-value prototypes (trirast_corner_serial radix
-// 4 and 16, radix 16 with SignFold, g2_corner_msb16p alone, with the digit register and with the start registers) against the formula
+// gen2 study: a random cross-check of the MSB-first corner-value prototypes (g2_corner_signmag radix
+// 4 and 16, radix 16 with SignFold and RegMult, g2_corner_msb16p alone, with the digit register and
+// with the start registers) and of the unit's signed-digit corner unit (rtl/trirast_corner_serial,
+// radix 4 and 16) against the formula
 // E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
 // (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
 // of a triangle near the box), the vertices here are drawn over the full widths and include the
@@ -8,7 +10,9 @@
 // trirast_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box corners 0
 // and 2^PB - 1. It also checks g2_corner_msb16p's cycle count: busy for
 // max(1, ceil(bits / 4)) + Depth cycles after the start, bits = the largest bit length of the six
-// magnitudes |cx0 - vx|, |cy0 - vy|. Not part of the test suite.
+// magnitudes |cx0 - vx|, |cy0 - vy|; and trirast_corner_serial's (radix 16): busy for the fewest
+// digits of 4 bits in which v0's and v1's operands fit as two's complement numbers. Not part of
+// the test suite.
 module g2_corner_check_tb;
   localparam int P = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
@@ -23,23 +27,32 @@ module g2_corner_check_tb;
 
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic start;
-  logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_p0, busy_p1, busy_ps;
-  logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_p0, el_p1, el_ps;
+  logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_p0, busy_p1, busy_ps, busy_sd4, busy_sd16;
+  logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_p0, el_p1, el_ps, el_sd4, el_sd16;
 
-  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  // The unit's corner unit: signed-digit pairs (rtl/trirast_corner_serial.sv).
+  trirast_corner_serial #(.DigitBits (2)) u_sd4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
+    .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd4), .el_o (el_sd4));
+  trirast_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+    .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
+    .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd16), .el_o (el_sd16));
+
+  g2_corner_signmag #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busy_m4), .el_o (el_m4));
-  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  g2_corner_signmag #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busy_m16), .el_o (el_m16));
-  trirast_corner_serial #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
+  g2_corner_signmag #(.DigitBits (4), .SignFold (1)) u_m16s (.clk_i (clk), .rst_ni (rst_n),
     .start_i (start), .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .y0_i (y0), .xmax_i ('0), .busy_o (busy_m16s), .el_o (el_m16s));
   // The unit's form: SignFold with the registered multiplicands.
-  trirast_corner_serial #(.DigitBits (4), .SignFold (1), .RegMult (1)) u_m16r (.clk_i (clk),
+  g2_corner_signmag #(.DigitBits (4), .SignFold (1), .RegMult (1)) u_m16r (.clk_i (clk),
     .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a),
     .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_m16r), .el_o (el_m16r));
   g2_corner_msb16p #(.RegDigit (0)) u_p0 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
@@ -79,7 +92,8 @@ module g2_corner_check_tb;
 
   task automatic trial();
     longint cx0, cy0, want, mag, got;
-    int bits, digits, cyc, depth_seen0, depth_seen1, depth_seens;
+    longint mag_sd [2];
+    int bits, digits, sdigits, cyc, depth_seen0, depth_seen1, depth_seens, depth_seensd;
     bit ext;
     unique case ($urandom % 4)
       0: x0 = '0;
@@ -107,9 +121,19 @@ module g2_corner_check_tb;
       if (mag < 0) mag = -mag;
       if (bitlen(mag) > bits) bits = bitlen(mag);
     end
+    // The signed-digit unit's digits: v0's and v1's operands, two's complement.
+    sdigits = 1;
+    for (int k = 0; k < 2; k++) begin
+      foreach (mag_sd[i]) begin
+        mag_sd[i] = (i == 0) ? cx0 - sx(64'(vx[k*P +: P]), P) : cy0 - sx(64'(vy[k*P +: P]), P);
+        while (mag_sd[i] < -(longint'(1) << (4 * sdigits - 1)) ||
+               mag_sd[i] >= (longint'(1) << (4 * sdigits - 1))) sdigits++;
+      end
+    end
     for (int k = 0; k < 3; k++) begin   // the vertices' edge coefficients
       a[k*CB +: CB] = CB'(sx(64'(vy[k*P +: P]), P) - sx(64'(vy[((k + 1) % 3)*P +: P]), P));
       b[k*CB +: CB] = CB'(sx(64'(vx[((k + 1) % 3)*P +: P]), P) - sx(64'(vx[k*P +: P]), P));
+      p[k*(CB+1) +: CB+1] = (CB+1)'(sx(64'(a[k*CB +: CB]), CB) + sx(64'(b[k*CB +: CB]), CB));
     end
     if (ext) extremes++;
     bias = 3'($urandom);
@@ -120,14 +144,23 @@ module g2_corner_check_tb;
     depth_seen0 = -1;
     depth_seen1 = -1;
     depth_seens = -1;
-    while ((busy_m4 || busy_m16 || busy_m16s || busy_m16r || busy_p0 || busy_p1 || busy_ps) && cyc < 100) begin
+    depth_seensd = -1;
+    while ((busy_m4 || busy_m16 || busy_m16s || busy_m16r || busy_p0 || busy_p1 || busy_ps ||
+            busy_sd4 || busy_sd16) && cyc < 100) begin
       @(negedge clk);
       cyc++;
+      if (!busy_sd16 && depth_seensd < 0) depth_seensd = cyc;
       if (!busy_p0 && depth_seen0 < 0) depth_seen0 = cyc;
       if (!busy_p1 && depth_seen1 < 0) depth_seen1 = cyc;
       if (!busy_ps && depth_seens < 0) depth_seens = cyc;
     end
     if (depth_seens < 0) depth_seens = cyc;
+    if (depth_seensd < 0) depth_seensd = cyc;
+    if (depth_seensd != sdigits) begin
+      errors++;
+      if (errors < 10) $display("cycles: signed-digit unit busy %0d cycles, want %0d", depth_seensd,
+                                sdigits);
+    end
     if (depth_seen0 < 0) depth_seen0 = cyc;
     if (depth_seen1 < 0) depth_seen1 = cyc;
     // busy_o was high for depth_seen cycles after the start cycle.
@@ -147,13 +180,15 @@ module g2_corner_check_tb;
           sx(64'(el_m16s[k*EB +: EB]), EB) != want ||
           sx(64'(el_m16r[k*EB +: EB]), EB) != want ||
           sx(64'(el_p0[k*EB +: EB]), EB) != want || sx(64'(el_p1[k*EB +: EB]), EB) != want ||
-          sx(64'(el_ps[k*EB +: EB]), EB) != want) begin
+          sx(64'(el_ps[k*EB +: EB]), EB) != want ||
+          sx(64'(el_sd4[k*EB +: EB]), EB) != want || sx(64'(el_sd16[k*EB +: EB]), EB) != want) begin
         errors++;
-        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16 SignFold %0d (RegMult %0d) msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d, want %0d",
+        if (errors < 10) $display("edge %0d (A %0d B %0d dxL %0d dy %0d bias %0d): msb4 %0d msb16 %0d msb16 SignFold %0d (RegMult %0d) msb16p %0d msb16p+digit reg %0d msb16p+start reg %0d signed-digit radix 4 %0d radix 16 %0d, want %0d",
           k, A, B, cx0 - vxk, cy0 - vyk, bias[k], sx(64'(el_m4[k*EB +: EB]), EB),
           sx(64'(el_m16[k*EB +: EB]), EB), sx(64'(el_m16s[k*EB +: EB]), EB),
           sx(64'(el_m16r[k*EB +: EB]), EB), sx(64'(el_p0[k*EB +: EB]), EB),
-          sx(64'(el_p1[k*EB +: EB]), EB), sx(64'(el_ps[k*EB +: EB]), EB), want);
+          sx(64'(el_p1[k*EB +: EB]), EB), sx(64'(el_ps[k*EB +: EB]), EB),
+          sx(64'(el_sd4[k*EB +: EB]), EB), sx(64'(el_sd16[k*EB +: EB]), EB), want);
       end
     end
   endtask

@@ -1,8 +1,11 @@
 // gen2 study (scripts/gen2_study.sh --check): trirast_span_fifo_ram (block-RAM storage, registered read,
-// bypass) against rtl/trirast_span_fifo.sv (NumEndpoints 1) at depths 2, 4, 8, 16 and 32, on the same
-// random pushes (only when count < depth, as the walk stage admits them) and sink readiness, with
-// phases of mostly pushing, mostly popping and both. Every cycle count_o and valid_o must be equal,
-// and data_o whenever valid_o. Prints "g2_fifo_check_tb: N errors".
+// written a cycle ahead of the push) against rtl/trirast_span_fifo.sv (NumEndpoints 1) at depths 2,
+// 4, 8, 16 and 32, on the same random pushes and sink readiness, with phases of mostly pushing,
+// mostly popping and both. As the walk stage, the bench decides a push a cycle ahead, when count +
+// (the push registered now) < depth, writes its span into the block-RAM FIFO then (wr_i, wdata_i)
+// and registers push and span for both FIFOs' push_i (and the reference's data_i). Every cycle
+// count_o and valid_o must be equal, and data_o whenever valid_o. Prints "g2_fifo_check_tb: N
+// errors".
 module g2_fifo_check_tb;
   localparam int EB = 24;
   localparam int Cycles = 40000;
@@ -12,17 +15,21 @@ module g2_fifo_check_tb;
   for (genvar g = 1; g < 6; g++) begin : g_depth
     localparam int D = 1 << g;
     localparam int CB = $clog2(D + 1);
-    logic push, ready, v1, v2;
-    logic [EB-1:0] din, d1, d2;
+    logic push, wr, ready, v1, v2;
+    logic [EB-1:0] din, wdata, d1, d2;
     logic [CB-1:0] c1, c2;
     trirast_span_fifo #(.NumEndpoints (1), .FifoDepth (D), .EntryBits (EB)) u_ref (
       .clk_i (clk), .rst_ni (rst_n), .push_i (push), .data_i (din), .count_o (c1),
       .valid_o (v1), .ready_i (ready), .data_o (d1));
     trirast_span_fifo_ram #(.FifoDepth (D), .EntryBits (EB)) u_ram (
-      .clk_i (clk), .rst_ni (rst_n), .push_i (push), .data_i (din), .count_o (c2),
-      .valid_o (v2), .ready_i (ready), .data_o (d2));
+      .clk_i (clk), .rst_ni (rst_n), .wr_i (wr), .wdata_i (wdata), .push_i (push),
+      .count_o (c2), .valid_o (v2), .ready_i (ready), .data_o (d2));
+    always_ff @(posedge clk) begin   // the walk stage's registered push
+      push <= rst_n && wr;
+      din  <= wdata;
+    end
     initial begin
-      push = 1'b0;  ready = 1'b0;  din = '0;
+      wr = 1'b0;  ready = 1'b0;  wdata = '0;
       @(posedge rst_n);
       for (int t = 0; t < Cycles; t++) begin
         int pp, pr;
@@ -33,9 +40,9 @@ module g2_fifo_check_tb;
           default: begin pp = 60; pr = 60; end
         endcase
         @(negedge clk);
-        push  = (32'(c1) < D) && ($urandom % 100 < pp);
+        wr    = (32'(c1) + 32'(push) < D) && ($urandom % 100 < pp);
         ready = $urandom % 100 < pr;
-        din   = EB'($urandom);
+        wdata = EB'($urandom);
         #1;
         if (c1 != c2 || v1 != v2 || (v1 && d1 != d2)) begin
           errors++;

@@ -26,7 +26,7 @@ module g2_unit_msb16 (
   output logic                                  busy_o
 );
   trirast_improved2_top #(
-    .CornerForm (1), .FifoRam (1'b0), .WalkerCs (1'b1), .SignFold (1'b0), .TestHi (1'b0)
+    .CornerForm (1), .FifoRam (1'b0), .WalkerCs (1'b1), .TestHi (1'b0)
   ) u_unit (
     .clk_i, .rst_ni, .cfg_vp_xmax_i, .cfg_vp_ymax_i, .cfg_fifo_depth_i (4'd8), .tri_valid_i, .tri_ready_o, .tri_tag_i,
     .tri_vx_i, .tri_vy_i, .tri_a_i, .tri_b_i, .tri_c_i, .tri_bias_i, .span_valid_o,

@@ -48,14 +48,19 @@ module g2_walk_check_tb;
   logic ready_pattern;       // the sinks' ready this cycle (both)
   bundle_t h1, h2;
   // gen2's walkers take the error term as f: e for dir +, D - 1 - e for dir - (the lane's r).
-  // ... and X' as the leave offset o: X' - Xmax (dir +), -X' - 1 (dir -).
+  // ... and X' as the leave offset o: X' - Xmax (dir +), -X' - 1 (dir -), and the entry row's
+  // span bound - 1: Xmax - X' - 1 (mirrored), X' (not).
   logic [3*RB-1:0] h2_f;
   logic [3*XB-1:0] h2_o;
+  logic [3*(BB+1)-1:0] h2_b;
   for (genvar e = 0; e < 3; e++) begin : g_f
     assign h2_f[e*RB +: RB] = h2.dir_down[e] ? h2.entry_e[e*RB +: RB]
                                              : RB'(h2.d[e*SB +: SB]) - 1'b1 - h2.entry_e[e*RB +: RB];
     assign h2_o[e*XB +: XB] = h2.dir_down[e] ? h2.entry_x[e*XB +: XB] - XB'(h2.xmax)
                                              : -h2.entry_x[e*XB +: XB] - 1'b1;
+    assign h2_b[e*(BB+1) +: BB+1] = h2.mirror[e]
+        ? (BB + 1)'(XB'(h2.xmax) - h2.entry_x[e*XB +: XB] - 1'b1)
+        : (BB + 1)'(h2.entry_x[e*XB +: XB]);
   end
   logic v1, v2, r1, r2;
 
@@ -94,7 +99,7 @@ module g2_walk_check_tb;
     .hand_ymax_i (h2.ymax), .hand_mirror_i (h2.mirror), .hand_dir_down_i (h2.dir_down),
     .hand_d_i (h2.d), .hand_qs_i (h2.qs), .hand_rs_i (h2.rs), .hand_ssat_i (h2.ssat),
     .hand_enters_i (h2.enters), .hand_j_entry_i (h2.j_entry),
-    .hand_entry_state_i (h2.entry_state), .hand_entry_x_i (h2_o),
+    .hand_entry_state_i (h2.entry_state), .hand_entry_x_i (h2_o), .hand_entry_b_i (h2_b),
     .hand_entry_e_i (h2_f), .span_ready_i (ready_pattern), .span_valid_o (sv2),
     .span_o (sdata2), .busy_o (busy2));
 
@@ -148,9 +153,10 @@ module g2_walk_check_tb;
       b.dir_down[e] = dir;
       b.enters[e] = ($urandom % 8) != 0;
       b.j_entry[e*WB +: WB] = WB'($urandom % 6);
-      b.entry_state[2*e +: 2] = ($urandom % 4 == 0)
+      // A bound entry row has X' in [0, Xmax) (a lane's entry test; so Xmax >= 1).
+      b.entry_state[2*e +: 2] = ($urandom % 4 == 0 || b.xmax == '0)
           ? (dir ? trirast_pkg::RowClear : trirast_pkg::RowOut) : trirast_pkg::RowBound;
-      b.entry_x[e*XB +: XB] = XB'($urandom % (32'(b.xmax) + 1));
+      b.entry_x[e*XB +: XB] = XB'($urandom % ((b.xmax == '0) ? 1 : 32'(b.xmax)));
     end
     return b;
   endfunction

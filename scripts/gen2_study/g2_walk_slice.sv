@@ -27,6 +27,7 @@ module g2_walk_slice #(
   input  logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_i,
   input  logic [5:0]                            hand_entry_state_i,
   input  logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_i,
+  input  logic [3*(trirast_pkg::BoxBits+1)-1:0] hand_entry_b_i,   // the walkers' bounds - 1
   input  logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_i,
   input  logic                                  span_ready_i,
   output logic                                  span_valid_o,
@@ -70,8 +71,8 @@ module g2_walk_slice #(
       .j_entry_i     (hand_j_entry_i[k*WB +: WB]),
       .entry_state_i (hand_entry_state_i[2*k +: 2]),
       .entry_x_i     (hand_entry_x_i[k*XB +: XB]),
+      .entry_b_i     (hand_entry_b_i[k*(BB+1) +: BB+1]),
       .entry_e_i     (hand_entry_e_i[k*RB +: RB]),
-      .xmax_i        (hand_xmax_i),
       .adv_i         (go),
       .mirror_o      (mirror[k]),
       .row_state_o   (st[2*k +: 2]),
@@ -98,7 +99,9 @@ module g2_walk_slice #(
   assign go   = walk_q && (32'(count) + 32'(push_q) + 1 <= FifoDepth);
   assign last = go && (row_q == WB'(ymax_q));
   assign push_d = go && gvalid;
-  assign data_d = {tag_q, y0_q + PB'(row_q), x0_q + PB'(gbegin), {1'b0, x0_q} + (PB + 1)'(gend)};
+  // the span generator gives begin - 1 (two's complement) and end - 1
+  assign data_d = {tag_q, y0_q + PB'(row_q), x0_q + PB'($signed(gbegin)) + 1'b1,
+                   {1'b0, x0_q} + (PB + 1)'(gend) + 1'b1};
 
   always_comb begin
     walk_d = walk_q;

@@ -138,16 +138,19 @@ TEST(ScImproved2, WalkTakesOneCyclePerGroupOfNRows) {
   }
 }
 
-// docs/timing.md's d, read independently of CornerUnit: max(1, ceil(bits / 4)), bits the bit
-// length of the largest |cx - vx|, |cy - vy| of the vertices v0 and v1 at the run's corner.
+// docs/timing.md's d, read independently of CornerUnit: the fewest digits of 4 bits (at least 1)
+// in which each of cx - vx, cy - vy of the vertices v0 and v1 at the run's corner fits as a two's
+// complement number, -2^(4d - 1) <= value < 2^(4d - 1).
 static uint64_t contract_digits(const TriangleSetup& t, int64_t x0, int64_t y0,
                                 const RasterConfig& cfg) {
-  uint64_t any = 0;
+  uint64_t d = 1;
   for (int v = 0; v < 2; ++v) {
-    const int64_t dx = pixel_centre(x0, cfg) - t.v[v].x, dy = pixel_centre(y0, cfg) - t.v[v].y;
-    any |= uint64_t(dx < 0 ? -dx : dx) | uint64_t(dy < 0 ? -dy : dy);
+    for (const int64_t value :
+         {pixel_centre(x0, cfg) - t.v[v].x, pixel_centre(y0, cfg) - t.v[v].y}) {
+      while (value < -(int64_t(1) << (4 * d - 1)) || value >= (int64_t(1) << (4 * d - 1))) ++d;
+    }
   }
-  return std::max<uint64_t>(1, (uint64_t(unsigned_bits(any)) + 3) / 4);
+  return d;
 }
 
 // The model against an independent cycle-by-cycle reading of docs/timing.md "The
