@@ -73,8 +73,9 @@ Where the cycles went: the second generation's set-up is a pipeline (box, corner
 each holding its own triangle), so the next triangle's box and corner values are formed while the
 lanes and the walk stage work; a box of at most 2 x 2 pixel centres skips the lanes (a direct test
 of its centres from the corner values), and an empty box retires in the box stage. High-poly far
-(0.54 pixels per triangle) is where this matters most; its radix-16 corner values (\`ceil(bits /
-4)\` cycles for E_L) bound that scene at 3.1 cycles per triangle, against 1.9 with multipliers.
+(0.54 pixels per triangle) is where this matters most; its radix-16 corner values (a cycle for
+each 4-bit digit of the operands, signed, for E_L: docs/timing.md's \`d\`) bound that scene, as its
+two cycles-per-triangle columns show (radix 16 against DSP products).
 DOC
 mv "$tmp" "$out"
 echo "cycles_table: wrote $out"

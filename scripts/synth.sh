@@ -667,8 +667,12 @@ OUT="$ROOT/docs/synth.md"
     echo "not measured in this run (see the table)."
   fi
   [ -n "$f_fit" ] && echo "The whole unit placed as one design at the $FIT_CONFIG configuration reaches **$f_fit MHz**."
-  f_fit2=$(pnr_fmax "improved2.$FIT_CONFIG")
-  [ -n "$f_fit2" ] && echo "The second-generation unit's whole unit (iCE40 form) at the $FIT_CONFIG configuration reaches **$f_fit2 MHz**; at the default configuration it $(pnr_status improved2.default) ($(pnr_lc improved2.default) logic cells)."
+  f_fit2=$(pnr_fmax "improved2.$FIT_CONFIG"); f_def2=$(pnr_fmax improved2.default)
+  if [ -n "$f_def2" ]; then
+    echo "The second-generation unit's whole unit (iCE40 form) at the default configuration is placed and routed on the HX8K: **$f_def2 MHz** ($(pnr_lc improved2.default) logic cells)${f_fit2:+; at the $FIT_CONFIG configuration **$f_fit2 MHz**}."
+  elif [ -n "$f_fit2" ]; then
+    echo "The second-generation unit's whole unit (iCE40 form) at the $FIT_CONFIG configuration reaches **$f_fit2 MHz**; at the default configuration it $(pnr_status improved2.default) ($(pnr_lc improved2.default) logic cells)."
+  fi
   echo
   if [ -n "$HS_UNITS" ]; then
     echo "### The half-space unit"

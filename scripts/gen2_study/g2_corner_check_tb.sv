@@ -40,7 +40,10 @@ module g2_corner_check_tb;
     .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd4), .el_o (el_sd4));
   trirast_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
-    .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd16), .el_o (el_sd16));
+    .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd16), .el_o (el_sd16),
+    .far_o (far_sd16), .fneg_o (fneg_sd16));
+  logic [2:0] far_sd16, fneg_sd16;   // E far from 0 (the 2x2 test's far_i): checked below
+  int far_seen = 0, near_seen = 0;
 
   g2_corner_signmag #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0), .y0_i (y0),
@@ -176,6 +179,19 @@ module g2_corner_check_tb;
       if (A == 0 || B == 0 || vxk == cx0 || vyk == cy0) zeros++;
       want = A * (cx0 - vxk) + B * (cy0 - vyk) - longint'(bias[k]);
       if ((want < 0 ? -want : want) > max_abs) max_abs = want < 0 ? -want : want;
+      // far: |E >> F| >= 2^CB and fneg = E < 0; else |E >> F| < 2^(CB+3) (the 2x2 test's contract)
+      begin
+        longint eh;
+        eh = want >>> F;
+        if (far_sd16[k]) far_seen++;
+        else near_seen++;
+        if (far_sd16[k] ? ((eh < 0 ? -eh : eh) < (longint'(1) <<< CB) || fneg_sd16[k] != (want < 0))
+                        : ((eh < 0 ? -eh : eh) >= (longint'(1) <<< (CB + 3)))) begin
+          errors++;
+          if (errors < 10) $display("edge %0d: far %0d fneg %0d for E_L %0d", k, far_sd16[k],
+                                    fneg_sd16[k], want);
+        end
+      end
       if (sx(64'(el_m4[k*EB +: EB]), EB) != want || sx(64'(el_m16[k*EB +: EB]), EB) != want ||
           sx(64'(el_m16s[k*EB +: EB]), EB) != want ||
           sx(64'(el_m16r[k*EB +: EB]), EB) != want ||
@@ -198,8 +214,8 @@ module g2_corner_check_tb;
     repeat (2) @(negedge clk);
     rst_n = 1;
     for (int t = 0; t < Trials; t++) trial();
-    $display("g2_corner_check_tb: %0d errors (%0d trials of 3 edges, %0d with an extreme operand, %0d edges with a zero operand, largest |E_L| %0d = 2^%0d)",
-             errors, Trials, extremes, zeros, max_abs, bitlen(max_abs) - 1);
+    $display("g2_corner_check_tb: %0d errors (%0d trials of 3 edges, %0d with an extreme operand, %0d edges with a zero operand, largest |E_L| %0d = 2^%0d; the signed-digit unit's E far from 0 on %0d edges, near on %0d)",
+             errors, Trials, extremes, zeros, max_abs, bitlen(max_abs) - 1, far_seen, near_seen);
     if (errors != 0) $fatal(1, "g2_corner_check_tb: FAILED");
     $finish;
   end
