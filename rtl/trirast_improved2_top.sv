@@ -11,25 +11,28 @@
 // vertex-relative, E = A*(cx - vx) + B*(cy - vy), so tri_a_i, tri_b_i, tri_bias_i are read only
 // by an assertion (the port's are the vertices'), tri_c_i not at all.
 //
-//   [B] triangle register (tag, vertices) with the box (each axis's clipped first and last pixel)
-//       and its empty flag, formed from the port in the accept cycle; an empty box retires here
-//       (box_retire_o)
-//   [C] corner-stage register (tag, box, vertices, and A, B, bias formed from B's vertices);
-//       corner values E_L per edge:
+//   [B] triangle register (tag, vertices) with the box (each axis's clipped first pixel and its
+//       last pixel, clipped at the take) and its empty flag, formed from the port in the accept
+//       cycle; an empty box retires here (box_retire_o)
+//   [C] corner-stage register (tag, box, vertices, and A, B, A + B, bias formed from B's
+//       vertices); corner values E_L per edge:
 //       CornerForm 0: trirast_corner_products (multipliers, DSPs on xc7; no extra cycle);
-//       CornerForm 1: trirast_corner_serial (MSB-first radix 16), started as the triangle enters
-//       C: C holds it ceil(bits / 4) + 1 cycles for E_L; a box for the lanes then runs again,
-//       1 + ceil(bits' / 4) more cycles, at x1 = x0 + Xmax, and forms E_R in the accumulators
-//       of the edges whose lane reads E_R (the others hold E_L), so each accumulator ends with
-//       its lane's value. CornerForm 0 forms each edge's value at its lane's column directly.
-//       The direct 2x2 test (trirast_direct_test_2x2) reads E_L and the steps A, B.
+//       CornerForm 1: trirast_corner_serial (MSB-first radix 16 on signed-digit pairs), started
+//       as the triangle enters C: C holds it d + 1 cycles for E_L (d the fewest 4-bit digits in
+//       which the operands fit signed); a box for the lanes then runs again, 1 + d' more cycles,
+//       at x1 = x0 + Xmax, and forms E_R in the accumulators of the edges whose lane reads E_R
+//       (the others hold E_L), so each accumulator ends with its lane's value. CornerForm 0
+//       forms each edge's value at its lane's column directly. The direct 2x2 test
+//       (trirast_direct_test_2x2) reads E_L's low bits, its far-from-0 flag and the steps A, B,
+//       A + B.
 //   [L] job register (tag, box, tiny flag, the 2x2 test's row spans); a box of more than 2 x 2
 //       pixel centres loads the three edge lanes (trirast_edge_lane2: normalizer, adder-based
 //       divider, boundary traversal) in the same cycle; the job is handed off when the lanes are
 //       done (a tiny box: at once).
 //   [W] the walk stage (trirast_walk_stage2: three edge walkers presenting n rows, a span
 //       generator per row, a registered push of up to n spans with its credit against
-//       cfg_fifo_depth_i), span FIFO (n push ports) -> span port.
+//       cfg_fifo_depth_i; its tag and box from the job ring, JobRing), span FIFO (n push
+//       ports) -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
 // Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
