@@ -13,10 +13,10 @@
 // bits of an operand d stand for sum(s_i * 2^i) = 2d + 1. So bit i of dx and bit i of dy together
 // contribute 2^i * (s_x * A + s_y * B), which is one of +-(A + B), +-(A - B): the edge keeps
 // P = A + B (p_i: the unit forms it, for its 2x2 test too) and M = A - B, registered at the first
-// start (P complemented: E's subtraction of P then needs no inverters), and a bit pair selects P (bits equal)
-// or M (bits differ), complemented when the x bit is 0 (one LUT4 per bit: the two bits, P's and
-// M's). The complement's + 1 of the D bits of a digit is the x digit's complement, which fills the
-// D free low bits of the shifted accumulator. Per cycle and edge:
+// start (P complemented: E's subtraction of P then needs no inverters), and a bit pair selects P
+// (bits equal) or M (bits differ), complemented when the x bit is 0 (one LUT4 per bit: the two
+// bits, P's and M's). The complement's + 1 of the D bits of a digit is the x digit's
+// complement, which fills the D free low bits of the shifted accumulator. Per cycle and edge:
 //   acc = {acc, ~x digit} + (u_0 + 2 u_1 + 4 u_2 + 8 u_3)    (u_j the selected, complemented term)
 // So after n digits acc = A(2dx + 1) + B(2dy + 1) = 2 (A dx + B dy) + P, and the unit's value is
 // E = (acc - P) / 2 - bias (el_o: acc - P is even, so it is acc's bits above bit 0 minus P's,

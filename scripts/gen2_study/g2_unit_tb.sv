@@ -94,9 +94,10 @@ module g2_unit_tb;
   logic [PB-1:0] sy2, sxb2;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
-  // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles).
+  // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles); 0
+  // their other values, the job ring's too (JobRing 0: the walk stage copies L's tag and box).
   trirast_improved2_top #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
-            .WalkerCs (!`G2_FIT), .TestHi (`G2_FIT),
+            .WalkerCs (!`G2_FIT), .TestHi (`G2_FIT), .JobRing (`G2_FIT),
             .LaneFixedM (`G2_LANE_FIXEDM), .LanePreIter (`G2_LANE_PREITER)) u_gen2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
