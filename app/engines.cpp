@@ -7,14 +7,14 @@
 #include <set>
 
 #include "golden/golden.hpp"
-#include "sc/sc_engine.hpp"
-#include "unit/halfspace_unit.hpp"
-#include "unit/improved2_unit.hpp"
-#include "unit/improved_unit.hpp"
-#include "verilator/rtl_engine.hpp"
-#include "verilator/rtl_hs_engine.hpp"
-#include "verilator/rtl_improved2_engine.hpp"
-#include "verilator/rtl_trad_engine.hpp"
+#include "common/sc_engine.hpp"
+#include "halfspace/halfspace_unit.hpp"
+#include "improved2/improved2_unit.hpp"
+#include "improved/improved_unit.hpp"
+#include "improved/improved_rtl_engine.hpp"
+#include "halfspace/halfspace_rtl_engine.hpp"
+#include "improved2/improved2_rtl_engine.hpp"
+#include "trad/trad_rtl_engine.hpp"
 
 namespace trirast {
 
@@ -24,41 +24,41 @@ const std::vector<EngineInfo>& engine_registry() {
        true, [] { return make_golden_engine(); }},
       {"improved-datapath",
        "improved-Bresenham unit, bit-accurate datapath model, untimed (docs/unit.md)", true,
-       make_unit_engine},
+       make_improved_datapath_engine},
       {"improved-sc",
        "improved-Bresenham unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
-       true, make_model_engine, /*timed=*/true},
-      {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/trirast_improved.f)", true,
-       make_rtl_engine, /*timed=*/true},
+       true, make_improved_sc_engine, /*timed=*/true},
+      {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/improved/trirast_improved.f)", true,
+       make_improved_rtl_engine, /*timed=*/true},
       {"improved2-datapath",
        "second-generation improved unit (issue 13), bit-accurate datapath, untimed "
        "(docs/gen2-design.md)",
-       true, make_improved2_unit_engine},
+       true, make_improved2_datapath_engine},
       {"improved2-sc",
        "second-generation improved unit, SystemC model: its spans plus cycles, N = 1, 2, 4 "
        "(docs/gen2-design.md)",
-       true, make_improved2_model_engine, /*timed=*/true},
+       true, make_improved2_sc_engine, /*timed=*/true},
       {"improved2-rtl",
-       "second-generation improved unit, Verilated RTL (rtl/trirast_improved2.f): improved2-sc's "
+       "second-generation improved unit, Verilated RTL (rtl/improved2/trirast_improved2.f): improved2-sc's "
        "spans and cycles",
-       true, make_rtl_improved2_engine, /*timed=*/true},
+       true, make_improved2_rtl_engine, /*timed=*/true},
       {"trad-sc",
        "traditional Bresenham unit (GR3-style edge walking), SystemC model with cycles; its own "
        "coverage, not the rule",
-       false, make_trad_model_engine, /*timed=*/true},
+       false, make_trad_sc_engine, /*timed=*/true},
       {"trad-rtl",
-       "traditional Bresenham unit, Verilated RTL (rtl/trirast_trad.f): trad-sc's spans and cycles",
-       false, make_rtl_trad_engine, /*timed=*/true},
+       "traditional Bresenham unit, Verilated RTL (rtl/trad/trirast_trad.f): trad-sc's spans and cycles",
+       false, make_trad_rtl_engine, /*timed=*/true},
       {"halfspace-datapath",
        "half-space (edge-function) tile unit, bit-accurate datapath, untimed (docs/unit.md)", true,
-       make_halfspace_engine},
+       make_halfspace_datapath_engine},
       {"halfspace-sc",
        "half-space tile unit, SystemC model: the datapath's spans plus cycles (docs/timing.md)",
-       true, make_halfspace_model_engine, /*timed=*/true},
+       true, make_halfspace_sc_engine, /*timed=*/true},
       {"halfspace-rtl",
-       "half-space tile unit, Verilated RTL (rtl/trirast_halfspace.f): halfspace-sc's spans and "
+       "half-space tile unit, Verilated RTL (rtl/halfspace/trirast_halfspace.f): halfspace-sc's spans and "
        "cycles",
-       true, make_rtl_halfspace_engine, /*timed=*/true},
+       true, make_halfspace_rtl_engine, /*timed=*/true},
       {"float-scanline",
        "float scanline with the top-left rule as ceil(x - 0.5): a CPU baseline, not exact", false,
        make_float_scanline_engine},

@@ -1,10 +1,10 @@
 // The engines this build holds: the list the CLI, the sweep and the tests look names up in. It sits
-// above every engine library (model/, model/sc/, dv/verilator/), so none of them reaches up to it.
+// above every engine library (model/, model/, tb/), so none of them reaches up to it.
 #pragma once
 #include <string>
 #include <vector>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 
 namespace trirast {
 

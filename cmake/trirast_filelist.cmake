@@ -1,4 +1,4 @@
-# trirast_read_filelist(OUT_VAR FILE): the source files of a unit's file list (rtl/*.f) as
+# trirast_read_filelist(OUT_VAR FILE): the source files of a unit's file list (rtl/*/*.f) as
 # absolute paths, in the list's order. FILE holds one path per line, relative to FILE's folder;
 # `//` starts a comment, blank lines are skipped. A path that does not exist is a configure error
 # naming FILE. Editing FILE re-runs the configuration.
@@ -19,7 +19,8 @@ function(trirast_read_filelist out_var file)
     if(NOT EXISTS ${_dir}/${_line})
       message(FATAL_ERROR "${_list}: listed file ${_line} does not exist in ${_dir}")
     endif()
-    list(APPEND _paths ${_dir}/${_line})
+    get_filename_component(_path ${_dir}/${_line} ABSOLUTE)
+    list(APPEND _paths ${_path})
   endforeach()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_list})
   set(${out_var} ${_paths} PARENT_SCOPE)

@@ -64,7 +64,7 @@ values, no multipliers: the iCE40 form); "DSP corner" is the form with the corne
 multipliers in one cycle. "vs trad" is \`(trad - gen2) / trad\` and "vs gen1" \`(gen1 - gen2) /
 gen1\`: positive when the second generation needs fewer cycles. The paper reports the improved
 unit about 32% faster than the traditional one. The model's cycles equal those of the unit's RTL
-(\`rtl/trirast_improved2.f\`, engine \`improved2-rtl\`) triangle for triangle on every built-in
+(\`rtl/improved2/trirast_improved2.f\`, engine \`improved2-rtl\`) triangle for triangle on every built-in
 scene of this table (\`tests/rtl/test_rtl_improved2_engine.cpp\`; docs/gen2-design.md section 8).
 
 $gen2

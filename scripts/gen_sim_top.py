@@ -13,8 +13,8 @@ both of the simulation's surroundings, not of the unit:
     hierarchy (the harness's busy counters), so the harness reads ports, not Verilator's internal
     names. WIDTH is a number or an expression over the unit's parameters.
 
-  scripts/gen_sim_top.py --dut rtl/trirast_top.sv --top trirast_top --name trirast_top_sim \
-      --out DIR/trirast_top_sim.sv [--probe PORT WIDTH EXPR ...]
+  scripts/gen_sim_top.py --dut rtl/improved/trirast_improved_top.sv --top trirast_improved_top --name trirast_improved_top_sim \
+      --out DIR/trirast_improved_top_sim.sv [--probe PORT WIDTH EXPR ...]
 """
 import argparse
 import re

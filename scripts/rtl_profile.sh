@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Where the Verilated RTL's time goes (issue 14: RTL simulation speed), in exact instruction
-# counts: the improved unit's default build (Vtrirast_top_n1: N = 1, FIFO 8, the build the
+# counts: the improved unit's default build (Vtrirast_improved_top_n1: N = 1, FIFO 8, the build the
 # improved-rtl engine runs at the default configuration) simulating one scene in
 # trirast_sc_bench, counted by valgrind's callgrind inside the RTL run only (the engine call
-# runVtrirast_top_n1: the Verilated model, the harness's cycle loop and its width check),
+# runVtrirast_improved_top_n1: the Verilated model, the harness's cycle loop and its width check),
 # once as built and once per variant of the same build:
 #   as built      the build's own Verilator arguments (build/, verilator_args.txt) and -O2
 #   -O3           the model's fast code compiled with -O3
@@ -31,10 +31,10 @@ while [ $# -gt 0 ]; do
 done
 WORK="${WORK:-$BUILD/rtl-profile}"
 command -v valgrind >/dev/null || { echo "rtl_profile.sh: valgrind is missing: apt-get install valgrind" >&2; exit 2; }
-MDIR="$BUILD/dv/verilator/CMakeFiles/trirast_rtl_models.dir/Vtrirast_top_n1.dir"
+MDIR="$BUILD/tb/CMakeFiles/trirast_rtl_models.dir/Vtrirast_improved_top_n1.dir"
 ARGS="$MDIR/verilator_args.txt"
 LINK="$BUILD/tools/CMakeFiles/trirast_sc_bench.dir/link.txt"
-HARNESS="$BUILD/dv/verilator/rtl_builds/buildVtrirast_top_n1.cpp"
+HARNESS="$BUILD/tb/rtl_builds/buildVtrirast_improved_top_n1.cpp"
 for f in "$ARGS" "$LINK" "$HARNESS"; do
   [ -f "$f" ] || { echo "rtl_profile.sh: $f: missing (configure and build $BUILD first: cmake --build $BUILD --target trirast_sc_bench)" >&2; exit 2; }
 done
@@ -70,35 +70,35 @@ build_variant() {  # build_variant NAME CXXFLAGS
   local inc=(-I"$ROOT/dv" -I"$d/obj" -I/usr/share/verilator/include/vltstd -I"$ROOT/model"
              -isystem /usr/share/verilator/include -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1
              -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -std=c++17 -w)
-  for f in "$d"/obj/Vtrirast_top_n1*.cpp "$HARNESS"; do
+  for f in "$d"/obj/Vtrirast_improved_top_n1*.cpp "$HARNESS"; do
     o="$d/$(basename "$f" .cpp).o"
     case "$f" in *Slow*|*Syms*) fl=-O1 ;; *) fl="$2" ;; esac
     c++ "${inc[@]}" $fl -c "$f" -o "$o"
     objs+=("$o")
   done
   # The bench's own link line, with this variant's model and harness first: the library's
-  # members for Vtrirast_top_n1 are then never pulled in.
+  # members for Vtrirast_improved_top_n1 are then never pulled in.
   (cd "$BUILD/tools" && eval "$(sed -e "s# -o ../trirast_sc_bench # -o $d/bench ${objs[*]} #" "$LINK")")
 }
 
-# Instructions inside runVtrirast_top_n1, and inside the Verilated model's eval and the width
+# Instructions inside runVtrirast_improved_top_n1, and inside the Verilated model's eval and the width
 # check; prints "total eval widths cycles".
 count() {  # count NAME
   local d="$WORK/$1" out
   out="$(SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1 valgrind --tool=callgrind \
-    --callgrind-out-file="$d/callgrind.out" --toggle-collect='trirast::rtl::runVtrirast_top_n1*' \
+    --callgrind-out-file="$d/callgrind.out" --toggle-collect='trirast::rtl::runVtrirast_improved_top_n1*' \
     "$d/bench" --repeat 1 --rtl-repeat 1 "$SCENE" 2>/dev/null)"
   local cycles total eval widths
   cycles="$(awk -v s="$SCENE" '$1 == s { print $3 }' <<< "$out")"
   local ann
   ann="$(callgrind_annotate --inclusive=yes "$d/callgrind.out" 2>/dev/null)"
   total="$(awk '/PROGRAM TOTALS/ { gsub(",", "", $1); print $1 }' <<< "$ann")"
-  eval="$(awk '/Vtrirast_top_n1::eval_step\(\)/ { gsub(",", "", $1); print $1; exit }' <<< "$ann")"
+  eval="$(awk '/Vtrirast_improved_top_n1::eval_step\(\)/ { gsub(",", "", $1); print $1; exit }' <<< "$ann")"
   widths="$(awk '/check_widths</ { gsub(",", "", $1); print $1; exit }' <<< "$ann")"
   echo "$total ${eval:-0} ${widths:-0} $cycles"
 }
 
-printf '%s\n' "trirast RTL profile: Vtrirast_top_n1 (improved unit, N = 1, FIFO 8), scene $SCENE, callgrind inside runVtrirast_top_n1"
+printf '%s\n' "trirast RTL profile: Vtrirast_improved_top_n1 (improved unit, N = 1, FIFO 8), scene $SCENE, callgrind inside runVtrirast_improved_top_n1"
 printf '%-12s %14s %12s %10s %10s %10s %10s\n' variant instructions "per cycle" eval "width chk" harness "vs built"
 base=""
 for v in "built:-O2" "o3:-O3" "xfast:-O2" "noassert:-O2"; do

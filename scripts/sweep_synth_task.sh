@@ -13,7 +13,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 sources_hash() {
-  cat "$ROOT"/rtl/*.sv "$ROOT"/rtl/*.svh "$ROOT"/rtl/*.f "$ROOT/scripts/synth.sh" \
+  cat "$ROOT"/rtl/*/*.sv "$ROOT"/rtl/*/*.svh "$ROOT"/rtl/*/*.f "$ROOT/scripts/synth.sh" \
     "$ROOT/scripts/synth_wrap.py" "$ROOT/scripts/gen_params.py" | sha1sum | cut -d' ' -f1
 }
 if [ "${1:-}" = --prune ]; then

@@ -2,7 +2,7 @@
 """Registered place-and-route wrapper for any top module (scripts/synth.sh; not part of a unit).
 
 Reads the port list of TOP from a Yosys JSON netlist (`hierarchy -top TOP; write_json`) and
-writes a wrapper module around rtl/trirast_synth_shell.sv: the clock and reset pass through, every
+writes a wrapper module around rtl/common/trirast_synth_shell.sv: the clock and reset pass through, every
 other input is a bit of the shell's serially loaded input register (or tied to a constant with
 --tie), every output goes into the shell's output register and is read back serially. So the
 timing paths are TOP's own and the wrapper needs five pins. The first input port takes the lowest

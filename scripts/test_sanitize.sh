@@ -7,7 +7,7 @@
 # programs are not built, and the libFuzzer test (sanitized itself) and the gen2 model-vs-RTL
 # prototype check (a Verilator testbench; tests/sc/CMakeLists.txt) run in the normal suite only.
 # The Verilated models' generated C++ is not instrumented (Verilator's code, not ours;
-# dv/verilator/CMakeLists.txt), and is taken from build/ when that exists (below); the harnesses
+# tb/CMakeLists.txt), and is taken from build/ when that exists (below); the harnesses
 # around the models are compiled here and checked.
 # SystemC switches stacks between its coroutines (QuickThreads in Debian's libsystemc, not
 # annotated for ASan), after which ASan no longer knows the main thread's stack and cannot clean
@@ -22,7 +22,7 @@ mkdir -p "$build"
 log="$build/build.log"
 # The Verilated models are not instrumented here (above), so when build/ (the normal suite's
 # build, not sanitized) exists, the models it compiled are brought up to date there and linked in
-# (TRIRAST_RTL_MODELS_FROM, dv/verilator/CMakeLists.txt) instead of compiling the same generated
+# (TRIRAST_RTL_MODELS_FROM, tb/CMakeLists.txt) instead of compiling the same generated
 # C++ again. TRIRAST_ASAN_OWN_MODELS=1 compiles them here.
 models=(-DTRIRAST_RTL_MODELS_FROM=)
 if [ "${TRIRAST_ASAN_OWN_MODELS:-0}" != 1 ] && [ -f build/CMakeCache.txt ] &&

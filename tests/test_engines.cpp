@@ -2,9 +2,9 @@
 // span for span; every engine runs on every built-in scene without error.
 #include <gtest/gtest.h>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "core/span_diff.hpp"
+#include "common/span_diff.hpp"
 #include "scene/scene.hpp"
 
 namespace trirast {

@@ -13,14 +13,14 @@
 #include <set>
 #include <sstream>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "core/span_diff.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "fuzz/fuzz_scene.hpp"
-#include "verilator/rtl_hs_engine.hpp"
+#include "common/fuzz_scene.hpp"
+#include "halfspace/halfspace_rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "reference/reference_raster.hpp"
+#include "common/reference_raster.hpp"
 #include "support/run_command.hpp"
 
 namespace trirast {

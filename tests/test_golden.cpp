@@ -4,12 +4,12 @@
 
 #include <cmath>
 
-#include "core/setup.hpp"
-#include "core/span_diff.hpp"
+#include "common/setup.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
+#include "common/reference_raster.hpp"
 #include "scene/scene.hpp"
-#include "reference/watertight.hpp"
+#include "common/watertight.hpp"
 
 namespace trirast {
 namespace {

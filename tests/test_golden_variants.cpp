@@ -8,11 +8,11 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/setup.hpp"
-#include "core/span_diff.hpp"
+#include "common/setup.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
-#include "reference/reference_raster.hpp"
+#include "common/reference_raster.hpp"
 
 namespace trirast {
 namespace {

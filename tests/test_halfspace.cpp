@@ -1,4 +1,4 @@
-// The half-space tile unit's datapath (model/unit/halfspace_*) against the golden rasterizer:
+// The half-space tile unit's datapath (model/halfspace_*) against the golden rasterizer:
 // at every stamp size (1, 2, 4), tile size (none, 8, 16) and walk order, the span lists are
 // identical (the same spans, not only the same pixels) on the acceptance scenes, on random
 // triangles and at other precisions. Plus the walker's own claims: the zig-zag walk tests no more
@@ -8,30 +8,30 @@
 #include <cstdint>
 #include <string>
 
-#include "core/span_diff.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
-#include "unit/halfspace_unit.hpp"
+#include "halfspace/halfspace_unit.hpp"
 
 namespace trirast {
 namespace {
 
 struct Hs {
   int stamp, tile;
-  HsWalk walk;
+  HalfspaceWalk walk;
 };
 
 std::vector<Hs> all_configs() {
   std::vector<Hs> v;
   for (int s : {1, 2, 4})
     for (int t : {0, 8, 16})
-      for (HsWalk w : {HsWalk::Row, HsWalk::Zigzag}) v.push_back({s, t, w});
+      for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) v.push_back({s, t, w});
   return v;
 }
 
 std::string name(const Hs& h) {
   return "stamp " + std::to_string(h.stamp) + " tile " + std::to_string(h.tile) + " " +
-         hs_walk_name(h.walk);
+         halfspace_walk_name(h.walk);
 }
 
 SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
@@ -46,11 +46,11 @@ SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
 void expect_all_equal(const SetupResult& setup, RasterConfig cfg, const std::string& what) {
   const SpanList g = golden_spans(setup, cfg);
   for (const Hs& h : all_configs()) {
-    cfg.hs_stamp = h.stamp;
-    cfg.hs_tile = h.tile;
-    cfg.hs_walk = h.walk;
+    cfg.halfspace.stamp = h.stamp;
+    cfg.halfspace.tile = h.tile;
+    cfg.halfspace.walk = h.walk;
     EngineResult r;
-    make_halfspace_engine()->run(setup, cfg, r);
+    make_halfspace_datapath_engine()->run(setup, cfg, r);
     EXPECT_EQ(r.work["spans"], r.spans.size());
     EXPECT_EQ(int64_t(r.work["pixels"]), count_pixels(r.spans));
     sort_spans(r.spans);
@@ -131,15 +131,15 @@ TEST(HalfspaceDatapath, WalkerWorkIsPlausible) {
   // One large triangle: 16x16 tiles are accepted inside it; the zig-zag walk, which ends a band
   // after its last non-rejected tile, tests fewer units than the row walk.
   RasterConfig cfg;
-  cfg.hs_tile = 16;
+  cfg.halfspace.tile = 16;
   std::vector<InputTriangle> tris = {{{10, 500, 30}, {10, 40, 400}, 0}};
   const SetupResult setup = setup_scene(tris, cfg);
   ASSERT_EQ(setup.tris.size(), 1u);
   uint64_t units[2];
-  for (HsWalk w : {HsWalk::Row, HsWalk::Zigzag}) {
-    cfg.hs_walk = w;
+  for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) {
+    cfg.halfspace.walk = w;
     EngineResult r;
-    make_halfspace_engine()->run(setup, cfg, r);
+    make_halfspace_datapath_engine()->run(setup, cfg, r);
     units[int(w)] = r.work["hs_units_tested"];
     EXPECT_GT(r.work["hs_tiles_accepted"], 100u);
     EXPECT_GT(r.work["hs_units_rejected"], 0u);
@@ -149,10 +149,10 @@ TEST(HalfspaceDatapath, WalkerWorkIsPlausible) {
 
 TEST(HalfspaceDatapath, RejectsBadParameters) {
   RasterConfig cfg;
-  cfg.hs_stamp = 3;
+  cfg.halfspace.stamp = 3;
   EXPECT_THROW(HalfspaceUnit u(cfg), std::invalid_argument);
-  cfg.hs_stamp = 2;
-  cfg.hs_tile = 4;
+  cfg.halfspace.stamp = 2;
+  cfg.halfspace.tile = 4;
   EXPECT_THROW(HalfspaceUnit u(cfg), std::invalid_argument);
 }
 

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
-#include "core/span_diff.hpp"
+#include "common/setup.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
+#include "common/reference_raster.hpp"
 #include "scene/scene.hpp"
-#include "unit/improved2_unit.hpp"
+#include "improved2/improved2_unit.hpp"
 
 namespace trirast {
 namespace {
@@ -33,7 +33,7 @@ std::map<std::string, uint64_t> expect_equals_golden(const std::vector<InputTria
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult g, u;
   make_golden_engine()->run(setup, cfg, g);
-  make_improved2_unit_engine()->run(setup, cfg, u);
+  make_improved2_datapath_engine()->run(setup, cfg, u);
   const SpanDiff d = diff_spans(sorted(g.spans), sorted(u.spans));
   EXPECT_TRUE(d.identical_spans) << what << ": " << d.missing_pixels << " missing, "
                                  << d.extra_pixels << " extra pixels";
@@ -97,16 +97,16 @@ TEST(Improved2Datapath, RandomSmallTrianglesEqualGolden) {
 TEST(Improved2Datapath, DirectTestIsTheFourCentreTests) {
   RasterConfig cfg;
   TestRng rng{77};
-  Interface iface(cfg);
+  BoxStage iface(cfg);
   uint64_t tested = 0, spans = 0;
   for (int n = 0; n < 20000; ++n) {
     const auto tris = test::random_grid_triangles(rng, 1, 10, 14, 10, 14, 3, 2.5);
     const SetupResult setup = setup_scene(tris, cfg);
     if (setup.tris.empty()) continue;
     const TriangleSetup& t = setup.tris[0];
-    const InterfaceOut box = iface.run(t);
-    if (box.empty || !DirectTest2x2::takes(box)) continue;
-    const DirectTestOut d = DirectTest2x2::run(box);
+    const BoxStageOut box = iface.run(t);
+    if (box.empty || !Improved2DirectTest2x2::takes(box)) continue;
+    const Improved2DirectTestOut d = Improved2DirectTest2x2::run(box);
     for (int j = 0; j < 2; ++j) {
       bool c[2];
       for (int i = 0; i < 2; ++i) {
@@ -136,7 +136,7 @@ TEST(Improved2Datapath, CornerDigits) {
   RasterConfig cfg;  // S = 8: a pixel centre is x * 256 + 128
   TriangleSetup t{};
   for (auto& v : t.v) v = Vec2i{128, 128};
-  CornerUnit c(cfg);
+  Improved2CornerUnit c(cfg);
   EXPECT_EQ(c.digits(t, 0, 0), 1);  // all operands 0
   EXPECT_EQ(c.digits(t, 0, 1), 3);  // 256: 10 signed bits
   t.v[1] = Vec2i{128 + 8, 128};     // dx = -8: one digit
@@ -153,9 +153,9 @@ TEST(Improved2Datapath, CornerDigits) {
   EXPECT_EQ(c.digits(t, 0, 0), 7);
   t.v[0] = Vec2i{128, 128 + (int64_t(1) << 23)};  // -2^23: 24 signed bits, 6 digits
   EXPECT_EQ(c.digits(t, 0, 0), 6);
-  EXPECT_EQ(CornerUnit::operand_vertex(0), 0);
-  EXPECT_EQ(CornerUnit::operand_vertex(1), 1);
-  EXPECT_EQ(CornerUnit::operand_vertex(2), 0);  // v0 lies on edge 2 (v2 -> v0)
+  EXPECT_EQ(Improved2CornerUnit::operand_vertex(0), 0);
+  EXPECT_EQ(Improved2CornerUnit::operand_vertex(1), 1);
+  EXPECT_EQ(Improved2CornerUnit::operand_vertex(2), 0);  // v0 lies on edge 2 (v2 -> v0)
 }
 
 // The redesigned lane's cycles on edges whose traversal and divisions are known.
@@ -167,7 +167,7 @@ TEST(Improved2Datapath, LaneCycles) {
   n.s = 512;
   n.T = 0;  // inside at row 0: T = 0 steps, enters
   // Xmax = 5: m = 3 + 1 = 4; slope 512 / 256 = 2 < 16, entry 0 / 256: no saturation.
-  Gen2LaneWork w = Gen2Lane::run(n, 5, 3);
+  Improved2LaneWork w = Improved2EdgeLane::run(n, 5, 3);
   EXPECT_EQ(w.m, 4);
   EXPECT_EQ(w.steps, 0);
   EXPECT_TRUE(w.enters);
@@ -176,20 +176,20 @@ TEST(Improved2Datapath, LaneCycles) {
   n.T = -3 * 512 + 1;
   n.s = 512;
   n.D = 16;  // 16 * 2^4 = 256 <= 512: saturated; entry value 1 < 256: not
-  w = Gen2Lane::run(n, 5, 10);
+  w = Improved2EdgeLane::run(n, 5, 10);
   EXPECT_EQ(w.steps, 3);
   EXPECT_TRUE(w.slope_saturated);
   EXPECT_FALSE(w.entry_saturated);
   EXPECT_EQ(w.cycles, uint64_t(3 + 1 + 4));  // max(2, 3) + 1 + m
   // Never enters (Ymax = 1): T = Ymax + 1 = 2 steps, no entry division.
-  w = Gen2Lane::run(n, 5, 1);
+  w = Improved2EdgeLane::run(n, 5, 1);
   EXPECT_FALSE(w.enters);
   EXPECT_EQ(w.cycles, uint64_t(2 + 1));  // max(2, 2) + 1
   // dir -: u = -T1 - 1; T1 = -1 is already past the far column (u = 0 >= 0).
   n.dir_down = false;
   n.T1 = -1;
   n.T = n.T1 + 5 * n.D;
-  w = Gen2Lane::run(n, 5, 1);
+  w = Improved2EdgeLane::run(n, 5, 1);
   EXPECT_EQ(w.steps, 0);
   EXPECT_TRUE(w.enters);
   // Horizontal: T + 1.
@@ -198,7 +198,7 @@ TEST(Improved2Datapath, LaneCycles) {
   h.dir_down = true;
   h.s = 256;
   h.T = -256 * 2;
-  w = Gen2Lane::run(h, 3, 5);
+  w = Improved2EdgeLane::run(h, 3, 5);
   EXPECT_EQ(w.steps, 2);
   EXPECT_EQ(w.cycles, uint64_t(3));
 }

@@ -9,15 +9,15 @@
 #include <set>
 #include <string>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "core/fixed_point.hpp"
-#include "core/span_diff.hpp"
+#include "common/fixed_point.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "fuzz/fuzz_scene.hpp"
-#include "reference/reference_raster.hpp"
+#include "common/fuzz_scene.hpp"
+#include "common/reference_raster.hpp"
 #include "support/run_command.hpp"
-#include "unit/improved_unit.hpp"
+#include "improved/improved_unit.hpp"
 
 namespace trirast {
 namespace {

@@ -14,12 +14,12 @@
 #include <set>
 #include <sstream>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
-#include "reference/watertight.hpp"
+#include "common/watertight.hpp"
 
 namespace trirast {
 namespace {

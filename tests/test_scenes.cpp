@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "scene/camera.hpp"
 #include "scene/mesh_builders.hpp"
 #include "scene/scene.hpp"
-#include "reference/reference_raster.hpp"
-#include "reference/watertight.hpp"
+#include "common/reference_raster.hpp"
+#include "common/watertight.hpp"
 
 namespace trirast {
 namespace {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "cli/slowest.hpp"
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "engines.hpp"
 #include "io/cycles_file.hpp"
-#include "reference/cycle_columns.hpp"
+#include "common/cycle_columns.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 

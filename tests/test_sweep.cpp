@@ -8,9 +8,9 @@
 #include <set>
 #include <sstream>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "reference/watertight.hpp"
+#include "common/watertight.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "sweep/sweep.hpp"
@@ -299,7 +299,7 @@ TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
 // unknown elsewhere.
 TEST(SweepImproved2, CornerFormsSweptExactWithTheirOwnArea) {
   // The full sweep's points: 29 widths x 2 corner forms, with distinct names, all buildable
-  // (rtl/trirast_improved2.f is parametric in the widths).
+  // (rtl/improved2/trirast_improved2.f is parametric in the widths).
   const std::vector<SweepPoint> full = sweep_points(false, {"improved2-sc"});
   ASSERT_EQ(full.size(), 58u);
   std::set<std::string> names;
@@ -508,7 +508,7 @@ TEST(Fit, ABudgetAllowsFewerBits) {
 
 // ---- the library: closed-mesh counting, truncation, area --------------------------------------
 
-// The sweep counts cracks and double hits with the closed-mesh check of dv/reference.
+// The sweep counts cracks and double hits with the closed-mesh check of tb/reference.
 TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
   RasterConfig cfg;
   const Scene scene = make_builtin("fan:n=8", cfg, CameraOptions{});
@@ -608,20 +608,20 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   EXPECT_EQ(synth_unit_name(UnitKind::Halfspace, hs_cfg), "halfspace-s2");
   EXPECT_EQ(hs.area(UnitKind::Halfspace, hs_cfg).luts, 5944);
   EXPECT_EQ(hs.area(UnitKind::Improved, hs_cfg).luts, 6605);  // not confused with the improved row
-  hs_cfg.hs_tile = 16;
+  hs_cfg.halfspace.tile = 16;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
-  hs_cfg.hs_tile = 8;
-  hs_cfg.hs_walk = HsWalk::Row;
+  hs_cfg.halfspace.tile = 8;
+  hs_cfg.halfspace.walk = HalfspaceWalk::Row;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
-  hs_cfg.hs_walk = HsWalk::Zigzag;
-  hs_cfg.hs_stamp = 4;
+  hs_cfg.halfspace.walk = HalfspaceWalk::Zigzag;
+  hs_cfg.halfspace.stamp = 4;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
   EXPECT_FALSE(hs.estimate(UnitKind::Halfspace, RasterConfig{}).known());
   // The second-generation unit: never the improved unit's synthesis or estimate.
   EXPECT_FALSE(hs.area(UnitKind::Improved2, RasterConfig{}).known());
   EXPECT_FALSE(hs.estimate(UnitKind::Improved2, RasterConfig{}).known());
   RasterConfig products;
-  products.g2_corner_form = 0;
+  products.improved2.corner_form = 0;
   // With its own row (radix 16 only): its estimate meets that row at the default widths and
   // grows with the widths; the products form, not synthesized, stays unknown.
   write_file(dir.file("g2.csv"),

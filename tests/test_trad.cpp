@@ -1,4 +1,4 @@
-// The traditional Bresenham baseline (model/unit/trad_bresenham.hpp): its own behaviour,
+// The traditional Bresenham baseline (model/trad/trad_bresenham.hpp): its own behaviour,
 // hand-derived, and its difference from the golden rule (001_efbf726a8c96efcc.txt, 2.1.1). The
 // baseline is not exact; these tests pin down what it does, not that it agrees with golden.
 #include <gtest/gtest.h>
@@ -9,12 +9,12 @@
 #include <map>
 #include <vector>
 
-#include "core/fixed_point.hpp"
-#include "core/setup.hpp"
-#include "core/span_diff.hpp"
+#include "common/fixed_point.hpp"
+#include "common/setup.hpp"
+#include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
-#include "unit/trad_bresenham.hpp"
+#include "common/reference_raster.hpp"
+#include "trad/trad_bresenham.hpp"
 
 namespace trirast {
 namespace {
@@ -333,7 +333,7 @@ TEST(TradBresenham, WorkCountsAreEdgeLengths) {
   const std::vector<InputTriangle> tris = random_triangles(rng, 5000, -30, 1060, 60);
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult res;
-  make_trad_engine()->run(setup, cfg, res);
+  make_trad_datapath_engine()->run(setup, cfg, res);
 
   uint64_t steps = 0, rows = 0, collinear = 0;
   for (const TriangleSetup& t : setup.tris) {
@@ -372,12 +372,12 @@ TEST(TradBresenham, Deterministic) {
   const std::vector<InputTriangle> tris = random_triangles(rng, 4000, -100, 1100, 200);
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult r1, r2;
-  make_trad_engine()->run(setup, cfg, r1);
-  make_trad_engine()->run(setup, cfg, r2);
+  make_trad_datapath_engine()->run(setup, cfg, r1);
+  make_trad_datapath_engine()->run(setup, cfg, r2);
   EXPECT_EQ(r1.spans, r2.spans);
   EXPECT_EQ(r1.work, r2.work);
   // And the same engine object run twice (no state leaks between runs).
-  auto engine = make_trad_engine();
+  auto engine = make_trad_datapath_engine();
   EngineResult r3, r4;
   engine->run(setup, cfg, r3);
   engine->run(setup, cfg, r4);

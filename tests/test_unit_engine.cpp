@@ -11,11 +11,11 @@
 #include <functional>
 #include <string>
 
-#include "core/fixed_point.hpp"
-#include "core/setup.hpp"
+#include "common/fixed_point.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
-#include "unit/improved_unit.hpp"
+#include "common/reference_raster.hpp"
+#include "improved/improved_unit.hpp"
 
 namespace trirast {
 namespace {
@@ -87,7 +87,7 @@ Compared compare_with_golden(const std::vector<InputTriangle>& tris, RasterConfi
   for (BoundaryMode mode : {BoundaryMode::Step, BoundaryMode::Divide}) {
     cfg.boundary = mode;
     EngineResult r;
-    make_unit_engine()->run(setup, cfg, r);
+    make_improved_datapath_engine()->run(setup, cfg, r);
     sort_spans(r.spans);
     // Work counters agree with the spans.
     EXPECT_EQ(r.work["spans"], r.spans.size());
@@ -271,7 +271,7 @@ TEST(UnitEngine, BoxTooBigForBoxBits) {
       {InputTriangle{{1, 2, 1}, {1, 1, 2}}, InputTriangle{{10, 110, 10}, {10, 10, 30}}}, cfg);
   EngineResult r;
   try {
-    make_unit_engine()->run(s, cfg, r);
+    make_improved_datapath_engine()->run(s, cfg, r);
     FAIL() << "a 100-pixel box was accepted with box_bits = 6";
   } catch (const WidthError& e) {
     EXPECT_NE(std::string(e.what()).find("triangle 1: Xmax = 99 does not fit 6-bit"),
@@ -315,7 +315,7 @@ TEST(UnitEngine, WorkCounters) {
       }
     }
     EngineResult er;
-    make_unit_engine()->run(s, cfg, er);
+    make_improved_datapath_engine()->run(s, cfg, er);
     EXPECT_EQ(er.work["divider_iterations"], r.work.divider_iterations());
     EXPECT_EQ(er.work["boundary_steps"], r.work.boundary_steps());
     EXPECT_EQ(er.work["rows_stepped"], r.work.rows_stepped());

@@ -6,16 +6,16 @@
 #include <cstdint>
 #include <string>
 
-#include "core/fixed_point.hpp"
-#include "core/setup.hpp"
+#include "common/fixed_point.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
-#include "unit/adder_divider.hpp"
-#include "unit/edge_normalizer.hpp"
-#include "unit/edge_walker.hpp"
-#include "unit/improved_unit.hpp"
-#include "unit/interface.hpp"
-#include "unit/unit_widths.hpp"
+#include "common/reference_raster.hpp"
+#include "improved/improved_adder_divider.hpp"
+#include "improved/improved_edge_normalizer.hpp"
+#include "improved/improved_edge_walker.hpp"
+#include "improved/improved_unit.hpp"
+#include "common/box_stage.hpp"
+#include "common/unit_widths.hpp"
 
 namespace trirast {
 namespace {
@@ -32,11 +32,11 @@ int64_t floor_div128(__int128 n, __int128 d) {
 
 // ---------------------------------------------------------------- adder_divider
 
-TEST(AdderDivider, ExhaustiveSmallWidths) {
+TEST(ImprovedAdderDivider, ExhaustiveSmallWidths) {
   // Every n < 2^10 and d < 2^6 for small quotient widths: exact q and r, exact saturation.
   uint64_t checked = 0;
   for (int Q : {1, 3, 4, 6}) {
-    AdderDivider div(Q, 10, 6);
+    ImprovedAdderDivider div(Q, 10, 6);
     for (int64_t n = 0; n < 1024; ++n) {
       for (int64_t d = 1; d < 64; ++d) {
         const DivideResult r = div.divide(n, d, 0, "n");
@@ -54,13 +54,13 @@ TEST(AdderDivider, ExhaustiveSmallWidths) {
   EXPECT_EQ(checked, 4u * 1024u * 63u);
 }
 
-TEST(AdderDivider, RandomFullWidth) {
+TEST(ImprovedAdderDivider, RandomFullWidth) {
   // The unit's divider (default config: Q = 15, numerator 2p+2 = 50 bits, divisor p+F = 32 bits).
   RasterConfig cfg;
   const UnitWidths w = unit_widths(cfg);
   ASSERT_EQ(w.quotient, 15);
   ASSERT_EQ(w.numerator, 50);
-  AdderDivider div(cfg);
+  ImprovedAdderDivider div(cfg);
   EXPECT_EQ(div.iterations_per_division(), 15);
   TestRng rng{12345};
   int saturated = 0, exact = 0;
@@ -99,10 +99,10 @@ TEST(AdderDivider, RandomFullWidth) {
   EXPECT_GT(exact, 50000);
 }
 
-TEST(AdderDivider, PortWidths) {
+TEST(ImprovedAdderDivider, PortWidths) {
   RasterConfig cfg;
   const UnitWidths w = unit_widths(cfg);
-  AdderDivider div(cfg);
+  ImprovedAdderDivider div(cfg);
   const int64_t n_max = (int64_t(1) << w.numerator) - 1;
   const int64_t d_max = (int64_t(1) << w.remainder) - 1;
   // At the limit: accepted; 2^50 / 2^32 needs 18 quotient bits, so it saturates.
@@ -127,8 +127,8 @@ TEST(AdderDivider, PortWidths) {
 // ---------------------------------------------------------------- edge_normalizer
 
 // A random box-relative edge whose values fit the default widths.
-InterfaceEdge random_edge(TestRng& rng, int64_t Xmax, int step_bits) {
-  InterfaceEdge e;
+BoxStageEdge random_edge(TestRng& rng, int64_t Xmax, int step_bits) {
+  BoxStageEdge e;
   const int64_t u = 256;
   // Steps of random bit length; a quarter of them small, so exact carries are common.
   const int bits = rng.next() % 4 == 0 ? 4 : step_bits - 8;
@@ -149,14 +149,14 @@ InterfaceEdge random_edge(TestRng& rng, int64_t Xmax, int step_bits) {
   return e;
 }
 
-TEST(EdgeNormalizer, MirrorRestoreRoundTrip) {
+TEST(ImprovedEdgeNormalizer, MirrorRestoreRoundTrip) {
   RasterConfig cfg;
-  EdgeNormalizer norm(cfg);
+  ImprovedEdgeNormalizer norm(cfg);
   TestRng rng{777};
   int mirrored = 0, plain = 0;
   for (int it = 0; it < 100000; ++it) {
     const int64_t Xmax = rng.range(0, (1 << 14) - 1);
-    const InterfaceEdge e = random_edge(rng, Xmax, 32);
+    const BoxStageEdge e = random_edge(rng, Xmax, 32);
     if (e.a == 0) continue;
     const NormalizedEdge n = norm.run(e, Xmax, 0);
     // The normalized form: D > 0, s = |b|, T1 at the far column, signs into flags.
@@ -168,7 +168,7 @@ TEST(EdgeNormalizer, MirrorRestoreRoundTrip) {
     // A row, the normalized bound X' there, and the bound restored to real columns.
     const int64_t j = rng.range(0, (1 << 14) - 1);
     const int64_t Xp = floor_div128((__int128)n.T + (__int128)j * e.b, n.D);
-    const int64_t x = EdgeNormalizer::restore(n, Xp, Xmax);
+    const int64_t x = ImprovedEdgeNormalizer::restore(n, Xp, Xmax);
     // The original edge, evaluated at the restored bound and its neighbour, confirms it.
     auto E = [&](int64_t i) { return (__int128)e.E_L + (__int128)i * e.a + (__int128)j * e.b; };
     if (n.mirror) {
@@ -186,7 +186,7 @@ TEST(EdgeNormalizer, MirrorRestoreRoundTrip) {
 // ---------------------------------------------------------------- edge_walker
 
 // Expected state of a normalized edge on row j, straight from the closed form.
-WalkerRow closed_form(const NormalizedEdge& n, const InterfaceEdge& e, int64_t Xmax, int64_t j) {
+WalkerRow closed_form(const NormalizedEdge& n, const BoxStageEdge& e, int64_t Xmax, int64_t j) {
   const __int128 f0 = (__int128)n.T + (__int128)j * e.b;  // f at column i' = 0
   if (n.horizontal) return WalkerRow{f0 >= 0 ? EdgeRowState::Clear : EdgeRowState::Out, 0};
   const int64_t X = floor_div128(f0, n.D);
@@ -204,16 +204,16 @@ void walk_random_edges(BoundaryMode mode, DividerMode divider, uint64_t seed) {
   cfg.boundary = mode;
   cfg.divider = divider;
   const UnitWidths w = unit_widths(cfg);
-  EdgeNormalizer norm(cfg);
-  AdderDivider div(cfg);
-  EdgeWalker walker(cfg, div);
+  ImprovedEdgeNormalizer norm(cfg);
+  ImprovedAdderDivider div(cfg);
+  ImprovedEdgeWalker walker(cfg, div);
   TestRng rng{seed};
   uint64_t rows = 0, bound_rows = 0, steps_total = 0, dir_up = 0;
   for (int it = 0; it < 6000; ++it) {
     // Mostly small boxes, some at the full 2^box_bits.
     const int64_t lim = it % 10 == 0 ? (1 << 14) - 1 : 300;
     const int64_t Xmax = rng.range(0, lim), Ymax = rng.range(0, lim);
-    const InterfaceEdge e = random_edge(rng, Xmax, it % 3 == 0 ? 16 : 32);
+    const BoxStageEdge e = random_edge(rng, Xmax, it % 3 == 0 ? 16 : 32);
     if (!fits_signed(e.E_L, w.edge_value) || !fits_signed(e.E_R, w.edge_value)) continue;
     const NormalizedEdge n = norm.run(e, Xmax, uint32_t(it));
     if (!n.dir_down) ++dir_up;
@@ -274,27 +274,27 @@ void walk_random_edges(BoundaryMode mode, DividerMode divider, uint64_t seed) {
   }
 }
 
-TEST(EdgeWalker, ClosedFormStepMode) {
+TEST(ImprovedEdgeWalker, ClosedFormStepMode) {
   walk_random_edges(BoundaryMode::Step, DividerMode::Adaptive, 99);
   walk_random_edges(BoundaryMode::Step, DividerMode::Fixed, 98);
 }
-TEST(EdgeWalker, ClosedFormDivideMode) {
+TEST(ImprovedEdgeWalker, ClosedFormDivideMode) {
   walk_random_edges(BoundaryMode::Divide, DividerMode::Adaptive, 99);
   walk_random_edges(BoundaryMode::Divide, DividerMode::Fixed, 98);
 }
 
-TEST(EdgeWalker, BothModesFindTheSameEntry) {
+TEST(ImprovedEdgeWalker, BothModesFindTheSameEntry) {
   // The step traversal and the division agree on the entry row, edge by edge.
   RasterConfig step_cfg, div_cfg;
   div_cfg.boundary = BoundaryMode::Divide;
-  EdgeNormalizer norm(step_cfg);
-  AdderDivider div(step_cfg);
-  EdgeWalker ws(step_cfg, div), wd(div_cfg, div);
+  ImprovedEdgeNormalizer norm(step_cfg);
+  ImprovedAdderDivider div(step_cfg);
+  ImprovedEdgeWalker ws(step_cfg, div), wd(div_cfg, div);
   TestRng rng{4242};
   int entered = 0;
   for (int it = 0; it < 20000; ++it) {
     const int64_t Xmax = rng.range(0, 500), Ymax = rng.range(0, 2000);
-    const InterfaceEdge e = random_edge(rng, Xmax, 24);
+    const BoxStageEdge e = random_edge(rng, Xmax, 24);
     const NormalizedEdge n = norm.run(e, Xmax, 0);
     ws.start(n, Xmax, Ymax, 0);
     wd.start(n, Xmax, Ymax, 0);
@@ -309,21 +309,21 @@ TEST(EdgeWalker, BothModesFindTheSameEntry) {
   EXPECT_GT(entered, 5000);
 }
 
-TEST(EdgeWalker, SaturatedSlopeLeavesInOneStep) {
+TEST(ImprovedEdgeWalker, SaturatedSlopeLeavesInOneStep) {
   // s >= D * 2^Q: the edge is bound on its entry row only, then clear (dir +) or out (dir -).
   for (BoundaryMode mode : {BoundaryMode::Step, BoundaryMode::Divide}) {
     RasterConfig cfg;
     cfg.boundary = mode;
-    EdgeNormalizer norm(cfg);
-    AdderDivider div(cfg);
-    EdgeWalker walker(cfg, div);
+    ImprovedEdgeNormalizer norm(cfg);
+    ImprovedAdderDivider div(cfg);
+    ImprovedEdgeWalker walker(cfg, div);
     const int64_t u = 256, Xmax = 100, Ymax = 10, s = u * (int64_t(1) << 15) * 3;
     for (bool mirror : {false, true}) {
       for (bool down : {true, false}) {
         // Enter at row 3 with X' = 50: f(0, 3) = T + 3*b = 50*D + 7.
         const int64_t D = u, b = down ? s : -s;
         const int64_t T = 50 * D + 7 - 3 * b;
-        InterfaceEdge e;
+        BoxStageEdge e;
         e.a = mirror ? D : -D;
         e.b = b;
         e.E_L = mirror ? T - Xmax * e.a : T;
@@ -409,7 +409,7 @@ TEST(UnitWidths, VertexCoordinates) {
   // One past the signed p-bit range (a setup the scene reader would refuse) is rejected.
   TriangleSetup t = setup_scene({InputTriangle{{lo, hi, lo}, {lo, lo, hi}}}, cfg).tris[0];
   t.v[1].x = int64_t(1) << (w.vertex - 1);
-  Interface iface(cfg);
+  BoxStage iface(cfg);
   try {
     iface.run(t);
     FAIL() << "a coordinate one past the range was accepted";

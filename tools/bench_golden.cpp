@@ -19,7 +19,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
 #include "golden/helper_pool.hpp"
 #include "scene/scene.hpp"

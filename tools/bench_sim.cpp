@@ -22,10 +22,10 @@
 #include <systemc>  // declares sc_main extern "C"
 #include <vector>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "core/setup.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/setup.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;
@@ -119,8 +119,8 @@ int sc_main(int argc, char** argv) {
   for (const std::string& name : scenes) {
     const Scene scene = make_builtin(name, cfg, CameraOptions{});
     const SetupResult setup = setup_scene(scene.tris, cfg);
-    auto model = unit == "improved2" ? make_improved2_model_engine() : make_model_engine();
-    auto trad = make_trad_model_engine();
+    auto model = unit == "improved2" ? make_improved2_sc_engine() : make_improved_sc_engine();
+    auto trad = make_trad_sc_engine();
     std::unique_ptr<Engine> r = rtl ? rtl->make() : nullptr;
     Timing m, t, rt;
     for (int i = 0; i < std::max(repeat, rtl ? rtl_repeat : 0); ++i) {

@@ -8,9 +8,9 @@
 #include <systemc>  // declares sc_main extern "C"
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "benchmark_scenes.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;
@@ -57,8 +57,8 @@ int sc_main(int argc, char** argv) {
     }
     const SetupResult setup = setup_scene(scene.tris, cfg);
     const double n = setup.tris.empty() ? 1.0 : double(setup.tris.size());
-    auto model = make_model_engine();
-    auto trad = make_trad_model_engine();
+    auto model = make_improved_sc_engine();
+    auto trad = make_trad_sc_engine();
     const Run i = run(*model, setup, cfg);
     const Run t = run(*trad, setup, cfg);
     RasterConfig cfg4 = cfg;
@@ -70,21 +70,21 @@ int sc_main(int argc, char** argv) {
     RasterConfig cfgf = cfg;
     cfgf.divider = DividerMode::Fixed;
     const Run ifx = run(*model, setup, cfgf);
-    auto hs = make_halfspace_model_engine();
+    auto hs = make_halfspace_sc_engine();
     const Run h = run(*hs, setup, cfg);
     RasterConfig cfgh4 = cfg;
-    cfgh4.hs_stamp = 4;
-    cfgh4.hs_tile = 16;
+    cfgh4.halfspace.stamp = 4;
+    cfgh4.halfspace.tile = 16;
     const Run h4 = run(*hs, setup, cfgh4);
     RasterConfig cfgh1 = cfg;
-    cfgh1.hs_stamp = 1;
-    cfgh1.hs_tile = 0;
+    cfgh1.halfspace.stamp = 1;
+    cfgh1.halfspace.tile = 0;
     const Run h1 = run(*hs, setup, cfgh1);
-    auto gen2 = make_improved2_model_engine();
+    auto gen2 = make_improved2_sc_engine();
     RasterConfig cfgg = cfg;
-    cfgg.g2_corner_form = 1;
+    cfgg.improved2.corner_form = 1;
     const Run g = run(*gen2, setup, cfgg);
-    cfgg.g2_corner_form = 0;
+    cfgg.improved2.corner_form = 0;
     const Run gd = run(*gen2, setup, cfgg);
     sum_i += i.cycles;
     sum_t += t.cycles;

@@ -29,9 +29,9 @@
 #include <systemc>  // declares sc_main extern "C"
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "benchmark_scenes.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;
@@ -45,13 +45,13 @@ struct Unit {
 const Unit kUnits[] = {{"improved", 0}, {"trad", 0}, {"hs1", 1}, {"hs2", 2}, {"hs4", 4}};
 
 std::unique_ptr<Engine> make(const Unit& u) {
-  if (u.stamp > 0) return make_halfspace_model_engine();
-  return std::string(u.name) == "improved" ? make_model_engine() : make_trad_model_engine();
+  if (u.stamp > 0) return make_halfspace_sc_engine();
+  return std::string(u.name) == "improved" ? make_improved_sc_engine() : make_trad_sc_engine();
 }
 
 RasterConfig config_of(const Unit& u) {
   RasterConfig cfg;  // the defaults: tile 8, zigzag
-  if (u.stamp > 0) cfg.hs_stamp = u.stamp;
+  if (u.stamp > 0) cfg.halfspace.stamp = u.stamp;
   return cfg;
 }
 

@@ -11,10 +11,10 @@
 #include "cli/commands.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/scene_options.hpp"
-#include "core/engine.hpp"
-#include "core/fixed_point.hpp"
-#include "core/temporary_files.hpp"
-#include "core/span_diff.hpp"
+#include "common/engine.hpp"
+#include "common/fixed_point.hpp"
+#include "common/temporary_files.hpp"
+#include "common/span_diff.hpp"
 #include "engines.hpp"
 #include "golden/golden.hpp"
 #include "io/cycles_file.hpp"
@@ -76,19 +76,19 @@ RasterConfig config_from(const Args& a) {
   cfg.endpoints = int(a.get_int("--endpoints", 1, 4));
   cfg.fifo_depth = int(a.get_int("--fifo-depth", 1, 1024));
   cfg.sink_stall = a.get("--sink-stall");
-  cfg.hs_stamp = int(a.get_int("--stamp", 1, 4));
+  cfg.halfspace.stamp = int(a.get_int("--stamp", 1, 4));
   try {
     const std::string tile = a.get("--tile");
     if (tile == "none") {
-      cfg.hs_tile = 0;
+      cfg.halfspace.tile = 0;
     } else {
-      cfg.hs_tile = int(a.get_int("--tile", 8, 16));
+      cfg.halfspace.tile = int(a.get_int("--tile", 8, 16));
     }
-    cfg.hs_walk = parse_hs_walk(a.get("--hs-walk"));
+    cfg.halfspace.walk = parse_halfspace_walk(a.get("--hs-walk"));
     cfg.cull = parse_cull_mode(a.get("--cull"));
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
     cfg.divider = parse_divider_mode(a.get("--divider"));
-    cfg.g2_corner_form = parse_corner_form(a.get("--corner-form"));
+    cfg.improved2.corner_form = parse_corner_form(a.get("--corner-form"));
     cfg.validate();
   } catch (const std::invalid_argument& e) {
     throw UsageError("trirast " + a.command() + ": " + e.what());

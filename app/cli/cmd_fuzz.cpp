@@ -14,13 +14,13 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
-#include "fuzz/fuzz_scene.hpp"
+#include "common/fuzz_scene.hpp"
 #include "io/output_file.hpp"
 #include "util.hpp"
-#include "verilator/rtl_builds.hpp"
-#include "verilator/rtl_hs_engine.hpp"
+#include "common/rtl_builds.hpp"
+#include "halfspace/halfspace_rtl_engine.hpp"
 
 namespace trirast {
 
@@ -220,7 +220,7 @@ int cmd_fuzz(int argc, char** argv) {
     // The half-space unit's stamp, tile and walk: among halfspace-rtl's builds of these widths
     // when it runs (it then never skips a scene for them), else among all.
     draw_fuzz_hs_config(draws, cfg,
-                        hs_rtl ? rtl::halfspace_built_params(cfg) : std::vector<HsParams>{});
+                        hs_rtl ? rtl::halfspace_built_params(cfg) : std::vector<HalfspaceParams>{});
     triangles += tris.size();
     uint64_t golden_pixels = 0;
     std::vector<std::string> skipped;

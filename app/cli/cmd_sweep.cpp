@@ -23,8 +23,8 @@
 #include "cli/commands.hpp"
 #include "cli/scene_options.hpp"
 #include "cli/source_files.hpp"
-#include "core/temporary_files.hpp"
-#include "core/engine.hpp"
+#include "common/temporary_files.hpp"
+#include "common/engine.hpp"
 #include "engines.hpp"
 #include "io/json.hpp"
 #include "io/output_file.hpp"
@@ -293,7 +293,7 @@ Json area_model_json(const AreaModel& area, const std::string& csv) {
       c.coord_int_bits = r.coord_bits;
       c.box_bits = r.box_bits;
       c.endpoints = r.endpoints;
-      c.g2_corner_form = r.unit == "improved2-products" ? 0 : 1;
+      c.improved2.corner_form = r.unit == "improved2-products" ? 0 : 1;
       const Area e = area.estimate(r.unit == "trad" ? UnitKind::Trad
                                    : g2             ? UnitKind::Improved2
                                                     : UnitKind::Improved,
@@ -723,7 +723,7 @@ int cmd_fit(int argc, char** argv) {
     SweepPoint p;
     p.engine = gen2 ? "improved2-datapath" : "improved-datapath";
     p.group = "fit";
-    p.cfg.g2_corner_form = corner_form;
+    p.cfg.improved2.corner_form = corner_form;
     p.cfg.width = base.width;
     p.cfg.height = base.height;
     p.cfg.subpixel_bits = S;
@@ -814,7 +814,7 @@ int cmd_fit(int argc, char** argv) {
   RasterConfig def_cfg;
   def_cfg.width = base.width;
   def_cfg.height = base.height;
-  def_cfg.g2_corner_form = corner_form;
+  def_cfg.improved2.corner_form = corner_form;
   const PointResult def_run = timed(def_cfg);
   const PointResult fit_run = timed(best->point.cfg);
   // The timed model runs the same datapath as the unit: its spans must agree.

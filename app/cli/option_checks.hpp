@@ -8,7 +8,7 @@
 #include <map>
 #include <string>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 
 namespace trirast {
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cli/args.hpp"
-#include "core/engine.hpp"
-#include "core/setup.hpp"
+#include "common/engine.hpp"
+#include "common/setup.hpp"
 
 namespace trirast {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "core/span_diff.hpp"
+#include "common/span_diff.hpp"
 #include "io/json.hpp"
 
 namespace trirast {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/engine.hpp"
-#include "core/span.hpp"
+#include "common/engine.hpp"
+#include "common/span.hpp"
 #include "io/image.hpp"
 
 namespace trirast {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/span.hpp"
-#include "core/span_diff.hpp"
+#include "common/span.hpp"
+#include "common/span_diff.hpp"
 
 namespace trirast {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/temporary_files.hpp"
+#include "common/temporary_files.hpp"
 
 namespace trirast {
 

@@ -3,7 +3,7 @@
 #pragma once
 #include <string>
 
-#include "core/span.hpp"
+#include "common/span.hpp"
 
 namespace trirast {
 

@@ -7,11 +7,11 @@
 #include <set>
 #include <stdexcept>
 
-#include "core/engine.hpp"
-#include "core/fixed_point.hpp"
-#include "core/span_diff.hpp"
+#include "common/engine.hpp"
+#include "common/fixed_point.hpp"
+#include "common/span_diff.hpp"
 #include "engines.hpp"
-#include "reference/watertight.hpp"
+#include "common/watertight.hpp"
 #include "util.hpp"
 
 namespace trirast {
@@ -101,11 +101,11 @@ std::string SweepPoint::config_name() const {
   } else if (kind() == UnitKind::Improved2) {
     // Step, adaptive, untruncated always (the gen2 engines ignore those options): not named.
     s += " b" + std::to_string(cfg.box_bits) + " N" + std::to_string(cfg.endpoints) + " gen2";
-    if (engine == "improved2-sc") s += cfg.g2_corner_form == 0 ? " dsp" : " radix16";
+    if (engine == "improved2-sc") s += cfg.improved2.corner_form == 0 ? " dsp" : " radix16";
   } else if (kind() == UnitKind::Halfspace) {
-    s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.hs_stamp) +
-         (cfg.hs_tile > 0 ? " t" + std::to_string(cfg.hs_tile) : std::string(" t-")) + " " +
-         hs_walk_name(cfg.hs_walk);
+    s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.halfspace.stamp) +
+         (cfg.halfspace.tile > 0 ? " t" + std::to_string(cfg.halfspace.tile) : std::string(" t-")) + " " +
+         halfspace_walk_name(cfg.halfspace.walk);
   }
   return s;
 }
@@ -120,7 +120,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   std::set<std::string> seen;
   auto add = [&](const std::string& engine, const std::string& group, int S, int coord, int box,
                  int K, int N, DividerMode div = DividerMode::Adaptive,
-                 BoundaryMode bnd = BoundaryMode::Step, int g2_corner_form = 1) {
+                 BoundaryMode bnd = BoundaryMode::Step, int improved2_corner_form = 1) {
     SweepPoint p;
     p.engine = engine;
     p.group = group;
@@ -131,7 +131,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     p.cfg.endpoints = N;
     p.cfg.divider = div;
     p.cfg.boundary = bnd;
-    p.cfg.g2_corner_form = g2_corner_form;
+    p.cfg.improved2.corner_form = improved2_corner_form;
     if (!wanted(engine)) return;
     if (!seen.insert(p.label()).second) return;  // the same configuration in two groups
     pts.push_back(p);
@@ -139,17 +139,17 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   // The half-space unit (only when --engines names it): its build parameters at the default
   // widths; its RTL at the stamp / tile / walk configurations that are Verilated
   // (cmake/trirast_rtl_builds.cmake).
-  auto add_hs = [&](const std::string& engine, int stamp, int tile, HsWalk walk) {
+  auto add_hs = [&](const std::string& engine, int stamp, int tile, HalfspaceWalk walk) {
     if (!wanted(engine)) return;
     SweepPoint p;
     p.engine = engine;
     p.group = "half-space";
-    p.cfg.hs_stamp = stamp;
-    p.cfg.hs_tile = tile;
-    p.cfg.hs_walk = walk;
+    p.cfg.halfspace.stamp = stamp;
+    p.cfg.halfspace.tile = tile;
+    p.cfg.halfspace.walk = walk;
     if (seen.insert(p.label()).second) pts.push_back(p);
   };
-  const auto Row = HsWalk::Row, Zz = HsWalk::Zigzag;
+  const auto Row = HalfspaceWalk::Row, Zz = HalfspaceWalk::Zigzag;
   auto add_hs_points = [&] {
     if (quick) {
       add_hs("halfspace-sc", 1, 8, Zz);
@@ -158,7 +158,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     } else {
       for (int stamp : {1, 2, 4})
         for (int tile : {8, 16, 0})
-          for (HsWalk walk : {Zz, Row}) add_hs("halfspace-sc", stamp, tile, walk);
+          for (HalfspaceWalk walk : {Zz, Row}) add_hs("halfspace-sc", stamp, tile, walk);
     }
     add_hs("halfspace-datapath", 2, 8, Zz);
     add_hs("halfspace-rtl", 2, 8, Zz);
@@ -560,12 +560,12 @@ Json sweep_point_json(const SweepPoint& p) {
         .set("boundary", boundary_mode_name(c.boundary));
   if (p.kind() == UnitKind::Halfspace)
     j.set("box_bits", c.box_bits)
-        .set("stamp", c.hs_stamp)
-        .set("tile", c.hs_tile)
-        .set("walk", hs_walk_name(c.hs_walk));
+        .set("stamp", c.halfspace.stamp)
+        .set("tile", c.halfspace.tile)
+        .set("walk", halfspace_walk_name(c.halfspace.walk));
   if (p.kind() == UnitKind::Improved2) {
     j.set("box_bits", c.box_bits).set("endpoints", c.endpoints);
-    if (p.engine == "improved2-sc") j.set("corner_form", c.g2_corner_form == 0 ? "dsp" : "radix16");
+    if (p.engine == "improved2-sc") j.set("corner_form", c.improved2.corner_form == 0 ? "dsp" : "radix16");
   }
   return j;
 }

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "core/config.hpp"
-#include "core/setup.hpp"
-#include "core/span.hpp"
+#include "common/config.hpp"
+#include "common/setup.hpp"
+#include "common/span.hpp"
 #include "io/json.hpp"
 #include "sweep/sweep_area.hpp"
 #include "scene/scene.hpp"
@@ -40,7 +40,7 @@ struct SweepPoint {
   // traditional unit, and the improved unit without quotient truncation (K) and with the default
   // FIFO depth. An improved configuration with K is a C++-model-only what-if: no RTL, its area
   // stays an estimate, and it is never on a hardware front. The second-generation unit
-  // (improved2-*) is buildable at the default FIFO depth (rtl/trirast_improved2.f, both corner
+  // (improved2-*) is buildable at the default FIFO depth (rtl/improved2/trirast_improved2.f, both corner
   // forms, any widths).
   bool rtl() const;
   // "S8 c16 b14 K- N1" plus "fixed" / "divide" when not the default; the second-generation unit

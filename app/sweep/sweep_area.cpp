@@ -27,8 +27,8 @@ std::string synth_unit_name(UnitKind k, const RasterConfig& cfg) {
   switch (k) {
     case UnitKind::Improved:
     case UnitKind::Trad: return unit_kind_name(k);
-    case UnitKind::Halfspace: return "halfspace-s" + std::to_string(cfg.hs_stamp);
-    case UnitKind::Improved2: return cfg.g2_corner_form == 0 ? "improved2-products" : "improved2";
+    case UnitKind::Halfspace: return "halfspace-s" + std::to_string(cfg.halfspace.stamp);
+    case UnitKind::Improved2: return cfg.improved2.corner_form == 0 ? "improved2-products" : "improved2";
     default: return "";
   }
 }
@@ -128,7 +128,7 @@ AreaTerms improved2_area_terms(const RasterConfig& cfg) {
   const double F = cfg.frac_bits(), p = cfg.coord_int_bits + F, c = cfg.coord_int_bits;
   const double A = p + 1, D = p + F, E = 2 * p + 2, bb = cfg.box_bits;
   const double Q = cfg.box_bits + 1, X = Q + 2, N = cfg.endpoints;
-  const bool radix16 = cfg.g2_corner_form != 0;
+  const bool radix16 = cfg.improved2.corner_form != 0;
   AreaTerms t;
   // Flip-flops.
   t.ffs += 6 * p + 3 * 2 * A;                               // triangle register (v, A, B)
@@ -242,7 +242,7 @@ void AreaModel::calibrate() {
   trad_scale_ = scale("trad", def, trad_area_terms, {lut_scale_, ff_scale_});
   for (int form = 0; form < 2; ++form) {
     RasterConfig g2 = def;
-    g2.g2_corner_form = form;
+    g2.improved2.corner_form = form;
     g2_scale_[form] = scale(synth_unit_name(UnitKind::Improved2, g2), g2, improved2_area_terms, {0, 0});
   }
 }
@@ -276,7 +276,7 @@ void AreaModel::add_rows(const std::vector<SynthRow>& rows) {
 Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
   Area a;
   if (kind == UnitKind::Improved2) {
-    const std::pair<double, double>& k = g2_scale_[cfg.g2_corner_form != 0];
+    const std::pair<double, double>& k = g2_scale_[cfg.improved2.corner_form != 0];
     if (k.first <= 0) return a;  // not calibrated: no synthesis of this corner form
     const AreaTerms t = improved2_area_terms(cfg);
     a.luts = std::round(t.luts * k.first);
@@ -316,7 +316,7 @@ Area AreaModel::area(UnitKind kind, const RasterConfig& cfg) const {
   bool fixed_match = cfg.fifo_depth == synth_like.fifo_depth;
   if (kind == UnitKind::Improved) fixed_match = fixed_match && cfg.divider_quotient_bits == 0;
   if (kind == UnitKind::Halfspace)
-    fixed_match = fixed_match && cfg.hs_tile == synth_like.hs_tile && cfg.hs_walk == synth_like.hs_walk;
+    fixed_match = fixed_match && cfg.halfspace.tile == synth_like.halfspace.tile && cfg.halfspace.walk == synth_like.halfspace.walk;
   if (fixed_match)
     if (const SynthRow* r = find(synth_unit_name(kind, cfg), cfg)) {
       a.luts = r->luts;

@@ -9,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 
 namespace trirast {
 

@@ -7,7 +7,7 @@
 // Along a block row the blocks that an edge does not reject form a half-line (its largest corner
 // value grows with x when A > 0, shrinks when A < 0, is constant when A == 0), so the blocks no
 // edge rejects form one run: a row can be left at its first rejected block after a kept one.
-#include "core/fixed_point.hpp"
+#include "common/fixed_point.hpp"
 #include "golden/golden.hpp"
 #include "golden/traversal_common.hpp"
 

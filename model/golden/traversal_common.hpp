@@ -7,9 +7,9 @@
 #include <limits>
 #include <vector>
 
-#include "core/config.hpp"
-#include "core/setup.hpp"
-#include "core/span.hpp"
+#include "common/config.hpp"
+#include "common/setup.hpp"
+#include "common/span.hpp"
 
 namespace trirast::golden_detail {
 

@@ -3,7 +3,7 @@
 // start each row at the previous row's span and walk only as far as the span reaches).
 #include "golden/golden.hpp"
 #include "golden/traversal_common.hpp"
-#include "core/fixed_point.hpp"
+#include "common/fixed_point.hpp"
 
 namespace trirast {
 

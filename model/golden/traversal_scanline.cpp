@@ -7,7 +7,7 @@
 //   A < 0 (right edge):  x_end   <= floor((K + h*A) / (-u*A)) + 1
 //   A == 0 (horizontal): the row is wholly in (K >= 0) or wholly out
 // From one row to the next K grows by u*B, so each numerator moves by a constant.
-#include "core/fixed_point.hpp"
+#include "common/fixed_point.hpp"
 #include "golden/golden.hpp"
 
 namespace trirast {
@@ -16,7 +16,7 @@ namespace {
 
 // floor(n / d) kept as quotient q and remainder r (n = q*d + r, 0 <= r < d) while n moves by a
 // constant step s each row: q and r move by floor(s / d) and its remainder, plus a carry.
-struct EdgeWalker {
+struct ImprovedEdgeWalker {
   int64_t q, r, d, step_q, step_r;
   void init(int64_t n, int64_t d_, int64_t s) {
     d = d_;
@@ -43,7 +43,7 @@ void traverse_scanline(const TriangleSetup& t, const RasterConfig& cfg, SpanList
   if (t.box.empty()) return;
   const int64_t u = cfg.unit(), h = cfg.half();
   const int64_t cy0 = pixel_centre(t.box.y0, cfg);
-  EdgeWalker left[3], right[3];
+  ImprovedEdgeWalker left[3], right[3];
   int n_left = 0, n_right = 0;
   int64_t flat_k[3];  // K of the horizontal edges, stepped by u*B
   int64_t flat_step[3];

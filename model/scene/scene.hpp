@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "core/config.hpp"
-#include "core/setup.hpp"
+#include "common/config.hpp"
+#include "common/setup.hpp"
 
 namespace trirast {
 

@@ -1,6 +1,6 @@
 // gen2 study reference (not a unit; scripts/gen2_study.sh): the first generation's three edge
-// normalizers and three edge lanes (rtl/trirast_edge_normalizer.sv, rtl/trirast_edge_lane.sv)
-// connected as in rtl/trirast_setup_stage.sv, fed with the interface's outputs (A, B, E_L, E_R,
+// normalizers and three edge lanes (rtl/improved/trirast_improved_edge_normalizer.sv, rtl/improved/trirast_improved_edge_lane.sv)
+// connected as in rtl/improved/trirast_improved_setup_stage.sv, fed with the interface's outputs (A, B, E_L, E_R,
 // Xmax, Ymax), so that the lanes are measured with the operand structure they see in the unit
 // (D = |A|*u and s = |B|*u have F zero low bits) and with the iteration counts of the adaptive
 // divider computed as there. TieMode = 1: the boundary mode tied to step and the divider to
@@ -60,13 +60,13 @@ module g1_lanes #(
     logic horiz, mirror, dir_down;
     logic signed [EB-1:0] t, t1;
     logic [SB-1:0] d, s;
-    trirast_edge_normalizer u_normalizer (
+    trirast_improved_edge_normalizer u_normalizer (
       .a_i (a_i[k*CB +: CB]), .b_i (b_i[k*CB +: CB]),
       .el_i (el_i[k*EB +: EB]), .er_i (er_i[k*EB +: EB]),
       .horiz_o (horiz), .mirror_o (mirror), .dir_down_o (dir_down),
       .t_o (t), .t1_o (t1), .d_o (d), .s_o (s));
     /* verilator lint_off PINCONNECTEMPTY */
-    trirast_edge_lane u_lane (
+    trirast_improved_edge_lane u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .divide_i (divide), .qx_i (qx), .qy_i (qy),
       .load_i (load_i), .horiz_i (horiz), .mirror_i (mirror), .dir_down_i (dir_down),
       .t_i (t), .t1_i (t1), .d_i (d), .s_i (s), .xmax_i (xmax_i), .ymax_i (ymax_i),

@@ -1,5 +1,5 @@
 // gen2 study reference (not a unit; scripts/gen2_study.sh): the first generation's walk stage
-// (rtl/trirast_walk_stage.sv, N = 1) and span FIFO connected as in rtl/trirast_top.sv (the push
+// (rtl/improved/trirast_improved_walk_stage.sv, N = 1) and span FIFO connected as in rtl/improved/trirast_improved_top.sv (the push
 // combinational from the walkers into the FIFO), with g2_walk_slice's ports, so that both are
 // measured the same way.
 module g1_walk_fifo #(
@@ -41,7 +41,7 @@ module g1_walk_fifo #(
   logic [TB-1:0] tag;
   logic [trirast_pkg::RowBits-1:0] row;
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_walk_stage #(
+  trirast_improved_walk_stage #(
     .NumEndpoints (1),
     .CountBits    (CountBits),
     .EntryBits    (EntryBits)

@@ -1,6 +1,6 @@
 // gen2 study: a random cross-check of the box stage prototypes (scripts/gen2_study.sh --check,
 // built with Verilator's --binary). Each triangle's box and empty flag come from the first generation's
-// interface (rtl/trirast_interface.sv: accept, then StBox's empty_o, then the registered box),
+// interface (rtl/common/trirast_box_stage.sv: accept, then StBox's empty_o, then the registered box),
 // its operands from the formula (cx0 = x0*u + h, dxL = cx0 - vx_k, dy = cy0 - vy_k, magnitude and
 // sign). Three designs then take the same triangles, each with its own random offer and stall
 // pattern: g2_box_stage (Split = 0, one cycle), g2_box_stage3 (PortMinMax = 0 and 1). Each design's
@@ -47,7 +47,7 @@ module g2_box_check_tb;
   logic [3*P-1:0] g1_vx, g1_vy;
   logic [PB-1:0] g1_x0, g1_y0;
   logic [BB-1:0] g1_xmax, g1_ymax;
-  trirast_interface u_g1 (.clk_i (clk), .rst_ni (rst_n), .vp_xmax_i (vpx), .vp_ymax_i (vpy),
+  trirast_box_stage u_g1 (.clk_i (clk), .rst_ni (rst_n), .vp_xmax_i (vpx), .vp_ymax_i (vpy),
     .accept_i (g1_accept), .tag_i (g1_tag), .vx_i (g1_vx), .vy_i (g1_vy), .a_i ('0), .b_i ('0),
     .c_i ('0), .bias_i ('0), .box_i (g1_box), .empty_o (g1_empty), .tag_o (), .x0_o (g1_x0),
     .y0_o (g1_y0), .xmax_o (g1_xmax), .ymax_o (g1_ymax), .a_o (), .b_o (), .el_o (), .er_o ());

@@ -1,7 +1,7 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): the box stage B of the recommended
 // gen2 front end (docs/gen2-design.md). Takes an accepted triangle (its register: tag, vertices,
 // A, B, bias; no C: the corner values are vertex-relative), computes in one cycle the pixel box
-// as gen1's interface does (rtl/trirast_interface.sv), the empty flag, and the corner stage's
+// as gen1's interface does (rtl/common/trirast_box_stage.sv), the empty flag, and the corner stage's
 // operands: per edge k the magnitudes and signs of dxL = cx0 - vx_k and dy = cy0 - vy_k, all
 // registered into the corner stage's input register when that stage takes the triangle.
 // Split = 1: two pipeline cycles, B1 (the vertices' min and max, registered with the triangle)

@@ -1,6 +1,6 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): the box stage B of the recommended
 // gen2 front end (docs/gen2-design.md, section 2) in three pipelined steps, with valid bits and
-// back-pressure. Same function as g2_box_stage.sv (gen1's box, rtl/trirast_interface.sv, and the
+// back-pressure. Same function as g2_box_stage.sv (gen1's box, rtl/common/trirast_box_stage.sv, and the
 // corner stage's operands |dxL|, |dy| with their signs), retimed so that no step has more than
 // one carry chain in series:
 //  step 1  per vertex the first pixel whose centre is at or right of it, ceil((v - h)/u) =

@@ -22,7 +22,7 @@ module g2_check_tb;
   // ---------------- corner values ----------------
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
-  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_improved2_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic [BB-1:0] xmax;
@@ -31,13 +31,13 @@ module g2_check_tb;
   logic start;
   logic busy2, busy4, busy16, busym4, busym16;
   logic [3*EB-1:0] m4_el, m16_el, mul_el;
-  trirast_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
+  trirast_improved2_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .x1_i (x0), .x1sel_i (3'b000),
     .y0_i (y0), .el_o (mul_el));
-  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  trirast_improved2_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym4), .el_o (m4_el));
-  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  trirast_improved2_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym16), .el_o (m16_el));
   g2_corner_narrow #(.NarrowBits (13)) u_narrow (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b),
@@ -70,17 +70,17 @@ module g2_check_tb;
   logic signed [XB-1:0] ex, x1;
   logic [BB:0] bnd2, bnd3;
   logic m1, m2, m3;
-  trirast_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
+  trirast_improved_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (ex), .entry_e_i (ee),
     .xmax_i (xmax), .row_i (row), .adv_i (adv), .adv_rows_i (3'd1), .mirror_o (m1),
     .row_state_o (st1), .row_x_o (x1));
-  trirast_edge_walker2 u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
+  trirast_improved2_edge_walker u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (load), .mirror_i (mirror),
     .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat), .enters_i (enters),
     .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef), .entry_b_i (eb),
     .adv_i (adv), .mirror_o (m2), .row_state_o (st2), .row_bound_o (bnd2));
   // The iCE40 fit's walker (carry-in step, no entry copies): the same rows.
-  trirast_edge_walker2 #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
+  trirast_improved2_edge_walker #(.CarrySelect (1'b0)) u_w3 (.clk_i (clk), .rst_ni (rst_n), .load_i (load),
     .mirror_i (mirror), .dir_down_i (dir), .d_i (d), .qs_i (qs), .rs_i (rs), .ssat_i (ssat),
     .enters_i (enters), .j_entry_i (je), .entry_state_i (est), .entry_x_i (eo), .entry_e_i (ef),
     .entry_b_i (eb), .adv_i (adv), .mirror_o (m3), .row_state_o (st3), .row_bound_o (bnd3));
@@ -92,9 +92,9 @@ module g2_check_tb;
   logic [2:0] gm;
   logic v1, v2;
   logic [BB:0] b1, e1, b2, e2;   // gen2's: begin - 1, end - 1 (its bounds are gen1's - 1)
-  trirast_span_generator u_g1 (.state_i (gst), .x_i (gx), .mirror_i (gm), .xmax_i (xmax),
+  trirast_improved_span_generator u_g1 (.state_i (gst), .x_i (gx), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v1), .begin_o (b1), .end_o (e1));
-  trirast_span_generator2 u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
+  trirast_improved2_span_generator u_g2 (.state_i (gst), .bound_i (gb), .mirror_i (gm), .xmax_i (xmax),
     .valid_o (v2), .begin_o (b2), .end_o (e2));
 
   // ---------------- 2x2 direct test ----------------
@@ -104,7 +104,7 @@ module g2_check_tb;
   logic [2*PB-1:0] t_y, t_xb;
   logic [2*(PB+1)-1:0] t_xe;
   int tiny_spans = 0;
-  trirast_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .ab_i (t_ab), .far_i (3'b000),
+  trirast_improved2_direct_test_2x2 #(.W (EB)) u_box (.el_i (t_el), .a_i (t_a), .b_i (t_b), .ab_i (t_ab), .far_i (3'b000),
     .fneg_i (3'b000), .xmax_i (t_xm), .ymax_i (t_ym),
     .x0_i (x0), .y0_i (y0), .valid_o (t_valid), .y_o (t_y), .xb_o (t_xb), .xe_o (t_xe));
   // The unit's form (TestHi): E_L >> F in EB - F bits, A and B in CB bits, the sums' signs from
@@ -116,7 +116,7 @@ module g2_check_tb;
   logic [2*(PB+1)-1:0] s_xe;
   int split_boxes = 0;
   logic [2:0] s_far, s_fneg;   // E_L outside [-2^(CB+2), 2^(CB+2)), as the unit's corner unit says
-  trirast_direct_test_2x2 #(.W (TW), .SW (CB)) u_boxs (.el_i (s_el), .a_i (s_a), .b_i (s_b), .ab_i (s_ab),
+  trirast_improved2_direct_test_2x2 #(.W (TW), .SW (CB)) u_boxs (.el_i (s_el), .a_i (s_a), .b_i (s_b), .ab_i (s_ab),
     .far_i (s_far), .fneg_i (s_fneg),
     .xmax_i (t_xm), .ymax_i (t_ym), .x0_i (x0), .y0_i (y0), .valid_o (s_valid), .y_o (s_y),
     .xb_o (s_xb), .xe_o (s_xe));

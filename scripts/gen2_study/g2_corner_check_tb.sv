@@ -1,16 +1,16 @@
 // gen2 study: a random cross-check of the MSB-first corner-value prototypes (g2_corner_signmag radix
 // 4 and 16, radix 16 with SignFold and RegMult, g2_corner_msb16p alone, with the digit register and
-// with the start registers) and of the unit's signed-digit corner unit (rtl/trirast_corner_serial,
+// with the start registers) and of the unit's signed-digit corner unit (rtl/improved2/trirast_improved2_corner_serial,
 // radix 4 and 16) against the formula
 // E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, on operands drawn over the full widths of the package
 // (scripts/gen2_study.sh --check; Verilator --binary). Unlike g2_check_tb's corner trials (vertices
 // of a triangle near the box), the vertices here are drawn over the full widths and include the
 // extremes: vertices in {-2^(P-1), 2^(P-1) - 1, cx0, cy0 (a zero operand)}, so A and B (the
 // vertices' edge coefficients, A_k = y_k - y_k+1, B_k = x_k+1 - x_k, as the unit forms them:
-// trirast_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box corners 0
+// trirast_improved2_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box corners 0
 // and 2^PB - 1. It also checks g2_corner_msb16p's cycle count: busy for
 // max(1, ceil(bits / 4)) + Depth cycles after the start, bits = the largest bit length of the six
-// magnitudes |cx0 - vx|, |cy0 - vy|; and trirast_corner_serial's (radix 16): busy for the fewest
+// magnitudes |cx0 - vx|, |cy0 - vy|; and trirast_improved2_corner_serial's (radix 16): busy for the fewest
 // digits of 4 bits in which v0's and v1's operands fit as two's complement numbers. Not part of
 // the test suite.
 module g2_corner_check_tb;
@@ -27,18 +27,18 @@ module g2_corner_check_tb;
 
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
-  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_improved2_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic start;
   logic busy_m4, busy_m16, busy_m16s, busy_m16r, busy_p0, busy_p1, busy_ps, busy_sd4, busy_sd16;
   logic [3*EB-1:0] el_m4, el_m16, el_m16s, el_m16r, el_p0, el_p1, el_ps, el_sd4, el_sd16;
 
-  // The unit's corner unit: signed-digit pairs (rtl/trirast_corner_serial.sv).
-  trirast_corner_serial #(.DigitBits (2)) u_sd4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  // The unit's corner unit: signed-digit pairs (rtl/improved2/trirast_improved2_corner_serial.sv).
+  trirast_improved2_corner_serial #(.DigitBits (2)) u_sd4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
     .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd4), .el_o (el_sd4));
-  trirast_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_improved2_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
     .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd16), .el_o (el_sd16),
     .far_o (far_sd16), .fneg_o (fneg_sd16));

@@ -1,4 +1,4 @@
-// gen2 study prototype (not a unit; scripts/gen2_study.sh): trirast_corner_serial's MSB-first radix-16
+// gen2 study prototype (not a unit; scripts/gen2_study.sh): trirast_improved2_corner_serial's MSB-first radix-16
 // E_L (E_L = A*dxL + B*dy - bias, dxL = cx0 - vx, dy = cy0 - vy, the three edges at once),
 // pipelined for the iCE40 HX's 50 MHz target:
 //  - the multiplicands are registered at the start with the operand's sign applied, and with

@@ -1,9 +1,9 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh rows g2.corner_msb4, g2.corner_msb16,
 // g2.corner_msb16f, and g2_corner_check_tb): the second-generation unit's corner unit as rtl/ had
-// it until its signed-digit pairs (rtl/trirast_corner_serial.sv, docs/gen2-design.md "The corner
+// it until its signed-digit pairs (rtl/improved2/trirast_improved2_corner_serial.sv, docs/gen2-design.md "The corner
 // unit's signed-digit pairs"): operand magnitudes and signs, the multiplicands' digit products by
 // shift-and-add. Kept here so the study's rows measure the circuit they describe. As it was:
-// The second-generation improved unit's corner unit, CornerForm 1 (rtl/trirast_improved2.f, the
+// The second-generation improved unit's corner unit, CornerForm 1 (rtl/improved2/trirast_improved2.f, the
 // iCE40 form): vertex-relative E_L by digit-serial
 // shift-add, MSB first, DigitBits operand bits per cycle (2: radix 4, 4: radix 16), for the three
 // edges at once:  E_L = A*dxL + B*dy - bias,  dxL = cx0 - vx, dy = cy0 - vy.

@@ -1,5 +1,5 @@
 // gen2 study (scripts/gen2_study.sh --check): trirast_span_fifo_ram (block-RAM storage, registered read,
-// written a cycle ahead of the push) against rtl/trirast_span_fifo.sv (NumEndpoints 1) at depths 2,
+// written a cycle ahead of the push) against rtl/common/trirast_span_fifo.sv (NumEndpoints 1) at depths 2,
 // 4, 8, 16 and 32, on the same random pushes and sink readiness, with phases of mostly pushing,
 // mostly popping and both. As the walk stage, the bench decides a push a cycle ahead, when count +
 // (the push registered now) < depth, writes its span into the block-RAM FIFO then (wr_i, wdata_i)

@@ -1,5 +1,5 @@
-// gen2 study: the redesigned lane (rtl/trirast_edge_lane2.sv) against gen1's normalizer + lane
-// (rtl/trirast_edge_normalizer.sv, rtl/trirast_edge_lane.sv, boundary mode step) on the same edges
+// gen2 study: the redesigned lane (rtl/improved2/trirast_improved2_edge_lane.sv) against gen1's normalizer + lane
+// (rtl/improved/trirast_improved_edge_normalizer.sv, rtl/improved/trirast_improved_edge_lane.sv, boundary mode step) on the same edges
 // (scripts/gen2_study.sh --check; Verilator --binary). Not part of the test suite.
 //
 // Edges: random ones (every field drawn from a mix of special values: zero, limits, +-1, and
@@ -10,14 +10,14 @@
 // Compared bit for bit, per edge: horiz, mirror, dir, D, enters, ssat (non-horizontal edges);
 // q_s, r_s (non-horizontal, not saturated); j_entry and the entry state (when it enters);
 // entry X' and e (when it enters bound). The other values are not read by the walker in those
-// cases (rtl/trirast_edge_walker.sv: a row steps only in RowBound, which needs the entry state
+// cases (rtl/improved/trirast_improved_edge_walker.sv: a row steps only in RowBound, which needs the entry state
 // RowBound, after which a saturated slope turns the row clear or out), and gen2 leaves them
 // undefined; to show that, both lanes' results are loaded into two gen1 walkers and every row's
 // state (and X' on bound rows) is compared, for boxes up to WalkRows rows.
 // Cycles per edge: from the cycle after the load to the first cycle whose registers hold the
 // results (gen1: !busy_o, gen2: done_o).
 module g2_lane_tb #(
-  parameter int PreIter = 0  // trirast_edge_lane2's PreIter
+  parameter int PreIter = 0  // trirast_improved2_edge_lane's PreIter
 );
   localparam int CB = trirast_pkg::CoefBits;
   localparam int EB = trirast_pkg::EdgeBits;
@@ -61,10 +61,10 @@ module g2_lane_tb #(
   logic [WB-1:0] g1_je;
   logic [1:0] g1_est;
   logic signed [XB-1:0] g1_ex;
-  trirast_edge_normalizer u_n1 (.a_i (a), .b_i (b), .el_i (el), .er_i (er), .horiz_o (g1_horiz),
+  trirast_improved_edge_normalizer u_n1 (.a_i (a), .b_i (b), .el_i (el), .er_i (er), .horiz_o (g1_horiz),
     .mirror_o (g1_mirror), .dir_down_o (g1_dir), .t_o (g1_t), .t1_o (g1_t1), .d_o (g1_dn),
     .s_o (g1_sn));
-  trirast_edge_lane u_l1 (.clk_i (clk), .rst_ni (rst_n), .divide_i (1'b0), .qx_i (m),
+  trirast_improved_edge_lane u_l1 (.clk_i (clk), .rst_ni (rst_n), .divide_i (1'b0), .qx_i (m),
     .qy_i (m), .load_i (load), .horiz_i (g1_horiz), .mirror_i (g1_mirror), .dir_down_i (g1_dir),
     .t_i (g1_t), .t1_i (g1_t1), .d_i (g1_dn), .s_i (g1_sn), .xmax_i (xmax), .ymax_i (ymax),
     .busy_o (g1_busy), .done_next_o (g1_dnext), .div_o (g1_div), .horiz_o (g1_horiz_o),
@@ -83,7 +83,7 @@ module g2_lane_tb #(
   // The value at the column the lane traverses.
   logic signed [EB-1:0] lane_e;
   assign lane_e = trirast_pkg::lane_reads_right(a, b) ? er : el;
-  trirast_edge_lane2 #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
+  trirast_improved2_edge_lane #(.PreIter (PreIter)) u_l2 (.clk_i (clk), .rst_ni (rst_n), .m_i (m), .load_i (load), .a_i (a), .b_i (b),
     .e_i (lane_e), .xmax_i (xmax), .ymax_i (ymax), .busy_o (g2_busy), .done_o (g2_done),
     .horiz_o (g2_horiz), .mirror_o (g2_mirror), .dir_down_o (g2_dir), .d_o (g2_d), .qs_o (g2_qs),
     .rs_o (g2_rs), .ssat_o (g2_ssat), .enters_o (g2_enters), .j_entry_o (g2_je),
@@ -99,12 +99,12 @@ module g2_lane_tb #(
   logic wm1, wm2;
   logic [1:0] ws1, ws2;
   logic signed [XB-1:0] wx1, wx2;
-  trirast_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (wload),
+  trirast_improved_edge_walker #(.NumEndpoints (1)) u_w1 (.clk_i (clk), .rst_ni (rst_n), .load_i (wload),
     .mirror_i (g1_mirror_o), .dir_down_i (g1_dir_o), .d_i (g1_d), .qs_i (g1_qs), .rs_i (g1_rs),
     .ssat_i (g1_ssat), .enters_i (g1_enters), .j_entry_i (g1_je), .entry_state_i (g1_est),
     .entry_x_i (g1_ex), .entry_e_i (g1_ee), .xmax_i (xmax), .row_i (wrow), .adv_i (wadv),
     .adv_rows_i (3'd1), .mirror_o (wm1), .row_state_o (ws1), .row_x_o (wx1));
-  trirast_edge_walker #(.NumEndpoints (1)) u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (wload),
+  trirast_improved_edge_walker #(.NumEndpoints (1)) u_w2 (.clk_i (clk), .rst_ni (rst_n), .load_i (wload),
     .mirror_i (g2_mirror), .dir_down_i (g2_dir), .d_i (g2_d), .qs_i (g2_qs), .rs_i (g2_rs),
     .ssat_i (g2_ssat), .enters_i (g2_enters), .j_entry_i (g2_je), .entry_state_i (g2_est),
     .entry_x_i (g2_ex), .entry_e_i (g2_ee), .xmax_i (xmax), .row_i (wrow), .adv_i (wadv),
@@ -148,7 +148,7 @@ module g2_lane_tb #(
       end
     end
     last1 = c1; last2 = c2;
-    // gen2's cycles as trirast_edge_lane2.sv's header states them (T = the traversal's steps = j at its end;
+    // gen2's cycles as trirast_improved2_edge_lane.sv's header states them (T = the traversal's steps = j at its end;
     // a saturated division takes 2 iterations), and gen1's.
     begin
       int tt, ms, cs, expect2;

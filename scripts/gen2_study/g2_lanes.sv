@@ -1,10 +1,10 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): three redesigned lanes
-// (rtl/trirast_edge_lane2.sv, normalizer folded in) fed as g1_lanes.sv feeds gen1's, with the
+// (rtl/improved2/trirast_improved2_edge_lane.sv, normalizer folded in) fed as g1_lanes.sv feeds gen1's, with the
 // iteration count of an x division (adaptive: Qx = bits(Xmax) + 1; fixed: Q) computed once and
 // registered at the load (the lanes read it from the next cycle on). Boundary mode: step.
 module g2_lanes #(
   parameter int Adaptive = 1,
-  parameter int PreIter = 0  // trirast_edge_lane2's PreIter
+  parameter int PreIter = 0  // trirast_improved2_edge_lane's PreIter
 ) (
   input  logic                               clk_i,
   input  logic                               rst_ni,
@@ -59,7 +59,7 @@ module g2_lanes #(
 
   for (genvar k = 0; k < 3; k++) begin : g_edge
     /* verilator lint_off PINCONNECTEMPTY */
-    trirast_edge_lane2 #(.FixedM ((Adaptive != 0) ? 0 : QB), .PreIter (PreIter)) u_lane (
+    trirast_improved2_edge_lane #(.FixedM ((Adaptive != 0) ? 0 : QB), .PreIter (PreIter)) u_lane (
       .clk_i (clk_i), .rst_ni (rst_ni), .m_i (m_q), .load_i (load_i),
       .a_i (a_i[k*CB +: CB]), .b_i (b_i[k*CB +: CB]),
       .e_i (trirast_pkg::lane_reads_right(a_i[k*CB +: CB], b_i[k*CB +: CB])

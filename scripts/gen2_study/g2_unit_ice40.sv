@@ -11,7 +11,7 @@ module g2_unit_ice40 #(
   parameter bit FifoRam  = 1'b1,
   parameter bit WalkerCs = 1'b0,
   parameter bit TestHi   = 1'b1,
-  parameter int LanePreIter = 0   // 1: trirast_edge_lane2's pre-iteration (fewer LUT4, more cycles)
+  parameter int LanePreIter = 0   // 1: trirast_improved2_edge_lane's pre-iteration (fewer LUT4, more cycles)
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,

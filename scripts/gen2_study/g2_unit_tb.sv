@@ -1,10 +1,10 @@
 // gen2 study (scripts/gen2_study.sh --check): the whole-unit prototype trirast_improved2_top against the first
-// generation's unit rtl/trirast_top.sv (configured as dv/verilator/cycle_loop.hpp configures it for
+// generation's unit rtl/improved/trirast_improved_top.sv (configured as tb/common/cycle_loop.hpp configures it for
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
 // divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
 // +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready (+stall:
 // both sinks ready in two cycles of three, the same pattern; +rseed=S +rpct=P: both ready as
-// trirast's --sink-stall random:S:P, model/core/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
+// trirast's --sink-stall random:S:P, model/common/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
 // Prints "g2_unit_tb: N errors" (0 = the sequences are equal). (Per-triangle cycles against the
@@ -46,7 +46,7 @@ module g2_unit_tb;
   logic [TriBits-1:0] t1, t2;
   assign t1 = tris[(i1 < n) ? i1 : 0];
   assign t2 = tris[(i2 < n) ? i2 : 0];
-  // --sink-stall random:SEED:PERCENT (model/core/sink_pattern.cpp's sink_mix: splitmix64).
+  // --sink-stall random:SEED:PERCENT (model/common/sink_pattern.cpp's sink_mix: splitmix64).
   bit rsink;
   longint unsigned rseed;
   int rpct;
@@ -71,7 +71,7 @@ module g2_unit_tb;
   logic [PB:0] sxe1;
   assign v1 = rst_n && (i1 < n);
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_top #(.NumEndpoints (1), .FifoDepth (`G2_FIFO_DEPTH)) u_gen1 (
+  trirast_improved_top #(.NumEndpoints (1), .FifoDepth (`G2_FIFO_DEPTH)) u_gen1 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .cfg_divide_i (1'b0), .cfg_adaptive_i (1'b1), .cfg_endpoints_i (3'd1),

@@ -1,6 +1,6 @@
 // gen2 study: the retimed walk stage as a whole (g2_walk_slice: carry-select walkers, parallel
 // span compares, registered push with a credit admission test, span FIFO) against the first
-// generation's walk stage and span port (rtl/trirast_walk_stage.sv + rtl/trirast_span_port.sv,
+// generation's walk stage and span port (rtl/improved/trirast_improved_walk_stage.sv + rtl/common/trirast_span_port.sv,
 // N = 1, FIFO 8), simulated side by side on the same random hand-off bundles
 // (scripts/gen2_study.sh --check; Verilator --binary --timing). Each has its own hand-off feeder
 // and sink, the sinks driven by the same pattern by cycle index: always ready (phase 1), then
@@ -75,7 +75,7 @@ module g2_walk_check_tb;
   logic [TB-1:0] stag1;
   logic [PB-1:0] sy1, sxb1;
   logic [PB:0] sxe1;
-  trirast_walk_stage #(.NumEndpoints (1), .CountBits (CountBits), .EntryBits (EntryBits)) u_g1 (
+  trirast_improved_walk_stage #(.NumEndpoints (1), .CountBits (CountBits), .EntryBits (EntryBits)) u_g1 (
     .clk_i (clk), .rst_ni (rst_n), .endpoints_i (3'd1), .fifo_depth_i (CountBits'(Depth)),
     .hand_valid_i (v1), .hand_ready_o (r1), .hand_tag_i (h1.tag), .hand_x0_i (h1.x0),
     .hand_y0_i (h1.y0), .hand_xmax_i (h1.xmax), .hand_ymax_i (h1.ymax),

@@ -1,5 +1,5 @@
 // gen2 study prototype (not a unit; scripts/gen2_study.sh): the walk stage retimed, N = 1, with
-// the span FIFO: three trirast_edge_walker2, trirast_span_generator2, the span (with x0, y0 added) registered
+// the span FIFO: three trirast_improved2_edge_walker, trirast_improved2_span_generator, the span (with x0, y0 added) registered
 // before the FIFO push, and the admission test counting the registered push as a credit:
 // a row is processed when count + push_q + 1 <= DEPTH (count and push_q both registers), so no
 // path runs from the walkers into the FIFO's pointers in one cycle. Cycle contract change against
@@ -57,7 +57,7 @@ module g2_walk_slice #(
   assign load = !walk_q && hand_valid_i;
 
   for (genvar k = 0; k < 3; k++) begin : g_walker
-    trirast_edge_walker2 u_walker (
+    trirast_improved2_edge_walker u_walker (
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       .load_i        (load),
@@ -82,7 +82,7 @@ module g2_walk_slice #(
 
   logic gvalid;
   logic [BB:0] gbegin, gend;
-  trirast_span_generator2 u_gen (
+  trirast_improved2_span_generator u_gen (
     .state_i  (st),
     .bound_i  (bnd),
     .mirror_i (mirror),

@@ -5,8 +5,8 @@
 
 TRI_FILE is `trirast raster --export-tris A:B:TRI_FILE` (snapped vertices in pixels, header with
 --width/--height/--subpixel-bits). For every triangle with a non-empty box, OUT gets one line per
-edge, "A B E_L E_R Xmax Ymax tiny" (decimal), computed as model/core/setup.cpp and
-rtl/trirast_interface.sv do (tri_setup.py: vertices swapped to a positive area, A, B, C, bias),
+edge, "A B E_L E_R Xmax Ymax tiny" (decimal), computed as model/common/setup.cpp and
+rtl/common/trirast_box_stage.sv do (tri_setup.py: vertices swapped to a positive area, A, B, C, bias),
 E at the box's left and right pixel centres of row 0. tiny = 1 for a box of at most 2x2 pixels (gen2's direct test, not the lanes)."""
 import sys
 

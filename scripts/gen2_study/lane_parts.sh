@@ -2,7 +2,7 @@
 # gen2 study: what the parts of the redesigned lane cost on xc7 (docs/gen2-design.md section 2).
 #   scripts/gen2_study/lane_parts.sh [WORKDIR]   (default build/gen2_study; needs its trirast_pkg.sv,
 #                                                 written by scripts/gen2_study.sh)
-# Yosys `synth_xilinx -family xc7 -top trirast_edge_lane2` of rtl/trirast_edge_lane2.sv as it is (default
+# Yosys `synth_xilinx -family xc7 -top trirast_improved2_edge_lane` of rtl/improved2/trirast_improved2_edge_lane.sv as it is (default
 # parameters: adaptive, PreIter = 0), then with
 # one part at a time replaced by a stub (the sed expression below): the difference in LUT (LUT1-6)
 # is what the part costs, the lane's one module not splitting further in `stat`. Parts interact
@@ -13,10 +13,10 @@ WORK="${1:-$ROOT/build/gen2_study}"
 PKG="$WORK/trirast_pkg.sv"
 [ -f "$PKG" ] || { echo "lane_parts.sh: $PKG missing (run scripts/gen2_study.sh --only g2.lane first)" >&2; exit 1; }
 command -v yosys >/dev/null || { echo "lane_parts.sh: yosys not found in PATH" >&2; exit 1; }
-SRC="$ROOT/rtl/trirast_edge_lane2.sv"
+SRC="$ROOT/rtl/improved2/trirast_improved2_edge_lane.sv"
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
-luts() {  # luts FILE: "LUT FF" of trirast_edge_lane2 on xc7
-  yosys -q -p "read_verilog -sv -I $ROOT/rtl $PKG $1; synth_xilinx -family xc7 -top trirast_edge_lane2;
+luts() {  # luts FILE: "LUT FF" of trirast_improved2_edge_lane on xc7
+  yosys -q -p "read_verilog -sv -I $ROOT/rtl $PKG $1; synth_xilinx -family xc7 -top trirast_improved2_edge_lane;
     tee -q -o $TMP/stat stat" >/dev/null 2>&1 || { echo "- -"; return; }
   awk '/Number of cells/ {l = 0; f = 0} $1 ~ /^LUT[1-6]$/ {l += $2} $1 ~ /^FD/ {f += $2}
        END {print l, f}' "$TMP/stat"
@@ -35,7 +35,7 @@ PARTS=(
 "abs(A) and abs(B) (two 25-bit negations at the load)|s/assign abs_a    = .*/assign abs_a = a_i;/; s/assign abs_b    = .*/assign abs_b = b_i;/"
 )
 read -r base_l base_f <<< "$(luts "$SRC")"
-echo "| part of trirast_edge_lane2 (replaced by a stub) | xc7 LUT without it | LUT it costs |"
+echo "| part of trirast_improved2_edge_lane (replaced by a stub) | xc7 LUT without it | LUT it costs |"
 echo "|---|---:|---:|"
 echo "| (whole lane, nothing replaced: $base_l LUT, $base_f FF) | $base_l | - |"
 for row in "${PARTS[@]}"; do

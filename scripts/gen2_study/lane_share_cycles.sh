@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # gen2 study (docs/gen2-design.md, "Fitting the HX8K"): what sharing the edge lanes would cost in
 # cycles. Builds the SystemC cycles table (the target trirast_sc_cycles_table of
-# scripts/cycles_table.sh) from a git worktree of HEAD in which model/unit/improved2_unit.cpp's
+# scripts/cycles_table.sh) from a git worktree of HEAD in which model/improved2/improved2_unit.cpp's
 # lane time L (the slowest of the three lanes) is replaced by
 #   shared: L_0 + L_1 + L_2             (one lane serving the three edges in turn)
 #   pair:   min over a of max(L_a, L_b + L_c)   (one lane for edge a, one shared by the other two,
@@ -14,8 +14,8 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 work="${1:-/tmp/trirast-lane-share}"
 max_line='    r.lane_cycles = std::max(r.lane_cycles, r.lane[k].cycles);'
-grep -qF "$max_line" "$root/model/unit/improved2_unit.cpp" || {
-  echo "lane_share_cycles.sh: model/unit/improved2_unit.cpp has no line '$max_line'" >&2; exit 1; }
+grep -qF "$max_line" "$root/model/improved2/improved2_unit.cpp" || {
+  echo "lane_share_cycles.sh: model/improved2/improved2_unit.cpp has no line '$max_line'" >&2; exit 1; }
 cleanup() { git -C "$root" worktree remove --force "$work/src" >/dev/null 2>&1 || true; }
 trap cleanup EXIT
 trap 'exit 130' INT TERM
@@ -24,8 +24,8 @@ cleanup
 git -C "$root" worktree add --detach "$work/src" HEAD >/dev/null 2>&1
 table() {  # table VARIANT: the gen2 table of the cycles table built with that lane time
   local variant="$1" src="$work/src" build="$work/build"
-  git -C "$src" checkout -q -- model/unit/improved2_unit.cpp
-  /usr/bin/python3 - "$src/model/unit/improved2_unit.cpp" "$variant" "$max_line" <<'EOF'
+  git -C "$src" checkout -q -- model/improved2/improved2_unit.cpp
+  /usr/bin/python3 - "$src/model/improved2/improved2_unit.cpp" "$variant" "$max_line" <<'EOF'
 import sys
 path, variant, max_line = sys.argv[1:]
 text = open(path).read()

@@ -7,7 +7,7 @@ TRI_FILE is `trirast raster --export-tris A:B:TRI_FILE` (snapped vertices in pix
 --width/--height/--subpixel-bits). OUT_HEX gets one $readmemh line per triangle with a non-zero
 area (degenerate ones never reach a unit), the triangle port's fields packed as
 {bias[2:0], C[3], B[3], A[3], vy[3], vx[3]} (edge / vertex k at k's slot, two's complement), set up
-as model/core/setup.cpp does (tri_setup.py). Prints "+n=N +w=WIDTH +h=HEIGHT" (the testbench's
+as model/common/setup.cpp does (tri_setup.py). Prints "+n=N +w=WIDTH +h=HEIGHT" (the testbench's
 plusargs) on stdout."""
 import sys
 

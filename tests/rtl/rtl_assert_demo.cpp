@@ -1,5 +1,5 @@
-// Drives the Verilated trirast_top (built with --assert, NumEndpoints = 4) against its protocol on
-// purpose, so that one of the RTL's assertions (rtl/trirast_assert.svh) must stop the run:
+// Drives the Verilated trirast_improved_top (built with --assert, NumEndpoints = 4) against its protocol on
+// purpose, so that one of the RTL's assertions (rtl/common/trirast_assert.svh) must stop the run:
 //   trirast_rtl_assert_demo endpoints   cfg_endpoints_i = 5 > NumEndpoints (CfgEndpointsInRange_A)
 //   trirast_rtl_assert_demo tri-data    the triangle changes while tri_valid_i && !tri_ready_o
 //                                       (TriDataStable_A)
@@ -12,7 +12,7 @@
 #include <cstring>
 #include <memory>
 
-#include "Vtrirast_top.h"
+#include "Vtrirast_improved_top.h"
 
 int main(int argc, char** argv) {
   const char* mode = argc > 1 ? argv[1] : "";
@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
   auto ctx = std::make_unique<VerilatedContext>();
   ctx->randReset(2);
   ctx->randSeed(1);
-  auto top = std::make_unique<Vtrirast_top>(ctx.get(), "top");
+  auto top = std::make_unique<Vtrirast_improved_top>(ctx.get(), "top");
 
   // A legal configuration but for the broken input of the mode.
   top->cfg_vp_xmax_i = 63;

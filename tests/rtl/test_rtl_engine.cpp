@@ -13,18 +13,18 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
-#include "core/sink_pattern.hpp"
+#include "common/setup.hpp"
+#include "common/sink_pattern.hpp"
 #include "golden/golden.hpp"
-#include "sc/sc_engine.hpp"
-#include "verilator/rtl_engine.hpp"
+#include "common/sc_engine.hpp"
+#include "improved/improved_rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "reference/cycle_columns.hpp"
-#include "reference/reference_raster.hpp"
-#include "sc/sc_engine.hpp"
-#include "verilator/trirast_rtl_params.hpp"
-#include "unit/improved_unit.hpp"
-#include "unit/unit_widths.hpp"
+#include "common/cycle_columns.hpp"
+#include "common/reference_raster.hpp"
+#include "common/sc_engine.hpp"
+#include "common/trirast_rtl_params.hpp"
+#include "improved/improved_unit.hpp"
+#include "common/unit_widths.hpp"
 
 namespace trirast {
 namespace {
@@ -191,7 +191,7 @@ void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std:
   }
   // Every column, the stage breakdown too, equals the SystemC model's (docs/timing.md, "Outputs").
   EngineResult sc;
-  make_model_engine()->run(setup, cfg, sc);
+  make_improved_sc_engine()->run(setup, cfg, sc);
   ASSERT_EQ(sc.cycles.size(), r.cycles.size()) << what;
   std::string rows;
   EXPECT_EQ(test::cycle_rows_mismatch(r.cycles, "rtl", sc.cycles, "model", what, rows), 0u)
@@ -251,7 +251,7 @@ TEST(RtlConfig, UnbuiltWidthsAreRejectedNamingTheOption) {
 }
 
 // Every width configuration docs/synth.md names has a Verilated build: the RTL's spans equal the
-// golden's there (scripts/synth.sh CONFIGS; dv/verilator/CMakeLists.txt).
+// golden's there (scripts/synth.sh CONFIGS; tb/CMakeLists.txt).
 TEST(RtlConfig, EveryDocumentedWidthConfigurationRuns) {
   const int configs[][3] = {{8, 16, 14}, {4, 12, 10}, {8, 20, 14}, {0, 8, 6}};
   for (const auto& w : configs) {
@@ -291,7 +291,7 @@ TEST(RtlStats, ModuleCyclesEqualTheModel) {
           {tri(1, 1, 90, 2, 3, 80), tri(10, 40, 60, 5, 50, 44), tri(-5, -5, -1, -2, -3, -1)}, cfg);
       const EngineResult r = run_rtl(setup, cfg);
       EngineResult m;
-      make_model_engine()->run(setup, cfg, m);
+      make_improved_sc_engine()->run(setup, cfg, m);
       int compared = 0;
       EXPECT_EQ(test::statistics_mismatch(m.work, r.work, {}, compared), "")
           << "sink " << stall << " N=" << n;
@@ -498,7 +498,7 @@ TEST(RtlTrace, FstWindowOfALargeSceneHasTheHandshakes) {
   EXPECT_NE(gtkw.find("[dumpfile] \"rtl_window.fst\"\n"), std::string::npos) << gtkw.substr(0, 300);
   EXPECT_NE(gtkw.find("[savefile] \"rtl_window.gtkw\"\n"), std::string::npos);
   EXPECT_NE(gtkw.find("[timestart] " + std::to_string(first * 100) + "\n"), std::string::npos);
-  EXPECT_NE(gtkw.find("^1 rtl_window.setup_state.filter\n@2024\ntrirast_top.setup_state_o[2:0]\n"),
+  EXPECT_NE(gtkw.find("^1 rtl_window.setup_state.filter\n@2024\ntrirast_improved_top.setup_state_o[2:0]\n"),
             std::string::npos);
   EXPECT_NE(read_file(dir + "/rtl_window.setup_state.filter").find("4 StHold\n"), std::string::npos);
 }

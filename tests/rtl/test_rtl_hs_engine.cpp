@@ -1,4 +1,4 @@
-// The Verilated RTL of the half-space tile unit (rtl/trirast_halfspace.f, engine "halfspace-rtl"),
+// The Verilated RTL of the half-space tile unit (rtl/halfspace/trirast_halfspace.f, engine "halfspace-rtl"),
 // in every Verilated configuration (StampSize / TileSize / walk order): its spans equal the
 // golden's, span for span, and its cycles equal the SystemC model's (halfspace-sc,
 // docs/timing.md "The half-space unit") for every triangle: accept, first span, done, spans,
@@ -10,25 +10,25 @@
 #include <string>
 #include <vector>
 
-#include "core/fixed_point.hpp"
-#include "core/setup.hpp"
+#include "common/fixed_point.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "reference/cycle_columns.hpp"
-#include "reference/reference_raster.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/cycle_columns.hpp"
+#include "common/reference_raster.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
-#include "unit/halfspace_unit.hpp"
-#include "unit/unit_widths.hpp"
-#include "verilator/rtl_builds.hpp"
-#include "verilator/rtl_hs_engine.hpp"
+#include "halfspace/halfspace_unit.hpp"
+#include "common/unit_widths.hpp"
+#include "common/rtl_builds.hpp"
+#include "halfspace/halfspace_rtl_engine.hpp"
 
 namespace trirast {
 namespace {
 
 struct Built {
   int stamp, tile;
-  HsWalk walk;
+  HalfspaceWalk walk;
 };
 // The stamp/tile/walk configurations Verilated at the default widths (rtl_builds.hpp).
 std::vector<Built> built_at_default_widths() {
@@ -37,15 +37,15 @@ std::vector<Built> built_at_default_widths() {
   for (const rtl::RtlBuild& b : rtl::halfspace_builds())
     if (b.subpixel_bits == d.subpixel_bits && b.coord_int_bits == d.coord_int_bits &&
         b.box_bits == d.box_bits)
-      out.push_back({b.stamp, b.tile, b.zigzag ? HsWalk::Zigzag : HsWalk::Row});
+      out.push_back({b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row});
   return out;
 }
 const std::vector<Built> kBuilt = built_at_default_widths();
 
 size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
   EngineResult rtl, sc;
-  make_rtl_halfspace_engine()->run(setup, cfg, rtl);
-  make_halfspace_model_engine()->run(setup, cfg, sc);
+  make_halfspace_rtl_engine()->run(setup, cfg, rtl);
+  make_halfspace_sc_engine()->run(setup, cfg, sc);
   SpanList g;
   for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
   sort_spans(g);
@@ -79,15 +79,15 @@ size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std
 
 RasterConfig config(const Built& b) {
   RasterConfig cfg;
-  cfg.hs_stamp = b.stamp;
-  cfg.hs_tile = b.tile;
-  cfg.hs_walk = b.walk;
+  cfg.halfspace.stamp = b.stamp;
+  cfg.halfspace.tile = b.tile;
+  cfg.halfspace.walk = b.walk;
   return cfg;
 }
 
 std::string name(const Built& b, const std::string& sink, int depth) {
   return "stamp " + std::to_string(b.stamp) + " tile " + std::to_string(b.tile) + " " +
-         hs_walk_name(b.walk) + " sink " + sink + " depth " + std::to_string(depth);
+         halfspace_walk_name(b.walk) + " sink " + sink + " depth " + std::to_string(depth);
 }
 
 TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
@@ -170,14 +170,14 @@ std::vector<InputTriangle> limit_triangles(const RasterConfig& cfg, uint64_t see
 // The largest |E| at a corner of any unit of the set-up scene (the values the tile walker tests).
 int64_t largest_corner_value(const SetupResult& setup, const RasterConfig& cfg) {
   HalfspaceUnit unit(cfg);
-  const int64_t U = HsParams::from(cfg).unit();
+  const int64_t U = HalfspaceParams::from(cfg).unit();
   int64_t most = 0;
   for (const TriangleSetup& t : setup.tris) {
-    const HsSetupOut s = unit.set_up(t);
+    const HalfspaceSetupOut s = unit.set_up(t);
     if (s.empty) continue;
     for (int64_t j0 = 0; j0 <= s.Ymax; j0 += U)
       for (int64_t i0 = 0; i0 <= s.Xmax; i0 += U)
-        for (const HsEdge& e : s.edge)
+        for (const HalfspaceEdge& e : s.edge)
           for (int64_t di : {int64_t(0), U - 1})
             for (int64_t dj : {int64_t(0), U - 1}) {
               const int64_t v = e.E0 + (i0 + di) * e.a + (j0 + dj) * e.b;
@@ -190,7 +190,7 @@ int64_t largest_corner_value(const SetupResult& setup, const RasterConfig& cfg) 
 // Triangles at the coordinate limits, at every stamp and tile size and walk, in the widths where
 // a unit's corners lie past the coordinate range (the narrow ones) and in wide ones: the
 // datapath and the SystemC model give the golden's spans, and the corner values fit
-// hs_edge_bits (the bound of model/unit/unit_widths.cpp) and, where it exceeds 2p + 2, need the
+// hs_edge_bits (the bound of model/common/unit_widths.cpp) and, where it exceeds 2p + 2, need the
 // extra bits (so 2p + 2-bit corner values would fail this test).
 TEST(HalfspaceLimits, CoordinateLimitsAtEveryStampTileAndWalk) {
   struct W {
@@ -204,16 +204,16 @@ TEST(HalfspaceLimits, CoordinateLimitsAtEveryStampTileAndWalk) {
   for (const W& w : widths)
     for (int stamp : {1, 2, 4})
       for (int tile : {0, 8, 16})
-        for (HsWalk walk : {HsWalk::Row, HsWalk::Zigzag}) {
+        for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) {
           RasterConfig cfg;
           cfg.subpixel_bits = w.S;
           cfg.coord_int_bits = w.coord;
           cfg.box_bits = w.box;
           cfg.width = w.width;
           cfg.height = w.height;
-          cfg.hs_stamp = stamp;
-          cfg.hs_tile = tile;
-          cfg.hs_walk = walk;
+          cfg.halfspace.stamp = stamp;
+          cfg.halfspace.tile = tile;
+          cfg.halfspace.walk = walk;
           cfg.validate();
           const std::string what = "S " + std::to_string(w.S) + " coord " +
                                    std::to_string(w.coord) + " box " + std::to_string(w.box) +
@@ -223,8 +223,8 @@ TEST(HalfspaceLimits, CoordinateLimitsAtEveryStampTileAndWalk) {
           for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
           sort_spans(g);
           EngineResult dp, sc;
-          ASSERT_NO_THROW(make_halfspace_engine()->run(setup, cfg, dp)) << what;
-          ASSERT_NO_THROW(make_halfspace_model_engine()->run(setup, cfg, sc)) << what;
+          ASSERT_NO_THROW(make_halfspace_datapath_engine()->run(setup, cfg, dp)) << what;
+          ASSERT_NO_THROW(make_halfspace_sc_engine()->run(setup, cfg, sc)) << what;
           sort_spans(dp.spans);
           sort_spans(sc.spans);
           EXPECT_TRUE(dp.spans == g) << what << ": halfspace-datapath";
@@ -252,9 +252,9 @@ TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
       cfg.coord_int_bits = b.coord_int_bits;
       cfg.box_bits = b.box_bits;
       cfg.width = cfg.height = int(std::min<int64_t>(cfg.coord_limit_px(), 128));
-      cfg.hs_stamp = b.stamp;
-      cfg.hs_tile = b.tile;
-      cfg.hs_walk = b.zigzag ? HsWalk::Zigzag : HsWalk::Row;
+      cfg.halfspace.stamp = b.stamp;
+      cfg.halfspace.tile = b.tile;
+      cfg.halfspace.walk = b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row;
       cfg.sink_stall = sink;
       cfg.fifo_depth = 2;
       cfg.validate();
@@ -263,7 +263,7 @@ TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
       narrow += !fits_signed(largest_corner_value(setup, cfg), uw.edge_value);
       expect_equal(setup, cfg,
                    std::string(b.prefix) + " " +
-                       name(Built{b.stamp, b.tile, cfg.hs_walk}, sink, cfg.fifo_depth));
+                       name(Built{b.stamp, b.tile, cfg.halfspace.walk}, sink, cfg.fifo_depth));
     }
   EXPECT_GT(narrow, 0) << "no build sees corner values wider than 2p + 2 bits";
 }
@@ -276,7 +276,7 @@ TEST(RtlHalfspace, TraceShowsTheUnitsStateNames) {
   cfg.trace_path = dir + "/hs_states.fst";
   const SetupResult setup = setup_scene({tri(1, 1, 90, 2, 3, 80), tri(10, 40, 60, 5, 50, 44)}, cfg);
   EngineResult r;
-  make_rtl_halfspace_engine()->run(setup, cfg, r);
+  make_halfspace_rtl_engine()->run(setup, cfg, r);
   const std::string walk = test::slurp(dir + "/hs_states.walk_state.filter");
   const std::string setup_names = test::slurp(dir + "/hs_states.setup_state.filter");
   EXPECT_EQ(walk, "0 WIdle\n1 WUnit\n2 WStamp\n3 WWait\n4 WDrain\n");
@@ -299,12 +299,12 @@ TEST(RtlHalfspace, TraceShowsTheUnitsStateNames) {
 
 TEST(RtlHalfspace, UnbuiltConfigurationIsNamed) {
   RasterConfig cfg;
-  cfg.hs_stamp = 4;
-  cfg.hs_tile = 8;
+  cfg.halfspace.stamp = 4;
+  cfg.halfspace.tile = 8;
   const SetupResult setup = setup_scene({}, cfg);
   EngineResult r;
   try {
-    make_rtl_halfspace_engine()->run(setup, cfg, r);
+    make_halfspace_rtl_engine()->run(setup, cfg, r);
     FAIL() << "expected std::invalid_argument";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("--stamp 4 --tile 8"), std::string::npos) << e.what();

@@ -1,4 +1,4 @@
-// The Verilated RTL of the second-generation improved unit (rtl/trirast_improved2.f, engine
+// The Verilated RTL of the second-generation improved unit (rtl/improved2/trirast_improved2.f, engine
 // "improved2-rtl"): its spans equal the golden's, pixel for pixel, and every column of every
 // triangle's cycles (accept, first span, done, stalls, the stage breakdown, the lanes' work, the
 // box) and the run's statistics equal its SystemC model improved2-sc's (docs/gen2-design.md,
@@ -12,13 +12,13 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "engines.hpp"
 #include "golden/golden.hpp"
-#include "reference/cycle_columns.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/cycle_columns.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
-#include "verilator/rtl_improved2_engine.hpp"
+#include "improved2/improved2_rtl_engine.hpp"
 
 namespace trirast {
 namespace {
@@ -37,7 +37,7 @@ EngineResult run_rtl(const SetupResult& setup, const RasterConfig& cfg, uint32_t
 
 RasterConfig cfg_with(int form, const std::string& sink, int depth, int endpoints = 1) {
   RasterConfig cfg;
-  cfg.g2_corner_form = form;
+  cfg.improved2.corner_form = form;
   cfg.sink_stall = sink;
   cfg.fifo_depth = depth;
   cfg.endpoints = endpoints;
@@ -52,7 +52,7 @@ size_t expect_improved2(const SetupResult& setup, const RasterConfig& cfg,
   EngineResult rtl = run_rtl(setup, cfg);
   EngineResult golden, sc;
   make_golden_engine()->run(setup, cfg, golden);
-  make_improved2_model_engine()->run(setup, cfg, sc);
+  make_improved2_sc_engine()->run(setup, cfg, sc);
   sort_spans(rtl.spans);
   sort_spans(golden.spans);
   EXPECT_EQ(test::first_span_difference(rtl.spans, "rtl", golden.spans, "golden"), "") << what;

@@ -1,5 +1,5 @@
-// The Verilated RTL of the traditional-Bresenham unit (rtl/trirast_trad_*.sv, engine "trad-rtl"):
-// its spans equal the C++ trad model's (model/unit/trad_bresenham.*, engine make_trad_engine),
+// The Verilated RTL of the traditional-Bresenham unit (rtl/trad/trirast_trad_*.sv, engine "trad-rtl"):
+// its spans equal the C++ trad model's (model/trad_bresenham.*, engine make_trad_datapath_engine),
 // pixel for pixel, and its cycles equal the SystemC trad model's (engine "trad-sc", docs/timing.md
 // "The traditional unit"): accept, first span, done and stall cycles of every triangle, with the
 // sink always ready and with stalling sinks, on the hard cases, random triangles and meshes.
@@ -9,13 +9,13 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "engines.hpp"
-#include "reference/cycle_columns.hpp"
-#include "verilator/rtl_trad_engine.hpp"
+#include "common/cycle_columns.hpp"
+#include "trad/trad_rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "sc/sc_engine.hpp"
-#include "unit/trad_bresenham.hpp"
+#include "common/sc_engine.hpp"
+#include "trad/trad_bresenham.hpp"
 
 namespace trirast {
 namespace {
@@ -37,8 +37,8 @@ EngineResult run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, uin
 size_t expect_trad(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
   EngineResult rtl = run_rtl_trad(setup, cfg);
   EngineResult cpp, sc;
-  make_trad_engine()->run(setup, cfg, cpp);
-  make_trad_model_engine()->run(setup, cfg, sc);
+  make_trad_datapath_engine()->run(setup, cfg, cpp);
+  make_trad_sc_engine()->run(setup, cfg, sc);
   sort_spans(rtl.spans);
   sort_spans(cpp.spans);
   EXPECT_EQ(test::first_span_difference(rtl.spans, "rtl", cpp.spans, "trad"), "") << what;

@@ -6,14 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
-#include "core/sink_pattern.hpp"
-#include "reference/cycle_columns.hpp"
-#include "reference/cycle_reference.hpp"
-#include "sc/sc_engine.hpp"
-#include "reference/reference_raster.hpp"
-#include "unit/improved_unit.hpp"
-#include "unit/trad_timing.hpp"
+#include "common/setup.hpp"
+#include "common/sink_pattern.hpp"
+#include "common/cycle_columns.hpp"
+#include "common/cycle_reference.hpp"
+#include "common/sc_engine.hpp"
+#include "common/reference_raster.hpp"
+#include "improved/improved_unit.hpp"
+#include "trad/trad_timing.hpp"
 
 namespace trirast {
 namespace {
@@ -39,7 +39,7 @@ EngineResult run(std::unique_ptr<Engine> e, const std::vector<InputTriangle>& tr
   return r;
 }
 EngineResult run_model(const std::vector<InputTriangle>& tris, const RasterConfig& cfg) {
-  return run(make_model_engine(), tris, cfg);
+  return run(make_improved_sc_engine(), tris, cfg);
 }
 
 void expect_cycles(const TriangleCycles& c, uint64_t accept, uint64_t first, uint64_t done,
@@ -187,7 +187,7 @@ TEST(ScCyclesHand, TradSmallTriangle) {
   // 0..2; short side: p0->p1 4 steps on row 0, p1->p2 (x-major, 4 steps) 1, 2, 1: rows cost
   // max(1, 0, 5) = 5, max(1, 1, 2) = 2, max(1, 1, 1) = 1. h = 3; row 0 in 4..8 (pop 9),
   // row 1 in 9..10 (pop 11), row 2 in 11 (pop 12).
-  const EngineResult r = run(make_trad_model_engine(), {tri(0.5, 0.5, 4.5, 0.5, 0.5, 2.5)}, cfg);
+  const EngineResult r = run(make_trad_sc_engine(), {tri(0.5, 0.5, 4.5, 0.5, 0.5, 2.5)}, cfg);
   ASSERT_EQ(r.cycles.size(), 1u);
   expect_cycles(r.cycles[0], 0, 9, 12, 3, 9, 0);
   EXPECT_EQ(r.total_cycles, 13u);
@@ -275,7 +275,7 @@ void compare_with_reference(bool trad, const std::vector<InputTriangle>& tris, R
                             const std::string& what) {
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult r;
-  (trad ? make_trad_model_engine() : make_model_engine())->run(setup, cfg, r);
+  (trad ? make_trad_sc_engine() : make_improved_sc_engine())->run(setup, cfg, r);
   const auto input = trad ? trad_reference_input(setup, cfg) : improved_reference_input(setup, cfg);
   const auto ref =
       test::reference_cycles(input, trad ? 1 : uint64_t(cfg.endpoints), uint64_t(cfg.fifo_depth),

@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "reference/reference_raster.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/reference_raster.hpp"
+#include "common/sc_engine.hpp"
 
 namespace trirast {
 namespace {
@@ -24,7 +24,7 @@ InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double 
 EngineResult run_hs(const std::vector<InputTriangle>& tris, const RasterConfig& cfg) {
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult r;
-  make_halfspace_model_engine()->run(setup, cfg, r);
+  make_halfspace_sc_engine()->run(setup, cfg, r);
   return r;
 }
 
@@ -36,8 +36,8 @@ TEST(ScHalfspaceHand, OneTileSixteenStamps) {
   // inside: partial, 1 test + 16 stamps = 17 walker cycles. h = 3, walker 4..20, hand-off at the
   // end of 20, spans pushed in 21..28, popped in 22..29.
   RasterConfig cfg;
-  cfg.hs_stamp = 2;
-  cfg.hs_tile = 8;
+  cfg.halfspace.stamp = 2;
+  cfg.halfspace.tile = 8;
   const EngineResult r = run_hs({right_triangle()}, cfg);
   ASSERT_EQ(r.cycles.size(), 1u);
   const TriangleCycles& c = r.cycles[0];
@@ -56,9 +56,9 @@ TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
   // outside the hypotenuse), stamp (0, 4) is not: cycles 6, 7; the emitter is busy until 9, so
   // band 1 goes to it at the end of 9 and rows 4..7 are pushed in 10..13, popped in 11..14.
   RasterConfig cfg;
-  cfg.hs_stamp = 4;
-  cfg.hs_tile = 0;
-  cfg.hs_walk = HsWalk::Zigzag;
+  cfg.halfspace.stamp = 4;
+  cfg.halfspace.tile = 0;
+  cfg.halfspace.walk = HalfspaceWalk::Zigzag;
   const EngineResult r = run_hs({right_triangle()}, cfg);
   ASSERT_EQ(r.cycles.size(), 1u);
   EXPECT_EQ(r.cycles[0].first_span_cycle, 7u);
@@ -84,23 +84,23 @@ TEST(ScHalfspace, GoldenSpansAndSaneCyclesEverywhere) {
   tris.insert(tris.end(), big.begin(), big.end());
   for (int s : {1, 2, 4})
     for (int t : {0, 8, 16})
-      for (HsWalk w : {HsWalk::Row, HsWalk::Zigzag})
+      for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag})
         for (const char* sink : {"none", "periodic:1:3", "random:3:60"})
           for (int depth : {1, 4}) {
             RasterConfig cfg;
             cfg.width = 128;
             cfg.height = 96;
-            cfg.hs_stamp = s;
-            cfg.hs_tile = t;
-            cfg.hs_walk = w;
+            cfg.halfspace.stamp = s;
+            cfg.halfspace.tile = t;
+            cfg.halfspace.walk = w;
             cfg.sink_stall = sink;
             cfg.fifo_depth = depth;
             const std::string what = "stamp " + std::to_string(s) + " tile " + std::to_string(t) +
-                                     " " + hs_walk_name(w) + " " + sink + " depth " +
+                                     " " + halfspace_walk_name(w) + " " + sink + " depth " +
                                      std::to_string(depth);
             const SetupResult setup = setup_scene(tris, cfg);
             EngineResult r;
-            make_halfspace_model_engine()->run(setup, cfg, r);
+            make_halfspace_sc_engine()->run(setup, cfg, r);
             SpanList g;
             for (const TriangleSetup& tr : setup.tris) golden_triangle(tr, cfg, g);
             sort_spans(g);

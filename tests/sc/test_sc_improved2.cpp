@@ -4,7 +4,7 @@
 // one cycle per group of N rows; N = 3 is refused; its trace (--trace) is a VCD
 // whose signals agree with the cycles, with the .gtkw grouped by module, and tracing changes no
 // cycle. Its cycles against
-// the unit's RTL (rtl/trirast_improved2.f, engine improved2-rtl) are
+// the unit's RTL (rtl/improved2/trirast_improved2.f, engine improved2-rtl) are
 // tests/rtl/test_rtl_improved2_engine.cpp's.
 #include <gtest/gtest.h>
 
@@ -15,16 +15,16 @@
 #include <string>
 #include <vector>
 
-#include "core/fixed_point.hpp"
-#include "core/setup.hpp"
+#include "common/fixed_point.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "reference/cycle_columns.hpp"
-#include "reference/improved2_cycle_reference.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/cycle_columns.hpp"
+#include "improved2/improved2_cycle_reference.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "support/vcd_reader.hpp"
-#include "unit/improved2_unit.hpp"
+#include "improved2/improved2_unit.hpp"
 
 namespace trirast {
 namespace {
@@ -38,7 +38,7 @@ using test::vcd_bin;
 
 EngineResult run_model(const SetupResult& setup, const RasterConfig& cfg) {
   EngineResult r;
-  make_improved2_model_engine()->run(setup, cfg, r);
+  make_improved2_sc_engine()->run(setup, cfg, r);
   return r;
 }
 
@@ -61,7 +61,7 @@ TEST(ScImproved2, SpansEqualGoldenInBothFormsSinksAndN) {
           SCOPED_TRACE(std::string(scene) + " N " + std::to_string(n) + " form " +
                        std::to_string(form) + " sink " + sink);
           cfg.endpoints = n;
-          cfg.g2_corner_form = form;
+          cfg.improved2.corner_form = form;
           cfg.sink_stall = sink;
           cfg.fifo_depth = 4;
           EngineResult r = run_model(setup, cfg);
@@ -138,7 +138,7 @@ TEST(ScImproved2, WalkTakesOneCyclePerGroupOfNRows) {
   }
 }
 
-// docs/timing.md's d, read independently of CornerUnit: the fewest digits of 4 bits (at least 1)
+// docs/timing.md's d, read independently of Improved2CornerUnit: the fewest digits of 4 bits (at least 1)
 // in which each of cx - vx, cy - vy of the vertices v0 and v1 at the run's corner fits as a two's
 // complement number, -2^(4d - 1) <= value < 2^(4d - 1).
 static uint64_t contract_digits(const TriangleSetup& t, int64_t x0, int64_t y0,
@@ -154,7 +154,7 @@ static uint64_t contract_digits(const TriangleSetup& t, int64_t x0, int64_t y0,
 }
 
 // The model against an independent cycle-by-cycle reading of docs/timing.md "The
-// second-generation improved unit" (dv/reference/improved2_cycle_reference.hpp), which takes from
+// second-generation improved unit" (tb/improved2/improved2_cycle_reference.hpp), which takes from
 // the datapath only what the contract's cycles depend on (the corner unit's digit counts it reads
 // from the contract itself, contract_digits, and checks the datapath's against them): all sixteen
 // columns of every triangle, both corner forms, N = 1, 2, 4, FIFO depths 1 .. 8 (N at least),
@@ -187,7 +187,7 @@ TEST(ScImproved2, CyclesFollowTheContractStepByStep) {
       for (const Improved2Row& row : x.rows)
         r.row_pixels.push_back(row.valid ? uint64_t(row.span.pixels()) : 0);
       if (!x.box.empty) {
-        for (const Gen2LaneWork& w : x.lane) {
+        for (const Improved2LaneWork& w : x.lane) {
           r.divider_iterations += w.iterations;
           r.boundary_steps += uint64_t(w.steps);
         }
@@ -204,7 +204,7 @@ TEST(ScImproved2, CyclesFollowTheContractStepByStep) {
             const std::string what = std::string(scene) + " form " + std::to_string(form) +
                                      " N " + std::to_string(n) + " FIFO " + std::to_string(depth) +
                                      " sink " + sink;
-            cfg.g2_corner_form = form;
+            cfg.improved2.corner_form = form;
             cfg.endpoints = n;
             cfg.fifo_depth = depth;
             cfg.sink_stall = sink;
@@ -281,7 +281,7 @@ TEST(ScImproved2, TraceAgreesWithTheCycles) {
   for (int form : {0, 1}) {
     SCOPED_TRACE("corner form " + std::to_string(form));
     RasterConfig cfg;
-    cfg.g2_corner_form = form;
+    cfg.improved2.corner_form = form;
     cfg.fifo_depth = 2;
     cfg.sink_stall = "periodic:2:3";
     const SetupResult setup = builtin_setup("mixed:objects=2", cfg);
@@ -384,7 +384,7 @@ TEST(ScImproved2, TraceAgreesWithTheCycles) {
 // d_L + 1 cycles, E_R (lane boxes) until the values are ready; digits shows the run's count.
 TEST(ScImproved2, TraceShowsTheCornerRuns) {
   RasterConfig cfg;
-  cfg.g2_corner_form = 1;
+  cfg.improved2.corner_form = 1;
   std::vector<InputTriangle> tris = {InputTriangle{{10.2, 40.7, 12.3}, {10.1, 14.6, 35.2}, 0}};
   const SetupResult setup = setup_scene(tris, cfg);
   cfg.trace_path = testing::TempDir() + "sc_improved2_corner.vcd";

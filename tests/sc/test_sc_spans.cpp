@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
+#include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
-#include "reference/reference_raster.hpp"
-#include "unit/trad_bresenham.hpp"
-#include "unit/unit_widths.hpp"
+#include "common/reference_raster.hpp"
+#include "trad/trad_bresenham.hpp"
+#include "common/unit_widths.hpp"
 
 namespace trirast {
 namespace {
@@ -31,7 +31,7 @@ void expect_model_equals_golden(const Scene& scene, const RasterConfig& cfg) {
   const SetupResult setup = setup_scene(scene.tris, cfg);
   const SpanList golden = sorted_spans(*make_golden_engine(), setup, cfg);
   EngineResult r;
-  const SpanList model = sorted_spans(*make_model_engine(), setup, cfg, &r);
+  const SpanList model = sorted_spans(*make_improved_sc_engine(), setup, cfg, &r);
   EXPECT_EQ(model.size(), golden.size()) << scene.name;
   EXPECT_TRUE(model == golden) << scene.name << ": the model's spans differ from the golden";
   ASSERT_EQ(r.cycles.size(), setup.tris.size());
@@ -71,7 +71,7 @@ TEST(ScSpans, HardCasesWithEveryTimingParameter) {
       cfg.endpoints = n;
       cfg.fifo_depth = n;
       cfg.sink_stall = sink;
-      EXPECT_TRUE(sorted_spans(*make_model_engine(), setup, cfg) == golden)
+      EXPECT_TRUE(sorted_spans(*make_improved_sc_engine(), setup, cfg) == golden)
           << "N=" << n << " sink " << sink;
     }
 }
@@ -122,8 +122,8 @@ TEST(ScSpans, TradModelEqualsUntimedTrad) {
     const Scene scene = builtin(spec, cfg);
     const SetupResult setup = setup_scene(scene.tris, cfg);
     EngineResult untimed, timed;
-    make_trad_engine()->run(setup, cfg, untimed);
-    make_trad_model_engine()->run(setup, cfg, timed);
+    make_trad_datapath_engine()->run(setup, cfg, untimed);
+    make_trad_sc_engine()->run(setup, cfg, timed);
     sort_spans(untimed.spans);
     sort_spans(timed.spans);
     EXPECT_TRUE(untimed.spans == timed.spans) << spec;
@@ -139,10 +139,10 @@ TEST(ScSpans, RepeatedRunsAreIdentical) {
   const Scene scene = builtin("mixed", cfg);
   const SetupResult setup = setup_scene(scene.tris, cfg);
   EngineResult a, b, t, c;
-  make_model_engine()->run(setup, cfg, a);
-  make_trad_model_engine()->run(setup, cfg, t);
-  make_model_engine()->run(setup, cfg, b);
-  auto engine = make_model_engine();
+  make_improved_sc_engine()->run(setup, cfg, a);
+  make_trad_sc_engine()->run(setup, cfg, t);
+  make_improved_sc_engine()->run(setup, cfg, b);
+  auto engine = make_improved_sc_engine();
   engine->run(setup, cfg, c);
   for (const EngineResult* r : {&b, &c}) {
     EXPECT_EQ(r->spans, a.spans);
@@ -161,7 +161,7 @@ TEST(ScSpans, WidthErrorIsThrownAndTheNextRunWorks) {
   const Scene scene = builtin("lowpoly-near", cfg);
   const SetupResult setup = setup_scene(scene.tris, cfg);
   EngineResult r;
-  EXPECT_THROW(make_model_engine()->run(setup, cfg, r), WidthError);
+  EXPECT_THROW(make_improved_sc_engine()->run(setup, cfg, r), WidthError);
   RasterConfig ok;
   expect_model_equals_golden(builtin("lowpoly-near", ok), ok);
 }
@@ -170,7 +170,7 @@ TEST(ScSpans, EmptyScene) {
   RasterConfig cfg;
   const SetupResult setup = setup_scene({}, cfg);
   EngineResult r;
-  make_model_engine()->run(setup, cfg, r);
+  make_improved_sc_engine()->run(setup, cfg, r);
   EXPECT_TRUE(r.spans.empty());
   EXPECT_TRUE(r.cycles.empty());
   EXPECT_EQ(r.total_cycles, 0u);

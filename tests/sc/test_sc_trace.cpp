@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "core/setup.hpp"
-#include "sc/sc_engine.hpp"
+#include "common/setup.hpp"
+#include "common/sc_engine.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "support/vcd_reader.hpp"
@@ -41,7 +41,7 @@ TEST(ScTrace, DocumentedSignalsExistAndChange) {
     const Scene scene = make_builtin("mixed:objects=2", cfg, CameraOptions{});
     const SetupResult setup = setup_scene(scene.tris, cfg);
     EngineResult r;
-    (trad ? make_trad_model_engine() : make_model_engine())->run(setup, cfg, r);
+    (trad ? make_trad_sc_engine() : make_improved_sc_engine())->run(setup, cfg, r);
     Vcd v = read_vcd(cfg.trace_path);
     for (const char* sig : kDocumented) {
       ASSERT_TRUE(v.id_of.count(sig)) << sig << " missing (trad " << trad << ")";
@@ -101,7 +101,7 @@ TEST(ScTrace, WindowKeepsA100kSceneSmall) {
   cfg.trace_first = 50000;
   cfg.trace_last = 50999;
   EngineResult r;
-  make_model_engine()->run(setup, cfg, r);
+  make_improved_sc_engine()->run(setup, cfg, r);
   const uint64_t size = file_size(cfg.trace_path);
   EXPECT_GT(size, 0u);
   EXPECT_LT(size, 5u * 1000 * 1000);

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/engine.hpp"
+#include "common/engine.hpp"
 
 namespace trirast::test {
 

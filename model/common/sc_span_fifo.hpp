@@ -1,0 +1,162 @@
+// The span FIFO and the span sink (docs/timing.md, "Span FIFO and sink"), shared by the improved
+// and the traditional unit's SystemC models.
+//
+// Both are exact without an event per cycle: the sink's ready is a function of the cycle alone, so
+// the cycle a span leaves is known when it is pushed: span i is on the output from
+// avail_i = max(push_i + 1, pop_(i-1) + 1) and popped in the first ready cycle >= avail_i. The FIFO
+// keeps the pop cycles of the spans still inside it; the walk stage asks it for the occupancy at
+// the start of a cycle and for the first cycle with room for N more spans.
+#pragma once
+#include <algorithm>
+#include <cstdint>
+#include <deque>
+#include <exception>
+#include <map>
+#include <string>
+#include <systemc>
+#include <vector>
+
+#include "common/config.hpp"
+#include "common/engine.hpp"
+#include "common/setup.hpp"
+#include "common/sink_pattern.hpp"
+#include "common/sc_cycles.hpp"
+#include "common/sc_vcd_trace.hpp"
+
+namespace trirast::sc {
+
+// The trace handles of the span output (scope "span"), the FIFO (scope "span_fifo") and the
+// sink (scope "span_sink").
+struct SpanTraceSignals {
+  int valid = -1, ready = -1, tri = -1, y = -1, x_begin = -1, x_end = -1, count = -1;
+  int take = -1;  // scope "span_sink": the sink takes a span in this cycle
+};
+
+// What one run shares between the modules: configuration, results, trace, first error.
+struct RunState {
+  RasterConfig cfg;
+  SinkPattern sink;
+  uint64_t base = 0;  // absolute cycle of the run's cycle 0
+  const SetupResult* setup = nullptr;
+  EngineResult* out = nullptr;   // spans, work, cycles (one entry per set-up triangle)
+  VcdRecorder* trace = nullptr;  // null: no trace
+  std::exception_ptr error;      // first exception thrown inside a process
+  bool finished = false;         // the setup stage offered every triangle
+
+  uint64_t now() const { return now_cycles() - base; }  // the run's current cycle
+  TriangleCycles& tri(size_t pos) { return out->cycles[pos]; }
+};
+
+// Per-module statistics of one run, added into EngineResult::work at the end.
+struct StageCounters {
+  uint64_t busy = 0;   // cycles the module did work
+  uint64_t stall = 0;  // cycles it held work but could not advance
+};
+
+// The span sink: takes each span in its pop cycle, records the triangle's first and last pop.
+class SpanSink : public sc_core::sc_module {
+ public:
+  SC_HAS_PROCESS(SpanSink);
+  explicit SpanSink(sc_core::sc_module_name name) : sc_core::sc_module(name) {}
+
+  void begin_run(RunState* run) {
+    run_ = run;
+    counters_ = StageCounters{};
+  }
+  // Span of the triangle at setup position `pos`, popped in cycle `pop` after waiting `waited`
+  // cycles on the output with ready low.
+  void take(const Span& s, size_t pos, uint64_t pop, uint64_t waited) {
+    TriangleCycles& t = run_->tri(pos);
+    if (t.spans == 0) t.first_span_cycle = pop;
+    t.done_cycle = pop;
+    ++t.spans;
+    t.pixels += uint64_t(s.pixels());
+    run_->out->spans.push_back(s);
+    ++counters_.busy;
+    counters_.stall += waited;
+  }
+  const StageCounters& counters() const { return counters_; }
+
+ private:
+  RunState* run_ = nullptr;
+  StageCounters counters_;
+};
+
+// The walk stage's port onto the span FIFO.
+class SpanPushIf : public virtual sc_core::sc_interface {
+ public:
+  // First cycle >= t whose start-of-cycle occupancy is <= DEPTH - n (room for n pushes).
+  virtual uint64_t first_room(uint64_t t, uint64_t n) = 0;
+  // Pushes a span of the triangle at setup position pos at the end of cycle t.
+  virtual void push(const Span& s, size_t pos, uint64_t t) = 0;
+};
+
+// The span FIFO: DEPTH entries between the walk stage and the sink.
+class SpanFifo : public sc_core::sc_module, public SpanPushIf {
+ public:
+  SC_HAS_PROCESS(SpanFifo);
+  SpanFifo(sc_core::sc_module_name name, SpanSink& sink) : sc_core::sc_module(name), sink_(sink) {}
+
+  void begin_run(RunState* run, const SpanTraceSignals& sig) {
+    run_ = run;
+    sig_ = sig;
+    depth_ = uint64_t(run->cfg.fifo_depth);
+    pops_.clear();
+    last_pop_ = 0;
+    any_pop_ = false;
+    valid_cycles_ = 0;
+    pushes_ = 0;
+  }
+
+  // Occupancy at the start of cycle t (t never decreases between calls of one run).
+  uint64_t count_at(uint64_t t) {
+    while (!pops_.empty() && pops_.front() < t) pops_.pop_front();
+    return pops_.size();
+  }
+  // First cycle >= t whose start-of-cycle occupancy is <= DEPTH - n (room for n pushes).
+  uint64_t first_room(uint64_t t, uint64_t n) override {
+    const uint64_t c = count_at(t);
+    if (c + n <= depth_) return t;
+    const uint64_t k = c + n - depth_;  // pops needed
+    return pops_[k - 1] + 1;
+  }
+  // Pushes a span at the end of cycle t (t >= every earlier push's cycle).
+  void push(const Span& s, size_t pos, uint64_t t) override {
+    const uint64_t avail = any_pop_ ? std::max(t + 1, last_pop_ + 1) : t + 1;
+    const uint64_t pop = run_->sink.next_ready(avail);
+    last_pop_ = pop;
+    any_pop_ = true;
+    pops_.push_back(pop);
+    ++pushes_;
+    valid_cycles_ += pop - avail + 1;
+    if (VcdRecorder* tr = run_->trace) {
+      tr->delta(sig_.count, t + 1, +1);
+      tr->delta(sig_.count, pop + 1, -1);
+      tr->value(sig_.valid, avail, 1);
+      tr->value(sig_.tri, avail, s.tri);
+      tr->value(sig_.y, avail, uint64_t(uint32_t(s.y)));
+      tr->value(sig_.x_begin, avail, uint64_t(uint32_t(s.x_begin)));
+      tr->value(sig_.x_end, avail, uint64_t(uint32_t(s.x_end)));
+      tr->value(sig_.valid, pop + 1, 0);  // overridden when the next span is there in pop + 1
+      tr->value(sig_.tri, pop + 1, VcdRecorder::kX);
+      tr->value(sig_.take, pop, 1);
+      tr->value(sig_.take, pop + 1, 0);  // overridden by the next span's pop in pop + 1
+    }
+    sink_.take(s, pos, pop, pop - avail);
+  }
+
+  uint64_t valid_cycles() const { return valid_cycles_; }  // cycles with span_valid_o high
+  uint64_t pushes() const { return pushes_; }
+
+ private:
+  SpanSink& sink_;
+  RunState* run_ = nullptr;
+  SpanTraceSignals sig_;
+  uint64_t depth_ = 8;
+  std::deque<uint64_t> pops_;  // pop cycles of the spans pushed so far and not yet known gone
+  uint64_t last_pop_ = 0;
+  bool any_pop_ = false;
+  uint64_t valid_cycles_ = 0, pushes_ = 0;
+};
+
+}  // namespace trirast::sc

@@ -1,0 +1,64 @@
+#include "halfspace/halfspace_sc.hpp"
+
+#include <algorithm>
+
+namespace trirast::sc {
+
+void HalfspaceSetupStageSc::configure(const RasterConfig& cfg) {
+  unit_ = std::make_unique<HalfspaceUnit>(cfg);
+}
+
+uint64_t HalfspaceSetupStageSc::set_up(const TriangleSetup& t, uint64_t a, HalfspaceSetupTxn& x) {
+  trace_state(a + 1, StHsBox);
+  x.setup = unit_->set_up(t);
+  if (x.setup.empty) return kRetired;
+  TriangleCycles& rec = run_->tri(x.pos);
+  rec.box_width = uint64_t(x.setup.Xmax) + 1;
+  rec.box_height = uint64_t(x.setup.Ymax) + 1;
+  trace_state(a + 2, StHsEdge);
+  return a + 3;
+}
+
+void HalfspaceWalkStageSc::configure(const RasterConfig& cfg) {
+  unit_ = std::make_unique<HalfspaceUnit>(cfg);
+  walker_cycles = walker_wait = emitter_pushes = 0;
+}
+
+void HalfspaceWalkStageSc::add_counters(std::map<std::string, uint64_t>& work) const {
+  WalkStageBase<HalfspaceSetupTxn>::add_counters(work);
+  add_counter(work, "busy_cycles.tile_walker", walker_cycles);
+  add_counter(work, "stall_cycles.tile_walker", walker_wait);
+  add_counter(work, "busy_cycles.span_emitter", emitter_pushes);
+}
+
+uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
+  RunState& r = *run_;
+  HalfspaceTriangleResult res;
+  res.setup = x.setup;
+  spans_.clear();
+  unit_->walk(res, spans_);
+  add_hs_work(res.work, r.out->work);
+  uint64_t t = h + 1;        // the walker's first cycle of the next band
+  uint64_t last_push = 0;    // the emitter's last push so far (0: none; every push is > h)
+  uint64_t w = h;            // the cycle the last band went to the emitter
+  size_t next = 0;
+  for (const HalfspaceBand& b : res.bands) {
+    const uint64_t e = t + b.cycles - 1;     // the band's last walker cycle
+    w = std::max(e, last_push);              // hand-off to the emitter at the end of w
+    walker_cycles += b.cycles;
+    walker_wait += w - e;
+    counters.busy += b.cycles;
+    uint64_t p = w;
+    for (uint64_t i = 0; i < b.spans; ++i, ++next) {
+      const Span& s = spans_[next];
+      p = start_row(p + 1, 1, uint64_t(s.y - x.setup.y0));
+      spans->push(s, x.pos, p);
+      ++emitter_pushes;
+      last_push = p;
+    }
+    t = w + 1;
+  }
+  return std::max(w, last_push);
+}
+
+}  // namespace trirast::sc

@@ -1,0 +1,54 @@
+// The half-space unit, stage 2: the tile walker. It walks the box in bands of U rows (U = T, or S
+// without tiles) and each band in units of U x U pixels (docs/unit.md, "The half-space unit"),
+// one unit test per cycle: the edge values at the unit's four corner pixel centres (the unit
+// unclipped, so every unit of a band has the same shape) reject it (all four outside one edge),
+// accept it (all inside every edge: a tile only) or leave it partial (its stamps are tested).
+// Row walk: every unit, left to right. Zig-zag walk: even bands left to right, odd bands right to
+// left; the first unit rejected after a unit that was not ends the band (the units a band does
+// not reject are contiguous, so the rest of the band is rejected).
+#pragma once
+#include <cstdint>
+
+#include "halfspace/halfspace_setup.hpp"
+
+namespace trirast {
+
+enum class HalfspaceClass { Reject, Accept, Partial };
+
+class HalfspaceTileWalker {
+ public:
+  HalfspaceTileWalker(const RasterConfig& cfg);
+  // Corner test of the U x U unit at box pixel (i0, j0). Tiles may accept; stamps never do
+  // (a stamp's pixels are tested one by one).
+  HalfspaceClass classify(const HalfspaceSetupOut& s, int64_t i0, int64_t j0) const;
+
+  // Walks band `band` of s: calls visit(i0, j0, cls) for each unit tested, in order; returns
+  // the number of units tested.
+  template <class Visit>
+  int64_t walk_band(const HalfspaceSetupOut& s, int64_t band, Visit&& visit) const {
+    const int64_t U = p_.unit();
+    const int64_t j0 = band * U;
+    const bool backward = p_.walk == HalfspaceWalk::Zigzag && (band & 1);
+    const bool early_end = p_.walk == HalfspaceWalk::Zigzag;
+    bool seen = false;
+    int64_t tested = 0;
+    for (int64_t n = 0; n < s.units; ++n) {
+      const int64_t col = backward ? s.units - 1 - n : n;
+      const HalfspaceClass c = classify(s, col * U, j0);
+      ++tested;
+      visit(col * U, j0, c);
+      if (c != HalfspaceClass::Reject) {
+        seen = true;
+      } else if (early_end && seen) {
+        break;
+      }
+    }
+    return tested;
+  }
+
+ private:
+  HalfspaceParams p_;
+  UnitWidths w_;
+};
+
+}  // namespace trirast

@@ -1,0 +1,38 @@
+#include "improved2/improved2_edge_lane.hpp"
+
+#include <algorithm>
+
+#include "common/fixed_point.hpp"
+
+namespace trirast {
+
+Improved2LaneWork Improved2EdgeLane::run(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax) {
+  Improved2LaneWork w;
+  w.m = std::max(1, unsigned_bits(uint64_t(Xmax))) + 1;
+  // The traversal: dir - keeps u = ~v, so both directions add s and "entered" is u >= 0.
+  int64_t u = n.dir_down ? n.T : -n.T1 - 1;
+  int64_t j = 0;
+  while (u < 0 && j <= Ymax) {
+    u += n.s;
+    ++j;
+  }
+  w.steps = j;
+  w.enters = j <= Ymax;
+  if (n.horizontal) {
+    w.cycles = uint64_t(j) + 1;
+    return w;
+  }
+  const int64_t limit = n.D << w.m;  // a quotient of 2^m or more saturates
+  w.slope_saturated = n.s >= limit;
+  const int ms = w.slope_saturated ? 2 : w.m;
+  int me = 0;
+  if (w.enters) {
+    w.entry_saturated = u >= limit;
+    me = w.entry_saturated ? 2 : w.m;
+  }
+  w.iterations = uint64_t(ms + me);
+  w.cycles = uint64_t(std::max<int64_t>(ms, j)) + 1 + uint64_t(me);
+  return w;
+}
+
+}  // namespace trirast

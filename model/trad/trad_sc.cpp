@@ -1,0 +1,72 @@
+#include "trad/trad_sc.hpp"
+
+#include <algorithm>
+
+#include "trad/trad_timing.hpp"
+
+namespace trirast::sc {
+
+// ---- setup stage -------------------------------------------------------------------------------
+
+void TradSetupStage::configure(const RasterConfig& cfg) {
+  quantizer_ = std::make_unique<TradVertexQuantizer>(cfg);
+}
+
+uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) {
+  // a + 1, StSort: quantize and sort the vertices; collinear integer vertices retire here.
+  trace_state(a + 1, StSort);
+  x.verts = quantizer_->run(t);
+  if (x.verts.empty) {
+    ++run_->out->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
+    return kRetired;
+  }
+  // The box the walk stage covers: the integer vertices' bounding box (rows p0.y .. p2.y).
+  TriangleCycles& rec = run_->tri(x.pos);
+  const Vec2i* p = x.verts.p;
+  rec.box_width = uint64_t(std::max({p[0].x, p[1].x, p[2].x}) - std::min({p[0].x, p[1].x, p[2].x})) + 1;
+  rec.box_height = uint64_t(p[2].y - p[0].y) + 1;
+  // a + 2, StLine: the three lines' set-up; StHold from a + 3.
+  trace_state(a + 2, StLine);
+  return a + 3;
+}
+
+// ---- walk stage --------------------------------------------------------------------------------
+
+void TradWalkStage::configure(const RasterConfig& cfg) {
+  steps_long = steps_short = 0;
+  filler_ = std::make_unique<TradSpanFiller>(cfg);
+}
+
+void TradWalkStage::add_counters(std::map<std::string, uint64_t>& work) const {
+  WalkStageBase<TradSetupTxn>::add_counters(work);
+  add_counter(work, "busy_cycles.long_walker", steps_long);
+  add_counter(work, "busy_cycles.short_walker", steps_short);
+}
+
+uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
+  RunState& r = *run_;
+  // The datapath: the spans of the rows inside the viewport, in row order.
+  row_spans_.clear();
+  const TradTriangleResult res = filler_->run_triangle(r.setup->tris[x.pos], row_spans_);
+  add_trad_work(res, r.out->work);
+  const TradWalkTiming timing(x.verts);
+  uint64_t t = h + 1;
+  size_t next_span = 0;
+  for (int64_t y = timing.first_row(); y <= timing.last_row(); ++y) {
+    t = start_row(t, 1, uint64_t(y - timing.first_row()));
+    // The row takes as many cycles as the busier walker steps (at least one).
+    const uint64_t l = timing.steps_on_row(0, y);
+    const uint64_t s = timing.steps_on_row(1, y) + timing.steps_on_row(2, y);
+    steps_long += l;
+    steps_short += s;
+    const uint64_t c = std::max<uint64_t>(1, std::max(l, s));
+    const uint64_t end = t + c - 1;  // the row's span is pushed at the end of its last cycle
+    if (next_span < row_spans_.size() && row_spans_[next_span].y == y)
+      spans->push(row_spans_[next_span++], x.pos, end);
+    counters.busy += c;
+    t = end + 1;
+  }
+  return t - 1;
+}
+
+}  // namespace trirast::sc

@@ -1,0 +1,183 @@
+// Stage 1, interface (docs/unit.md, section 1): holds the accepted triangle, computes its pixel
+// bounding box (setup StBox, registered) and the box-relative edge terms (setup StEdge,
+// combinational): a = A*u, b = B*u and the corner values E_L = E(c(x0, y0)) + bias,
+// E_R = E(c(x1, y0)) + bias. The corner values are the unit's only multipliers: with the pixel
+// centre c = x*u + h, A*c = (A*x << F) + (A << (F - 1)), so each is a (p + 1) x PixBits product.
+module trirast_box_stage (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  // ---- configuration ----
+  input  logic [trirast_pkg::PixBits-1:0]       vp_xmax_i,  // viewport width - 1
+  input  logic [trirast_pkg::PixBits-1:0]       vp_ymax_i,  // viewport height - 1
+  // ---- the triangle port's data (taken with accept_i) ----
+  input  logic                                  accept_i,   // setup StIdle handshake
+  input  logic [trirast_pkg::TagBits-1:0]       tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  vx_i,       // vertex k x at [k*p +: p], signed
+  input  logic [3*trirast_pkg::VertexBits-1:0]  vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    a_i,        // edge k: A (signed)
+  input  logic [3*trirast_pkg::CoefBits-1:0]    b_i,        // edge k: B (signed)
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    c_i,        // edge k: C (signed)
+  input  logic [2:0]                            bias_i,     // edge k: 1 = bias -1 (not top-left)
+  // ---- bounding box ----
+  input  logic                                  box_i,      // setup StBox: register the box
+  output logic                                  empty_o,    // in StBox: no pixel centre in the box
+  output logic [trirast_pkg::TagBits-1:0]       tag_o,
+  output logic [trirast_pkg::PixBits-1:0]       x0_o,
+  output logic [trirast_pkg::PixBits-1:0]       y0_o,
+  output logic [trirast_pkg::BoxBits-1:0]       xmax_o,     // x1 - x0
+  output logic [trirast_pkg::BoxBits-1:0]       ymax_o,     // y1 - y0
+  // ---- edge terms (valid from StEdge on) ----
+  output logic [3*trirast_pkg::CoefBits-1:0]    a_o,        // A of edge k (a = A*u)
+  output logic [3*trirast_pkg::CoefBits-1:0]    b_o,        // B of edge k (b = B*u)
+  output logic [3*trirast_pkg::EdgeBits-1:0]    el_o,       // E_L of edge k
+  output logic [3*trirast_pkg::EdgeBits-1:0]    er_o        // E_R of edge k
+);
+  localparam int F = trirast_pkg::FracBits;
+  localparam int P = trirast_pkg::VertexBits;
+  localparam int CoefBits = trirast_pkg::CoefBits;
+  localparam int EdgeBits = trirast_pkg::EdgeBits;
+  localparam int PixBits = trirast_pkg::PixBits;
+  localparam int BoxBits = trirast_pkg::BoxBits;
+  localparam int TagBits = trirast_pkg::TagBits;
+  localparam int WBits = P + 2;                   // box arithmetic
+  localparam int ProdBits = CoefBits + PixBits + 1;  // A * x (x unsigned)
+  localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);  // h = u/2
+
+  // The accepted triangle.
+  logic [TagBits-1:0] tag_q, tag_d;
+  logic [3*P-1:0] vx_q, vx_d, vy_q, vy_d;
+  logic [3*CoefBits-1:0] a_q, a_d, b_q, b_d;
+  logic [3*EdgeBits-1:0] c_q, c_d;
+  logic [2:0] bias_q, bias_d;
+  // Its box.
+  logic [PixBits-1:0] x0_q, x0_d, y0_q, y0_d;
+  logic [BoxBits-1:0] xmax_q, xmax_d, ymax_q, ymax_d;
+
+  // First and last pixel whose centre lies in [lo, hi], clipped to [0, limit]:
+  // first = ceil((lo - h)/u) = -((h - lo) >> F), last = floor((hi - h)/u) = (hi - h) >> F.
+  logic signed [WBits-1:0] fx, lx, fy, ly;
+
+  // Vertex k of a packed coordinate triple, sign-extended to WBits.
+  function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
+    coord = {{2{v[k*P+P-1]}}, v[k*P +: P]};
+  endfunction
+  function automatic logic signed [WBits-1:0] min3(input logic [3*P-1:0] v);
+    logic signed [WBits-1:0] m;
+    m = coord(v, 0);
+    if (coord(v, 1) < m) m = coord(v, 1);
+    if (coord(v, 2) < m) m = coord(v, 2);
+    min3 = m;
+  endfunction
+  function automatic logic signed [WBits-1:0] max3(input logic [3*P-1:0] v);
+    logic signed [WBits-1:0] m;
+    m = coord(v, 0);
+    if (coord(v, 1) > m) m = coord(v, 1);
+    if (coord(v, 2) > m) m = coord(v, 2);
+    max3 = m;
+  endfunction
+  // ceil((lo - h)/u) = -((h - lo) >> F), clipped below at 0.
+  function automatic logic signed [WBits-1:0] first_px(input logic signed [WBits-1:0] lo);
+    logic signed [WBits-1:0] f;
+    f = -((Half - lo) >>> F);
+    first_px = (f < 0) ? '0 : f;
+  endfunction
+  // floor((hi - h)/u) = (hi - h) >> F, clipped above at the viewport's last pixel.
+  function automatic logic signed [WBits-1:0] last_px(input logic signed [WBits-1:0] hi,
+                                                      input logic [PixBits-1:0] limit);
+    logic signed [WBits-1:0] l;
+    l = (hi - Half) >>> F;
+    last_px = (l > $signed(WBits'(limit))) ? $signed(WBits'(limit)) : l;
+  endfunction
+
+  always_comb begin
+    fx = first_px(min3(vx_q));
+    lx = last_px(max3(vx_q), vp_xmax_i);
+    fy = first_px(min3(vy_q));
+    ly = last_px(max3(vy_q), vp_ymax_i);
+    empty_o = (fx > lx) || (fy > ly);
+  end
+
+  always_comb begin
+    tag_d  = tag_q;
+    vx_d   = vx_q;
+    vy_d   = vy_q;
+    a_d    = a_q;
+    b_d    = b_q;
+    c_d    = c_q;
+    bias_d = bias_q;
+    x0_d   = x0_q;
+    y0_d   = y0_q;
+    xmax_d = xmax_q;
+    ymax_d = ymax_q;
+    if (accept_i) begin
+      tag_d  = tag_i;
+      vx_d   = vx_i;
+      vy_d   = vy_i;
+      a_d    = a_i;
+      b_d    = b_i;
+      c_d    = c_i;
+      bias_d = bias_i;
+    end
+    if (box_i) begin
+      // The box fits BoxBits (the harness rejects larger ones, as the model does).
+      x0_d   = PixBits'(fx);
+      y0_d   = PixBits'(fy);
+      xmax_d = BoxBits'(lx - fx);
+      ymax_d = BoxBits'(ly - fy);
+    end
+  end
+
+  // Datapath registers: no reset (written by the handshake before they are read).
+  always_ff @(posedge clk_i) begin
+    tag_q  <= tag_d;
+    vx_q   <= vx_d;
+    vy_q   <= vy_d;
+    a_q    <= a_d;
+    b_q    <= b_d;
+    c_q    <= c_d;
+    bias_q <= bias_d;
+    x0_q   <= x0_d;
+    y0_q   <= y0_d;
+    xmax_q <= xmax_d;
+    ymax_q <= ymax_d;
+  end
+
+  // Corner values. The products are exact; the sums are taken modulo 2^EdgeBits, exact because
+  // E_L and E_R fit EdgeBits (docs/unit.md, "Widths").
+  logic [PixBits-1:0] x1;
+  assign x1 = x0_q + PixBits'(xmax_q);
+
+  for (genvar k = 0; k < 3; k++) begin : g_corner
+    logic signed [CoefBits-1:0] ak, bk;
+    logic signed [ProdBits-1:0] ax0, ax1, by0;
+    logic signed [EdgeBits-1:0] common, ak_h, bk_h;
+    assign ak  = a_q[k*CoefBits +: CoefBits];
+    assign bk  = b_q[k*CoefBits +: CoefBits];
+    assign ax0 = ak * $signed({1'b0, x0_q});
+    assign ax1 = ak * $signed({1'b0, x1});
+    assign by0 = bk * $signed({1'b0, y0_q});
+    // A*h and B*h with h = 2^(F-1).
+    assign ak_h = {{(EdgeBits - CoefBits){ak[CoefBits-1]}}, ak} <<< (F - 1);
+    assign bk_h = {{(EdgeBits - CoefBits){bk[CoefBits-1]}}, bk} <<< (F - 1);
+    // B*c(y0) + C + bias, shared by both corners.
+    assign common = ({{(EdgeBits - ProdBits){by0[ProdBits-1]}}, by0} <<< F) + bk_h +
+                    $signed(c_q[k*EdgeBits +: EdgeBits]) - EdgeBits'(bias_q[k]);
+    assign el_o[k*EdgeBits +: EdgeBits] =
+        ({{(EdgeBits - ProdBits){ax0[ProdBits-1]}}, ax0} <<< F) + ak_h + common;
+    assign er_o[k*EdgeBits +: EdgeBits] =
+        ({{(EdgeBits - ProdBits){ax1[ProdBits-1]}}, ax1} <<< F) + ak_h + common;
+  end
+
+  assign tag_o  = tag_q;
+  assign x0_o   = x0_q;
+  assign y0_o   = y0_q;
+  assign xmax_o = xmax_q;
+  assign ymax_o = ymax_q;
+  assign a_o    = a_q;
+  assign b_o    = b_q;
+
+  // rst_ni is unused: the interface holds only data registers.
+  logic unused_rst;
+  assign unused_rst = rst_ni;
+
+endmodule

@@ -1,0 +1,150 @@
+// The half-space unit's setup stage (docs/timing.md "The half-space unit", docs/unit.md): the
+// improved unit's interface (bounding box, edge terms) and the FSM
+// StIdle -> StBox -> StEdge -> StHold -> StIdle.
+//   StIdle : tri_ready_o; the handshake registers the triangle.
+//   StBox  : the bounding box; an empty box retires the triangle here (box_retire_o).
+//   StEdge : registers E0 = E_L (the value at the box corner) and the value at the last unit of
+//            band row 0, E_end = E0 + ((Xmax & ~(U-1)) * A) << F (one multiplier per edge).
+//   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
+`include "trirast_assert.svh"
+
+module trirast_halfspace_setup_stage #(
+  parameter int UnitSize = 8  // U: tile side, or the stamp side without tiles
+) (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  input  logic [trirast_pkg::PixBits-1:0]       vp_xmax_i,
+  input  logic [trirast_pkg::PixBits-1:0]       vp_ymax_i,
+  // ---- triangle port ----
+  input  logic                                  tri_valid_i,
+  output logic                                  tri_ready_o,
+  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
+  input  logic [2:0]                            tri_bias_i,
+  // ---- empty-box retirement (StBox) ----
+  output logic                                  box_retire_o,
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  // ---- hand-off to the walk stage (valid in StHold) ----
+  output logic                                  hand_valid_o,
+  input  logic                                  hand_ready_i,
+  output logic [trirast_pkg::TagBits-1:0]       hand_tag_o,
+  output logic [trirast_pkg::PixBits-1:0]       hand_x0_o,
+  output logic [trirast_pkg::PixBits-1:0]       hand_y0_o,
+  output logic [trirast_pkg::BoxBits-1:0]       hand_xmax_o,
+  output logic [trirast_pkg::BoxBits-1:0]       hand_ymax_o,
+  output logic [3*trirast_pkg::CoefBits-1:0]    hand_a_o,     // A of edge k
+  output logic [3*trirast_pkg::CoefBits-1:0]    hand_b_o,     // B of edge k
+  output logic [3*trirast_pkg::EdgeBits-1:0]    hand_e0_o,    // E0 of edge k
+  output logic [3*trirast_pkg::EdgeBits-1:0]    hand_eend_o,  // E_end of edge k
+  output logic [2:0]                            state_o
+);
+  localparam int F = trirast_pkg::FracBits;
+  localparam int CoefBits = trirast_pkg::CoefBits;
+  localparam int EdgeBits = trirast_pkg::EdgeBits;
+  localparam int BoxBits = trirast_pkg::BoxBits;
+  localparam int ProdBits = CoefBits + BoxBits + 1;  // A * (Xmax & ~(U-1)), signed
+
+  typedef enum logic [2:0] {
+    StIdle = 3'd0,
+    StBox  = 3'd1,
+    StEdge = 3'd2,
+    StHold = 3'd4
+  } hs_setup_state_e;
+
+  hs_setup_state_e state_q, state_d;
+  logic accept, box_en, empty;
+  logic [3*EdgeBits-1:0] el, er_unused, e0_q, e0_d, eend_q, eend_d;
+
+  assign tri_ready_o = state_q == StIdle;
+  assign accept = tri_valid_i && tri_ready_o;
+
+  trirast_box_stage u_interface (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .vp_xmax_i (vp_xmax_i),
+    .vp_ymax_i (vp_ymax_i),
+    .accept_i  (accept),
+    .tag_i     (tri_tag_i),
+    .vx_i      (tri_vx_i),
+    .vy_i      (tri_vy_i),
+    .a_i       (tri_a_i),
+    .b_i       (tri_b_i),
+    .c_i       (tri_c_i),
+    .bias_i    (tri_bias_i),
+    .box_i     (box_en),
+    .empty_o   (empty),
+    .tag_o     (hand_tag_o),
+    .x0_o      (hand_x0_o),
+    .y0_o      (hand_y0_o),
+    .xmax_o    (hand_xmax_o),
+    .ymax_o    (hand_ymax_o),
+    .a_o       (hand_a_o),
+    .b_o       (hand_b_o),
+    .el_o      (el),
+    .er_o      (er_unused)
+  );
+
+  // E_end = E_L + ((Xmax & ~(U-1)) * A) << F: the first unit of a right-to-left band.
+  logic [BoxBits-1:0] xlast;
+  assign xlast = hand_xmax_o & ~BoxBits'(UnitSize - 1);
+  logic [3*EdgeBits-1:0] eend;
+  always_comb begin
+    for (int k = 0; k < 3; k++) begin
+      logic [ProdBits-1:0] prod;
+      prod = {{(ProdBits - CoefBits){hand_a_o[k*CoefBits + CoefBits-1]}},
+              hand_a_o[k*CoefBits +: CoefBits]} * {{(ProdBits - BoxBits){1'b0}}, xlast};
+      // E_end fits EdgeBits (a box pixel's value): the sum is exact modulo 2^EdgeBits even where
+      // the product is wider than EdgeBits - F (a box wider than the coordinate range).
+      eend[k*EdgeBits +: EdgeBits] = el[k*EdgeBits +: EdgeBits] + (EdgeBits'($signed(prod)) << F);
+    end
+  end
+  assign e0_d = (state_q == StEdge) ? el : e0_q;
+  assign eend_d = (state_q == StEdge) ? eend : eend_q;
+
+  always_comb begin
+    hs_setup_state_e next;  // one write of state_d (Icarus 11: see trirast_halfspace_stamp_tester.sv)
+    box_en = state_q == StBox;
+    box_retire_o = state_q == StBox && empty;
+    box_retire_tag_o = hand_tag_o;
+    hand_valid_o = state_q == StHold;
+    next = state_q;
+    unique case (state_q)
+      StIdle: if (accept) next = StBox;
+      StBox: begin
+        if (empty) next = StIdle;
+        else next = StEdge;
+      end
+      StEdge: next = StHold;
+      StHold: if (hand_ready_i) next = StIdle;
+      default: next = StIdle;
+    endcase
+    state_d = next;
+  end
+
+  assign hand_e0_o = e0_q;
+  assign hand_eend_o = eend_q;
+  assign state_o = state_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) state_q <= StIdle;
+    else state_q <= state_d;
+  end
+  always_ff @(posedge clk_i) begin
+    e0_q <= e0_d;
+    eend_q <= eend_d;
+  end
+
+  logic unused_er;
+  assign unused_er = ^er_unused;
+
+  `ASSERT(HalfspaceSetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
+          state_q == StHold, clk_i, !rst_ni)
+  // The hand-off holds its triangle until the walk stage takes it.
+  `ASSERT(HalfspaceHandHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o && $stable(hand_tag_o),
+          clk_i, !rst_ni)
+  `ASSERT_KNOWN(HalfspaceHandValidKnown_A, {tri_ready_o, hand_valid_o, box_retire_o}, clk_i, !rst_ni)
+endmodule

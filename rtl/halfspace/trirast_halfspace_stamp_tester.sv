@@ -1,0 +1,56 @@
+// The half-space unit's stamp tester (docs/unit.md "The half-space unit", stage 3): in one cycle
+// the three edge functions at the StampSize x StampSize pixel centres from box pixel (i0, j0):
+// E = e + di*a + dj*b with a = A*u, b = B*u (constant multiples: adders); a pixel is covered when
+// every E >= 0 and it lies in the box. Per stamp row: any pixel, first and last covered column.
+module trirast_halfspace_stamp_tester #(
+  parameter int StampSize = 2,
+  parameter int EdgeBits = trirast_pkg::EdgeBits  // the walker's edge values (HalfspaceEdgeBits)
+) (
+  input  logic [3*EdgeBits-1:0]                  e_i,       // E of edge k at the stamp origin
+  input  logic [3*EdgeBits-1:0]                  a_i,       // a = A*u of edge k
+  input  logic [3*EdgeBits-1:0]                  b_i,       // b = B*u of edge k
+  input  logic [trirast_pkg::BoxBits:0]          i0_i,      // stamp origin, box-relative
+  input  logic [trirast_pkg::BoxBits:0]          j0_i,
+  input  logic [trirast_pkg::BoxBits-1:0]        xmax_i,
+  input  logic [trirast_pkg::BoxBits-1:0]        ymax_i,
+  output logic [StampSize-1:0]                   row_any_o,
+  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_first_o,
+  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_last_o
+);
+  localparam int PB = trirast_pkg::BoxBits + 1;
+
+  // Icarus 11: a combinational block writes each module-level variable once, from block-local
+  // temporaries (docs/rtl.md, "Icarus"); a variable written twice glitches, and the glitch wakes
+  // the blocks that read it (here the walker's) in the same time step, again and again.
+  always_comb begin
+    logic [StampSize-1:0] any;
+    logic [StampSize*PB-1:0] first, last;
+    any = '0;
+    first = '0;
+    last = '0;
+    for (int dj = StampSize - 1; dj >= 0; dj--) begin
+      for (int di = StampSize - 1; di >= 0; di--) begin
+        logic in;
+        logic [PB-1:0] i, j;
+        i = i0_i + PB'(di);
+        j = j0_i + PB'(dj);
+        in = (i <= {1'b0, xmax_i}) && (j <= {1'b0, ymax_i});
+        for (int k = 0; k < 3; k++) begin
+          logic [EdgeBits-1:0] v;
+          v = e_i[k*EdgeBits +: EdgeBits] + EdgeBits'(di) * a_i[k*EdgeBits +: EdgeBits] +
+              EdgeBits'(dj) * b_i[k*EdgeBits +: EdgeBits];
+          in = in && !v[EdgeBits-1];
+        end
+        if (in) begin
+          // Scanning right to left: the last hit is the first column.
+          if (!any[dj]) last[dj*PB +: PB] = i;
+          first[dj*PB +: PB] = i;
+          any[dj] = 1'b1;
+        end
+      end
+    end
+    row_any_o = any;
+    row_first_o = first;
+    row_last_o = last;
+  end
+endmodule

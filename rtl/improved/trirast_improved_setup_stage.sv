@@ -1,0 +1,229 @@
+// The setup stage (docs/timing.md, "Setup stage"): the interface, three edge normalizers and
+// three edge lanes, with the FSM StIdle -> StBox -> StEdge -> StLanes -> StHold -> StIdle.
+//   StIdle : tri_ready_o; the handshake registers the triangle (accept_cycle).
+//   StBox  : the bounding box; an empty box retires the triangle here (box_retire_o).
+//   StEdge : corner values and normalizers; the lanes load their edges.
+//   StLanes: the lanes run (L = max L_k cycles).
+//   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
+`include "trirast_assert.svh"
+
+module trirast_improved_setup_stage (
+  input  logic                                  clk_i,
+  input  logic                                  rst_ni,
+  // ---- configuration ----
+  input  logic [trirast_pkg::PixBits-1:0]       vp_xmax_i,
+  input  logic [trirast_pkg::PixBits-1:0]       vp_ymax_i,
+  input  logic                                  divide_i,     // boundary mode divide
+  input  logic                                  adaptive_i,   // divider adaptive (else fixed)
+  // ---- triangle port ----
+  input  logic                                  tri_valid_i,
+  output logic                                  tri_ready_o,
+  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
+  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
+  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
+  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
+  input  logic [2:0]                            tri_bias_i,
+  // ---- empty-box retirement (StBox) ----
+  output logic                                  box_retire_o,
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  // ---- hand-off to the walk stage (valid in StHold) ----
+  output logic                                  hand_valid_o,
+  input  logic                                  hand_ready_i,  // the walk stage is idle
+  output logic [trirast_pkg::TagBits-1:0]       hand_tag_o,
+  output logic [trirast_pkg::PixBits-1:0]       hand_x0_o,
+  output logic [trirast_pkg::PixBits-1:0]       hand_y0_o,
+  output logic [trirast_pkg::BoxBits-1:0]       hand_xmax_o,
+  output logic [trirast_pkg::BoxBits-1:0]       hand_ymax_o,
+  output logic [2:0]                            hand_mirror_o,
+  output logic [2:0]                            hand_dir_down_o,
+  output logic [3*trirast_pkg::StepBits-1:0]    hand_d_o,
+  output logic [3*trirast_pkg::QuotBits-1:0]    hand_qs_o,
+  output logic [3*trirast_pkg::RemBits-1:0]     hand_rs_o,
+  output logic [2:0]                            hand_ssat_o,
+  output logic [2:0]                            hand_enters_o,
+  output logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_o,
+  output logic [5:0]                            hand_entry_state_o,
+  output logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_o,
+  output logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_o,
+  // ---- observation ----
+  output logic [2:0]                            state_o,
+  output logic [2:0]                            lane_busy_o,
+  output logic [2:0]                            lane_div_o    // lane k's divider iterates
+);
+  localparam int CoefBits = trirast_pkg::CoefBits;
+  localparam int EdgeBits = trirast_pkg::EdgeBits;
+  localparam int StepBits = trirast_pkg::StepBits;
+  localparam int QuotBits = trirast_pkg::QuotBits;
+  localparam int RemBits = trirast_pkg::RemBits;
+  localparam int RowBits = trirast_pkg::RowBits;
+  localparam int XBits = trirast_pkg::WalkerXBits;
+
+  typedef enum logic [2:0] {
+    StIdle  = 3'd0,
+    StBox   = 3'd1,
+    StEdge  = 3'd2,
+    StLanes = 3'd3,
+    StHold  = 3'd4
+  } setup_state_e;
+
+  setup_state_e state_q, state_d;
+  logic accept, empty, lanes_load, box_en;
+  logic [2:0] lane_done_next;
+  // Iterations per division (docs/unit.md, section 3): fixed Q, or adaptive
+  // Qx = bits(Xmax) + 1 and Qy = bits(Ymax) + 1 (bits(0) = 1).
+  localparam int IterBits = $clog2(trirast_pkg::QuotBits + 1);
+  logic [IterBits-1:0] qx, qy;
+
+  function automatic logic [IterBits-1:0] bits_plus_one(
+      input logic [trirast_pkg::BoxBits-1:0] v);
+    logic [IterBits-1:0] b;
+    b = IterBits'(1);
+    for (int i = 0; i < trirast_pkg::BoxBits; i++) begin
+      if (v[i]) b = IterBits'(i + 1);
+    end
+    bits_plus_one = b + 1'b1;
+  endfunction
+
+  always_comb begin
+    qx = adaptive_i ? bits_plus_one(hand_xmax_o) : IterBits'(trirast_pkg::QuotBits);
+    qy = adaptive_i ? bits_plus_one(hand_ymax_o) : IterBits'(trirast_pkg::QuotBits);
+  end
+
+  logic [3*CoefBits-1:0] a_all, b_all;
+  logic [3*EdgeBits-1:0] el_all, er_all;
+
+  trirast_box_stage u_interface (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .vp_xmax_i (vp_xmax_i),
+    .vp_ymax_i (vp_ymax_i),
+    .accept_i  (accept),
+    .tag_i     (tri_tag_i),
+    .vx_i      (tri_vx_i),
+    .vy_i      (tri_vy_i),
+    .a_i       (tri_a_i),
+    .b_i       (tri_b_i),
+    .c_i       (tri_c_i),
+    .bias_i    (tri_bias_i),
+    .box_i     (box_en),
+    .empty_o   (empty),
+    .tag_o     (hand_tag_o),
+    .x0_o      (hand_x0_o),
+    .y0_o      (hand_y0_o),
+    .xmax_o    (hand_xmax_o),
+    .ymax_o    (hand_ymax_o),
+    .a_o       (a_all),
+    .b_o       (b_all),
+    .el_o      (el_all),
+    .er_o      (er_all)
+  );
+
+  for (genvar k = 0; k < 3; k++) begin : g_edge
+    logic horiz, mirror, dir_down;
+    logic signed [EdgeBits-1:0] t, t1;
+    logic [StepBits-1:0] d, s;
+    logic horiz_unused;
+
+    trirast_improved_edge_normalizer u_normalizer (
+      .a_i        (a_all[k*CoefBits +: CoefBits]),
+      .b_i        (b_all[k*CoefBits +: CoefBits]),
+      .el_i       (el_all[k*EdgeBits +: EdgeBits]),
+      .er_i       (er_all[k*EdgeBits +: EdgeBits]),
+      .horiz_o    (horiz),
+      .mirror_o   (mirror),
+      .dir_down_o (dir_down),
+      .t_o        (t),
+      .t1_o       (t1),
+      .d_o        (d),
+      .s_o        (s)
+    );
+
+    trirast_improved_edge_lane u_lane (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      .divide_i      (divide_i),
+      .qx_i          (qx),
+      .qy_i          (qy),
+      .load_i        (lanes_load),
+      .horiz_i       (horiz),
+      .mirror_i      (mirror),
+      .dir_down_i    (dir_down),
+      .t_i           (t),
+      .t1_i          (t1),
+      .d_i           (d),
+      .s_i           (s),
+      .xmax_i        (hand_xmax_o),
+      .ymax_i        (hand_ymax_o),
+      .busy_o        (lane_busy_o[k]),
+      .div_o         (lane_div_o[k]),
+      .done_next_o   (lane_done_next[k]),
+      .horiz_o       (horiz_unused),
+      .mirror_o      (hand_mirror_o[k]),
+      .dir_down_o    (hand_dir_down_o[k]),
+      .d_o           (hand_d_o[k*StepBits +: StepBits]),
+      .qs_o          (hand_qs_o[k*QuotBits +: QuotBits]),
+      .rs_o          (hand_rs_o[k*RemBits +: RemBits]),
+      .ssat_o        (hand_ssat_o[k]),
+      .enters_o      (hand_enters_o[k]),
+      .j_entry_o     (hand_j_entry_o[k*RowBits +: RowBits]),
+      .entry_state_o (hand_entry_state_o[2*k +: 2]),
+      .entry_x_o     (hand_entry_x_o[k*XBits +: XBits]),
+      .entry_e_o     (hand_entry_e_o[k*RemBits +: RemBits])
+    );
+  end
+
+  always_comb begin
+    tri_ready_o      = state_q == StIdle;
+    accept           = tri_valid_i && tri_ready_o;
+    box_en           = state_q == StBox;
+    box_retire_o     = box_en && empty;
+    box_retire_tag_o = hand_tag_o;
+    lanes_load       = state_q == StEdge;
+    hand_valid_o     = state_q == StHold;
+    state_d          = state_q;
+    unique case (state_q)
+      StIdle: begin
+        if (accept) state_d = StBox;
+      end
+      StBox: begin
+        if (empty) state_d = StIdle;
+        else state_d = StEdge;
+      end
+      StEdge:  state_d = StLanes;
+      // The lanes' last cycle: hold from the next one (docs/timing.md: from a + 3 + L).
+      StLanes: if (&lane_done_next) state_d = StHold;
+      StHold:  if (hand_ready_i) state_d = StIdle;
+      default: state_d = StIdle;
+    endcase
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      state_q <= StIdle;
+    end else begin
+      state_q <= state_d;
+    end
+  end
+
+  assign state_o = state_q;
+
+  // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
+  // port, unchanged, until the handshake.
+  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
+                 {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i,
+                 !rst_ni)
+  // The hand-off (what this stage guarantees the walk stage): the set-up triangle is held in
+  // StHold, unchanged, until the walk stage takes it.
+  `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
+  `ASSERT_STABLE(HandDataStable_A, hand_valid_o && !hand_ready_i,
+                 {hand_tag_o, hand_x0_o, hand_y0_o, hand_xmax_o, hand_ymax_o, hand_mirror_o,
+                  hand_dir_down_o, hand_d_o, hand_qs_o, hand_rs_o, hand_ssat_o, hand_enters_o,
+                  hand_j_entry_o, hand_entry_state_o, hand_entry_x_o, hand_entry_e_o}, clk_i,
+                 !rst_ni)
+  `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
+          state_q == StLanes || state_q == StHold, clk_i, !rst_ni)
+
+endmodule
