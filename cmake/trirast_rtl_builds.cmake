@@ -35,13 +35,23 @@
 # the half-space unit's limit configuration (hslimit; Verilated only).
 set(TRIRAST_RTL_WIDTH_CONFIGS default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:8:6 hslimit:4:3:4)
 
+# TRIRAST_RTL_EXTRA_WIDTHS (ON by default; scripts/test.sh sets it ON): Verilate the other width
+# configurations (small, wide, tiny, and the half-space unit's hslimit) too. OFF builds the default
+# widths alone (11 models): a first build that runs every engine at the default widths
+# (scripts/demo.sh's, when build/ is new) and refuses other widths with the build it lacks.
+option(TRIRAST_RTL_EXTRA_WIDTHS "Verilate the non-default width configurations too" ON)
+
 function(trirast_rtl_build_specs out_var endpoints depth)
+  set(_extra_widths small wide tiny)
+  if(NOT TRIRAST_RTL_EXTRA_WIDTHS)
+    set(_extra_widths)
+  endif()
   set(_builds
     "improved:trirast_improved_top:TRIRAST_RTL_SOURCES:_n1:default:1:8"
     "improved:trirast_improved_top:TRIRAST_RTL_SOURCES::default:${endpoints}:${depth}"
     "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
     "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES::default:1:${depth}")
-  foreach(_c small wide tiny)
+  foreach(_c ${_extra_widths})
     list(APPEND _builds
       "improved:trirast_improved_top:TRIRAST_RTL_SOURCES:_${_c}:${_c}:${endpoints}:${depth}"
       "trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_${_c}:${_c}:1:${depth}"
@@ -60,10 +70,13 @@ function(trirast_rtl_build_specs out_var endpoints depth)
   list(APPEND _builds
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1")
+  if(TRIRAST_RTL_EXTRA_WIDTHS)
+    list(APPEND _builds
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8z:hslimit:1:${depth}:2:8:1"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1")
+  endif()
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()
 

@@ -29,7 +29,7 @@ if not docs:
 
 # Top-level folders whose paths are checked: the usual ones (also once they are gone, so that a
 # document still naming a moved folder fails) and every top-level folder of the tree.
-prefixes = {"docs", "scripts", "rtl", "model", "tests", "tb", "dv", "app", "tools", "cmake"}
+prefixes = {"docs", "scripts", "rtl", "model", "tests", "tb", "app", "tools", "cmake"}
 # Folders git ignores (build/, out/: what runs write) hold no repository paths.
 def ignored(name):
     return subprocess.run(["git", "-C", root, "check-ignore", "-q", name + "/"],

@@ -67,7 +67,7 @@ build_variant() {  # build_variant NAME CXXFLAGS
   mkdir -p "$d"
   mapfile -t va < <(verilator_args "$1" "$d/obj")
   verilator "${va[@]}" >/dev/null
-  local inc=(-I"$ROOT/dv" -I"$d/obj" -I/usr/share/verilator/include/vltstd -I"$ROOT/model"
+  local inc=(-I"$ROOT/tb" -I"$d/obj" -I/usr/share/verilator/include/vltstd -I"$ROOT/model"
              -isystem /usr/share/verilator/include -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1
              -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -std=c++17 -w)
   for f in "$d"/obj/Vtrirast_improved_top_n1*.cpp "$HARNESS"; do
