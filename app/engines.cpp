@@ -7,7 +7,10 @@
 #include <set>
 
 #include "golden/golden.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "improved2/improved2_sc.hpp"
+#include "trad/trad_sc.hpp"
+#include "halfspace/halfspace_sc.hpp"
 #include "halfspace/halfspace_unit.hpp"
 #include "improved2/improved2_unit.hpp"
 #include "improved/improved_unit.hpp"

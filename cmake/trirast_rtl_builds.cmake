@@ -1,6 +1,6 @@
 # The Verilated builds of the RTL, declared in one place and used by both the main build
 # (tb/CMakeLists.txt: library trirast_rtl, both units) and the libFuzzer project
-# (tb/common/libfuzzer/CMakeLists.txt: the improved unit only, instrumented).
+# (tb/fuzz/libfuzzer/CMakeLists.txt: the improved unit only, instrumented).
 #
 # trirast_rtl_build_specs(OUT_VAR ENDPOINTS DEPTH): the builds, one entry
 #   unit:top:sources variable:prefix suffix:width configuration:N:DEPTH[:STAMP:TILE:ZIGZAG]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The libFuzzer target (tb/common/libfuzzer/): builds it with clang++ -fsanitize=fuzzer,address,undefined in
+# The libFuzzer target (tb/fuzz/libfuzzer/): builds it with clang++ -fsanitize=fuzzer,address,undefined in
 # build-fuzz/ (or $TRIRAST_FUZZ_BUILD), runs it for SECONDS (default 600, one process) over the
 # corpus build-fuzz/corpus (kept between runs, never in git), and prints executions per second.
 # The compiler is $TRIRAST_FUZZ_CXX (default clang++); without it the build fails, and so does
@@ -24,7 +24,7 @@ if ! command -v "$cxx" >/dev/null 2>&1; then
 fi
 mkdir -p "$build"
 log="$build/build.log"
-if ! { cmake -S tb/common/libfuzzer -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo &&
+if ! { cmake -S tb/fuzz/libfuzzer -B "$build" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo &&
        cmake --build "$build" -j2; } >"$log" 2>&1; then
   tail -n 40 "$log" >&2
   echo "fuzz.sh: build failed (full log: $log)" >&2

@@ -25,7 +25,9 @@
 #include "common/engine.hpp"
 #include "engines.hpp"
 #include "common/setup.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "improved2/improved2_sc.hpp"
+#include "trad/trad_sc.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;

@@ -10,7 +10,10 @@
 
 #include "common/setup.hpp"
 #include "benchmark_scenes.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "improved2/improved2_sc.hpp"
+#include "trad/trad_sc.hpp"
+#include "halfspace/halfspace_sc.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;

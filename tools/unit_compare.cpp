@@ -31,7 +31,9 @@
 
 #include "common/setup.hpp"
 #include "benchmark_scenes.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "trad/trad_sc.hpp"
+#include "halfspace/halfspace_sc.hpp"
 #include "scene/scene.hpp"
 
 using namespace trirast;

@@ -5,11 +5,9 @@
 #include <cstdlib>
 #include <exception>
 
-#include "halfspace/halfspace_sc.hpp"
-#include "improved2/improved2_sc.hpp"
-#include "improved/improved_sc.hpp"
-#include "trad/trad_sc.hpp"
-#include "improved/improved_unit.hpp"
+#include <vector>
+
+#include "common/sc_stage_skeleton.hpp"
 
 namespace trirast {
 namespace sc {
@@ -21,30 +19,28 @@ bool quiet_systemc() {
   return true;
 }
 
-enum class Unit { Improved, Trad, Halfspace, Improved2 };
+std::vector<ScUnit>& registered_units() {
+  static std::vector<ScUnit> units;
+  return units;
+}
 
-// Both units, elaborated together on first use (SystemC elaborates once per process).
+// Every registered unit, elaborated together on first use (SystemC elaborates once per process).
 struct World {
   bool quiet = quiet_systemc();
-  ImprovedUnitSc improved{"improved"};
-  TradUnitSc trad{"trad"};
-  HalfspaceUnitSc halfspace{"halfspace"};
-  Improved2UnitSc improved2{"improved2"};
+  std::vector<std::unique_ptr<UnitScIf>> units;
 
+  World() {
+    for (const ScUnit& u : registered_units()) units.push_back(u.elaborate());
+  }
   static World& get() {
     static World w;
     return w;
   }
-  UnitScIf& unit(Unit u) {
-    if (u == Unit::Improved) return improved;
-    if (u == Unit::Halfspace) return halfspace;
-    if (u == Unit::Improved2) return improved2;
-    return trad;
-  }
+  UnitScIf& unit(int u) { return *units.at(size_t(u)); }
 };
 
 // One run through the unit, from the current SystemC time. Returns the wall-clock seconds.
-double simulate(Unit unit, const SetupResult& setup, const RasterConfig& cfg, EngineResult& out,
+double simulate(int unit, const SetupResult& setup, const RasterConfig& cfg, EngineResult& out,
                 VcdRecorder* trace) {
   World& w = World::get();
   RunState r;
@@ -68,7 +64,7 @@ double simulate(Unit unit, const SetupResult& setup, const RasterConfig& cfg, En
 
 // The trace: a second run that records the cycles from the first windowed triangle's accept to
 // the last one's done (the first run found them), plus the sink's ready in that window.
-void write_trace(Unit unit, const SetupResult& setup, const RasterConfig& cfg,
+void write_trace(int unit, const SetupResult& setup, const RasterConfig& cfg,
                  const EngineResult& first) {
   uint64_t lo = ~uint64_t(0), hi = 0;
   for (const TriangleCycles& c : first.cycles) {
@@ -93,21 +89,17 @@ void write_trace(Unit unit, const SetupResult& setup, const RasterConfig& cfg,
       prev = r;
     }
   }
-  rec.write(cfg.trace_path, unit == Unit::Improved    ? "improved"
-                            : unit == Unit::Halfspace ? "halfspace"
-                            : unit == Unit::Improved2 ? "improved2"
-                                                      : "trad");
+  rec.write(cfg.trace_path, registered_units().at(size_t(unit)).name);
 }
 
 class ScEngine : public Engine {
  public:
-  explicit ScEngine(Unit unit) : unit_(unit) {}
+  explicit ScEngine(int unit) : unit_(unit) {}
 
   void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
     cfg.validate();
-    if (unit_ == Unit::Improved) ImprovedUnit check(cfg);  // the datapath's width limits
-    if (unit_ == Unit::Halfspace) HalfspaceUnit check(cfg);
-    if (unit_ == Unit::Improved2) Improved2Unit check(cfg);
+    const ScUnit& unit = registered_units().at(size_t(unit_));
+    if (unit.check_widths) unit.check_widths(cfg);  // the datapath's width limits
     const double secs = simulate(unit_, setup, cfg, out, nullptr);
     World::get().unit(unit_).add_counters(out.work);
     out.work["triangles"] += setup.tris.size();
@@ -118,31 +110,24 @@ class ScEngine : public Engine {
   }
 
  private:
-  Unit unit_;
+  int unit_;
 };
 
 }  // namespace
-}  // namespace sc
 
-std::unique_ptr<Engine> make_improved_sc_engine() {
-  // Keeps the sc_main stub below in every program that can run the model.
+int register_sc_unit(ScUnit unit) {
+  registered_units().push_back(std::move(unit));
+  return int(registered_units().size()) - 1;
+}
+
+std::unique_ptr<Engine> make_sc_engine(int unit) {
+  // Keeps the sc_main stub below in every program that can run a model.
   static volatile auto keep = &sc_main;
   (void)keep;
-  return std::make_unique<sc::ScEngine>(sc::Unit::Improved);
+  return std::make_unique<ScEngine>(unit);
 }
-std::unique_ptr<Engine> make_halfspace_sc_engine() {
-  static volatile auto keep = &sc_main;
-  (void)keep;
-  return std::make_unique<sc::ScEngine>(sc::Unit::Halfspace);
-}
-std::unique_ptr<Engine> make_improved2_sc_engine() {
-  static volatile auto keep = &sc_main;
-  (void)keep;
-  return std::make_unique<sc::ScEngine>(sc::Unit::Improved2);
-}
-std::unique_ptr<Engine> make_trad_sc_engine() {
-  return std::make_unique<sc::ScEngine>(sc::Unit::Trad);
-}
+
+}  // namespace sc
 
 }  // namespace trirast
 

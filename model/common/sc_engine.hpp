@@ -1,21 +1,32 @@
-// The SystemC models as engines (docs/sc-model.md). Both units are elaborated once per process,
-// the first time either engine runs; every run then goes through the same modules from the
-// current SystemC time on (cycle numbers are relative to the run's start).
+// The SystemC models as engines (docs/sc-model.md). Each unit's model registers itself here
+// (its UNIT_sc.cpp); every registered unit is elaborated once per process, the first time any of
+// them runs, and every run then goes through the same modules from the current SystemC time on
+// (cycle numbers are relative to the run's start). The factories are each unit's own:
+// make_UNIT_sc_engine() in model/UNIT/UNIT_sc.hpp.
 #pragma once
+#include <functional>
 #include <memory>
+#include <string>
 
+#include "common/config.hpp"
 #include "common/engine.hpp"
 
-namespace trirast {
+namespace trirast::sc {
 
-// The improved-Bresenham unit, timed (register as "improved-sc").
-std::unique_ptr<Engine> make_improved_sc_engine();
-// The second-generation improved unit, timed, N = 1 (register as "improved2-sc").
-std::unique_ptr<Engine> make_improved2_sc_engine();
-// The traditional-Bresenham unit, timed: the spans of make_trad_datapath_engine() plus cycles
-// (register as "trad-sc").
-std::unique_ptr<Engine> make_trad_sc_engine();
-// The half-space tile unit, timed (register as "halfspace-sc"; docs/timing.md).
-std::unique_ptr<Engine> make_halfspace_sc_engine();
+class UnitScIf;
 
-}  // namespace trirast
+// A unit's SystemC model as the engine runs it.
+struct ScUnit {
+  std::string name;                                        // module name and trace scope
+  std::function<std::unique_ptr<UnitScIf>()> elaborate;    // builds the unit's modules
+  std::function<void(const RasterConfig&)> check_widths;   // throws WidthError; may be empty
+};
+
+// Registers a unit (at static initialization, once per unit); returns its handle for
+// make_sc_engine.
+int register_sc_unit(ScUnit unit);
+
+// The engine that runs registered unit `unit`.
+std::unique_ptr<Engine> make_sc_engine(int unit);
+
+}  // namespace trirast::sc

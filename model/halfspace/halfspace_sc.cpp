@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "common/sc_engine.hpp"
+#include "halfspace/halfspace_unit.hpp"
+
 namespace trirast::sc {
 
 void HalfspaceSetupStageSc::configure(const RasterConfig& cfg) {
@@ -62,3 +65,14 @@ uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
 }
 
 }  // namespace trirast::sc
+
+namespace trirast {
+namespace {
+const int kUnit = sc::register_sc_unit(
+    {"halfspace", [] { return std::unique_ptr<sc::UnitScIf>(new sc::HalfspaceUnitSc("halfspace")); },
+     [](const RasterConfig& cfg) { HalfspaceUnit check(cfg); }});
+}  // namespace
+
+std::unique_ptr<Engine> make_halfspace_sc_engine() { return sc::make_sc_engine(kUnit); }
+
+}  // namespace trirast

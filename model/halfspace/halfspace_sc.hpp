@@ -6,6 +6,9 @@
 // The datapath is model/halfspace_* (one call per stage); the process, the hand-off, the
 // FIFO, the sink and the trace frame are the shared pipeline (stage_skeleton.hpp).
 #pragma once
+#include <memory>
+
+#include "common/engine.hpp"
 #include <map>
 #include <memory>
 #include <string>
@@ -60,3 +63,8 @@ class HalfspaceWalkStageSc : public WalkStageBase<HalfspaceSetupTxn> {
 using HalfspaceUnitSc = PipelineUnitSc<HalfspaceSetupStageSc, HalfspaceWalkStageSc, HalfspaceSetupTxn>;
 
 }  // namespace trirast::sc
+
+namespace trirast {
+// The half-space tile unit, timed (register as "halfspace-sc"; docs/timing.md).
+std::unique_ptr<Engine> make_halfspace_sc_engine();
+}  // namespace trirast

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/sc_engine.hpp"
 #include "improved/improved_unit.hpp"
 
 namespace trirast::sc {
@@ -180,3 +181,14 @@ uint64_t ImprovedWalkStageSc::walk(EdgeSetupTxn& x, uint64_t h) {
 }
 
 }  // namespace trirast::sc
+
+namespace trirast {
+namespace {
+const int kUnit = sc::register_sc_unit(
+    {"improved", [] { return std::unique_ptr<sc::UnitScIf>(new sc::ImprovedUnitSc("improved")); },
+     [](const RasterConfig& cfg) { ImprovedUnit check(cfg); }});
+}  // namespace
+
+std::unique_ptr<Engine> make_improved_sc_engine() { return sc::make_sc_engine(kUnit); }
+
+}  // namespace trirast

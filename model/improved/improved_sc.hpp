@@ -8,6 +8,9 @@
 // stamps its work with the cycles its hardware counterpart takes; the process, the hand-off, the
 // FIFO stalls and the trace frame are the pipeline both units share (stage_skeleton.hpp).
 #pragma once
+#include <memory>
+
+#include "common/engine.hpp"
 #include <map>
 #include <memory>
 #include <string>
@@ -135,3 +138,8 @@ class ImprovedWalkStageSc : public WalkStageBase<EdgeSetupTxn> {
 using ImprovedUnitSc = PipelineUnitSc<ImprovedSetupStageSc, ImprovedWalkStageSc, EdgeSetupTxn>;
 
 }  // namespace trirast::sc
+
+namespace trirast {
+// The improved-Bresenham unit, timed (register as "improved-sc").
+std::unique_ptr<Engine> make_improved_sc_engine();
+}  // namespace trirast

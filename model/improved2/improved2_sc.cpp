@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include "common/sc_engine.hpp"
+#include "improved2/improved2_unit.hpp"
+
 namespace trirast::sc {
 
 using sc_core::sc_module_name;
@@ -322,3 +325,14 @@ void Improved2UnitSc::add_counters(std::map<std::string, uint64_t>& work) const 
 }
 
 }  // namespace trirast::sc
+
+namespace trirast {
+namespace {
+const int kUnit = sc::register_sc_unit(
+    {"improved2", [] { return std::unique_ptr<sc::UnitScIf>(new sc::Improved2UnitSc("improved2")); },
+     [](const RasterConfig& cfg) { Improved2Unit check(cfg); }});
+}  // namespace
+
+std::unique_ptr<Engine> make_improved2_sc_engine() { return sc::make_sc_engine(kUnit); }
+
+}  // namespace trirast

@@ -18,6 +18,9 @@
 // stage a busy bit and the tag it holds, the corner unit's runs, each lane's busy cycles, the walk
 // stage's state and rows; the span port, FIFO and sink through the shared SpanFifo.
 #pragma once
+#include <memory>
+
+#include "common/engine.hpp"
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -153,3 +156,8 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
 };
 
 }  // namespace trirast::sc
+
+namespace trirast {
+// The second-generation improved unit, timed (register as "improved2-sc").
+std::unique_ptr<Engine> make_improved2_sc_engine();
+}  // namespace trirast

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/sc_engine.hpp"
 #include "trad/trad_timing.hpp"
 
 namespace trirast::sc {
@@ -70,3 +71,14 @@ uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
 }
 
 }  // namespace trirast::sc
+
+namespace trirast {
+namespace {
+const int kUnit = sc::register_sc_unit(
+    {"trad", [] { return std::unique_ptr<sc::UnitScIf>(new sc::TradUnitSc("trad")); },
+     nullptr});
+}  // namespace
+
+std::unique_ptr<Engine> make_trad_sc_engine() { return sc::make_sc_engine(kUnit); }
+
+}  // namespace trirast

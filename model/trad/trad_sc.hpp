@@ -7,6 +7,9 @@
 // the process, the hand-off, the FIFO, the sink and the trace frame are the pipeline both units
 // share (stage_skeleton.hpp).
 #pragma once
+#include <memory>
+
+#include "common/engine.hpp"
 #include <map>
 #include <memory>
 #include <string>
@@ -60,3 +63,9 @@ class TradWalkStage : public WalkStageBase<TradSetupTxn> {
 using TradUnitSc = PipelineUnitSc<TradSetupStage, TradWalkStage, TradSetupTxn>;
 
 }  // namespace trirast::sc
+
+namespace trirast {
+// The traditional-Bresenham unit, timed: the spans of make_trad_datapath_engine() plus cycles
+// (register as "trad-sc").
+std::unique_ptr<Engine> make_trad_sc_engine();
+}  // namespace trirast

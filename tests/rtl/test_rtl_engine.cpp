@@ -16,7 +16,7 @@
 #include "common/setup.hpp"
 #include "common/sink_pattern.hpp"
 #include "golden/golden.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
 #include "improved/improved_rtl_engine.hpp"
 #include "scene/scene.hpp"
 #include "common/cycle_columns.hpp"

@@ -15,7 +15,7 @@
 #include "golden/golden.hpp"
 #include "common/cycle_columns.hpp"
 #include "common/reference_raster.hpp"
-#include "common/sc_engine.hpp"
+#include "halfspace/halfspace_sc.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "halfspace/halfspace_unit.hpp"

@@ -16,7 +16,7 @@
 #include "engines.hpp"
 #include "golden/golden.hpp"
 #include "common/cycle_columns.hpp"
-#include "common/sc_engine.hpp"
+#include "improved2/improved2_sc.hpp"
 #include "scene/scene.hpp"
 #include "improved2/improved2_rtl_engine.hpp"
 

@@ -14,7 +14,7 @@
 #include "common/cycle_columns.hpp"
 #include "trad/trad_rtl_engine.hpp"
 #include "scene/scene.hpp"
-#include "common/sc_engine.hpp"
+#include "trad/trad_sc.hpp"
 #include "trad/trad_bresenham.hpp"
 
 namespace trirast {

@@ -10,7 +10,7 @@
 #include "common/setup.hpp"
 #include "golden/golden.hpp"
 #include "common/reference_raster.hpp"
-#include "common/sc_engine.hpp"
+#include "halfspace/halfspace_sc.hpp"
 
 namespace trirast {
 namespace {

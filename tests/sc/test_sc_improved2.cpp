@@ -20,7 +20,7 @@
 #include "golden/golden.hpp"
 #include "common/cycle_columns.hpp"
 #include "improved2/improved2_cycle_reference.hpp"
-#include "common/sc_engine.hpp"
+#include "improved2/improved2_sc.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "support/vcd_reader.hpp"

@@ -8,7 +8,8 @@
 
 #include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "trad/trad_sc.hpp"
 #include "scene/scene.hpp"
 #include "common/reference_raster.hpp"
 #include "trad/trad_bresenham.hpp"

@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "common/setup.hpp"
-#include "common/sc_engine.hpp"
+#include "improved/improved_sc.hpp"
+#include "trad/trad_sc.hpp"
 #include "scene/scene.hpp"
 #include "support/run_command.hpp"
 #include "support/vcd_reader.hpp"

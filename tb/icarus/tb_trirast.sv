@@ -1,5 +1,5 @@
 // Icarus Verilog testbench (iverilog -g2012): runs trirast_improved_top at its default parameters
-// (NumEndpoints = 1, FifoDepth = 8) on vectors from trirast_rtl_vectors (tb/common/icarus/run.sh) and
+// (NumEndpoints = 1, FifoDepth = 8) on vectors from trirast_rtl_vectors (tb/icarus/run.sh) and
 // (TRIRAST_TB_HALFSPACE) the half-space unit trirast_halfspace_top, (TRIRAST_TB_IMPROVED2) the
 // second-generation unit trirast_improved2_top in the corner form I2CornerForm; it
 // checks every span (in pop order), every accept cycle and every triangle's first_span_cycle and

@@ -3,7 +3,7 @@
 // format.
 //
 // One generator serves two masters through FuzzDraws: `trirast fuzz` draws from a seeded PRNG,
-// the libFuzzer target (tb/common/libfuzzer/) draws from the fuzzer's bytes, so both explore the same
+// the libFuzzer target (tb/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same
 // classes and a byte string the fuzzer mutates maps to a small, local change of the scene.
 //
 // Depends only on model/core and model/golden, so the libFuzzer build (clang, separate build

@@ -1,4 +1,4 @@
-// Writes the vectors of the Icarus testbench (tb/common/icarus/tb_trirast.sv): the set-up triangles of a
+// Writes the vectors of the Icarus testbench (tb/icarus/tb_trirast.sv): the set-up triangles of a
 // scene, and the spans with their pop cycles and the accept cycles that the Verilated model
 // produces for them at the default hardware (N = 1, DEPTH = 8) with a periodic sink.
 //   trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK] | improved2:FORM]

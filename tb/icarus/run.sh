@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs the Icarus testbench tb/common/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
-#   tb/common/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK] | improved2[:FORM]]
+# Runs the Icarus testbench tb/icarus/tb_trirast.sv on small scenes (ctest rtl_icarus).
+#   tb/icarus/run.sh PATH/TO/trirast_rtl_vectors WORKDIR [halfspace[:STAMP:TILE:WALK] | improved2[:FORM]]
 # (halfspace: the half-space unit, rtl/halfspace/trirast_halfspace.f, at StampSize STAMP, TileSize TILE
 # (0: none), walk row | zigzag (default 2:8:zigzag, trirast_halfspace_top's defaults), against the
 # halfspace-rtl engine's vectors of the same build parameters; improved2: the second-generation
@@ -10,7 +10,7 @@
 # and cycles; Icarus runs the RTL at its default parameters (NumEndpoints = 1, FifoDepth = 8)
 # and must agree span for span and cycle for cycle. Exit status 0 only if every scene passes.
 set -euo pipefail
-ROOT="$(cd "$(dirname "$0")/../../.." && pwd)"
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 VECTORS="$1"
 WORK="$2"
 UNIT="${3:-}"
@@ -39,7 +39,7 @@ case "$UNIT" in
 esac
 # The unit's file list (rtl/UNIT/trirast_UNIT.f).
 SOURCES="$("$ROOT/scripts/rtl_filelist.sh" "$LIST")
-  $ROOT/tb/common/icarus/tb_trirast.sv"
+  $ROOT/tb/icarus/tb_trirast.sv"
 # Icarus prints "sorry: constant selects in always_* processes" for loops over arrays in
 # always_comb (a sensitivity-list simplification, harmless), and "sorry: Case unique/unique0
 # qualities are ignored" (Verilator checks them); keep the rest.
