@@ -34,12 +34,12 @@ const std::vector<EngineInfo>& engine_registry() {
       {"improved-rtl", "improved-Bresenham unit, Verilated RTL (rtl/improved/trirast_improved.f)", true,
        make_improved_rtl_engine, /*timed=*/true},
       {"improved2-datapath",
-       "second-generation improved unit (issue 13), bit-accurate datapath, untimed "
-       "(docs/gen2-design.md)",
+       "second-generation improved unit, bit-accurate datapath, untimed "
+       "(docs/improved2.md)",
        true, make_improved2_datapath_engine},
       {"improved2-sc",
        "second-generation improved unit, SystemC model: its spans plus cycles, N = 1, 2, 4 "
-       "(docs/gen2-design.md)",
+       "(docs/improved2.md)",
        true, make_improved2_sc_engine, /*timed=*/true},
       {"improved2-rtl",
        "second-generation improved unit, Verilated RTL (rtl/improved2/trirast_improved2.f): improved2-sc's "

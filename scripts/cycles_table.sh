@@ -22,7 +22,7 @@ tmp="$out.tmp"
 cat >"$tmp" <<DOC
 # Improved vs traditional Bresenham unit (and the half-space tile unit), in cycles
 
-Made by \`scripts/cycles_table.sh\` (SystemC models of the three units, docs/timing.md; 1024x768, S = 8,
+Made by \`scripts/cycles_table.sh\` (SystemC models of the four units, docs/timing.md; 1024x768, S = 8,
 default camera; N = 1, FIFO 8, sink always ready, boundary \`step\` unless the column says
 otherwise). "improved vs trad" is \`(trad - improved) / trad\`: positive when the improved unit
 needs fewer cycles. The paper (Zhang & Ruan, "A triangle rasterization based on improved
@@ -55,8 +55,8 @@ stamp of a partial tile, one span per cycle out of a band buffer. "half-space vs
 
 ## The second generation
 
-The second-generation improved unit (\`improved2-sc\`, docs/gen2-design.md: "Whole-unit
-prototype" and "The C++ datapath and SystemC model") on the same scenes, beside the first
+The second-generation improved unit, improved2 (\`improved2-sc\`, docs/improved2.md), on the
+same scenes, beside the first
 generation (\`improved-sc\`, "gen1") and the traditional unit (\`trad-sc\`); the same
 configuration (N = 1, FIFO 8, sink always ready; boundary \`step\`, adaptive divider, the only
 mode the second generation builds). Its default corner form is radix 16 (digit-serial corner
@@ -65,7 +65,7 @@ multipliers in one cycle. "vs trad" is \`(trad - gen2) / trad\` and "vs gen1" \`
 gen1\`: positive when the second generation needs fewer cycles. The paper reports the improved
 unit about 32% faster than the traditional one. The model's cycles equal those of the unit's RTL
 (\`rtl/improved2/trirast_improved2.f\`, engine \`improved2-rtl\`) triangle for triangle on every built-in
-scene of this table (\`tests/rtl/test_rtl_improved2_engine.cpp\`; docs/gen2-design.md section 8).
+scene of this table (\`tests/rtl/test_rtl_improved2_engine.cpp\`; docs/improved2.md, "Verification").
 
 $gen2
 

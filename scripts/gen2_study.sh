@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Measurements for the second-generation improved unit (issue 13; docs/gen2-design.md): small
+# Measurements for the second-generation improved unit (docs/improved2.md): small
 # standalone prototypes of the candidate circuits (scripts/gen2_study/*.sv, not units) and the
 # first generation's corresponding modules (rtl/), at the default configuration (S = 8, coordinate
 # 16, box 14, N = 1, FIFO 8; package from scripts/gen_params.py).

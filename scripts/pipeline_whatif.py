@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
-"""What-if for the improved unit's next generation (issue 13): cycles per triangle if its set-up
-were a pipeline and small boxes took a direct test, estimated from today's per-triangle cycles.
+"""What-if for a pipelined improved unit (the estimate behind the improved2 unit): cycles per
+triangle if its set-up were a pipeline and small boxes took a direct test, estimated from the
+improved unit's per-triangle cycles.
 
 For each scene it runs `trirast raster --cycles` with the timed models of the improved unit
 (improved-sc) and the traditional unit (trad-sc), then replays the improved unit's triangles through
@@ -14,7 +15,7 @@ skips lanes and walk: a direct test of its centres from the corner values, max(1
 in the walk stage's place (one span per cycle out).
 This is an estimate, not a model: it assumes the lanes' and walk's cycles stay as they are.
 
-With --corner SPEC (repeatable; docs/gen2-design.md), one more column per SPEC: F is split into a
+With --corner SPEC (repeatable; docs/improved2.md), one more column per SPEC: F is split into a
 box stage (1 cycle; an empty box retires there) and a corner-value stage of c cycles per
 triangle, followed by the direct test of the first --direct size or the lanes and the walk as
 above. c comes from the triangle's snapped vertices (`trirast raster --export-tris`), with the

@@ -354,7 +354,7 @@ def main():
                 "or `zigzag` tile walk; its area is synthesized per stamp size at tile 8, zigzag "
                 "(scripts/synth.sh) and unknown (`-`) elsewhere (it has no width formula)."
                 if any(p.get("unit") == "halfspace" for p in points) else "")
-             + (" The second-generation unit (`improved2-*` engines, docs/gen2-design.md): "
+             + (" The second-generation unit (`improved2-*` engines, docs/improved2.md): "
                 "`gen2` plus its corner form, `dsp` (products, 1 cycle) or `radix16` "
                 "(digit-serial; the untimed improved2-datapath, whose spans the form does not "
                 "change, has none); always the step boundary and the adaptive, untruncated "
@@ -559,7 +559,7 @@ def main():
         L.append(f"Improved = `improved-sc {DEFAULT_CONFIG}` (the first generation, default), "
                  f"traditional = `trad-sc {TRAD_DEFAULT}`"
                  + (f", gen2 = `improved2-sc {GEN2_DEFAULT} {GEN2_FORMS[0]}` (the second "
-                    "generation, docs/gen2-design.md, at the same widths; its default corner form)"
+                    "generation, docs/improved2.md, at the same widths; its default corner form)"
                     if have_g2 else "")
                  + "; \"vs trad\" is (trad - unit) / trad, positive when the unit needs fewer "
                  "cycles than the traditional one.\n")

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Where the Verilated RTL's time goes (issue 14: RTL simulation speed), in exact instruction
+# Where the Verilated RTL's time goes (the RTL engine's simulation speed), in exact instruction
 # counts: the improved unit's default build (Vtrirast_improved_top_n1: N = 1, FIFO 8, the build the
 # improved-rtl engine runs at the default configuration) simulating one scene in
 # trirast_sc_bench, counted by valgrind's callgrind inside the RTL run only (the engine call

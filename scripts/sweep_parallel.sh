@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The distributed sweep's task list through GNU parallel (issue 16), on this workstation or ssh
+# The distributed sweep's task list through GNU parallel, on this workstation or ssh
 # hosts; the same tasks, result files and merge as scripts/sweep_slurm.sh.
 #   scripts/sweep_parallel.sh [--quick] [--jobs J] [--shards N] [--results DIR] [--out DIR]
 #                             [--synth [--rounds R]] [--sshlogin LOGIN]... [--bin PATH]

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The sweep on a Slurm cluster (issue 16): simulation shards and synthesis jobs as job arrays,
+# The sweep on a Slurm cluster: simulation shards and synthesis jobs as job arrays,
 # a dependent merge job.
 #   scripts/sweep_slurm.sh [--quick] [--shards N] [--results DIR] [--out DIR] [--synth [--rounds R]]
 #                          [--doc [--doc-out DIR]] [--no-wait] [--bin PATH] [-- SWEEP-OPTIONS...]

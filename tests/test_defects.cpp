@@ -1,4 +1,4 @@
-// Issue 14, "Defects": one test (or a few) per defect a new user hit, each failing on the code
+// Defects a new user hit: one test (or a few) per defect, each failing on the code
 // before its fix. Every command runs the trirast program as a user would.
 #include <gtest/gtest.h>
 #include <png.h>

@@ -1,4 +1,4 @@
-// A fuzz reproducer's replay line runs as written (issue 14): `trirast fuzz` with an injected
+// A fuzz reproducer's replay line runs as written: `trirast fuzz` with an injected
 // fault writes reproducers; the "# replay:" line of one, run exactly as written (only `trirast`
 // resolved to the binary under test) from the fuzz run's folder, parses every option, finds the
 // scene, runs every engine named (the RTL included) and exits with the documented status: 0, as

@@ -1,5 +1,5 @@
-// The second-generation improved unit's datapath (improved2-datapath, docs/gen2-design.md, "The
-// C++ datapath and SystemC model") against the golden rasterizer: spans identical on every
+// The second-generation improved unit's datapath (improved2-datapath, docs/improved2.md, "Views
+// and files") against the golden rasterizer: spans identical on every
 // built-in scene (every hard case among them), the meshes and random triangles at several
 // precisions; and its gen2-only stages against their definitions.
 #include <gtest/gtest.h>

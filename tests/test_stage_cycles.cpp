@@ -1,4 +1,4 @@
-// Finding why a triangle is slow (issue 14): the stage breakdown of the --cycles CSV read back
+// Finding why a triangle is slow: the stage breakdown of the --cycles CSV read back
 // against the engine run in process, compare's --explain / --slowest lines checked against the
 // cycles they describe, --export-tris reproducing the same set-up triangles and spans, and the
 // --heatmap PNG. Every expectation is computed here from an in-process run, not stored.

@@ -508,7 +508,7 @@ TEST(Fit, ABudgetAllowsFewerBits) {
 
 // ---- the library: closed-mesh counting, truncation, area --------------------------------------
 
-// The sweep counts cracks and double hits with the closed-mesh check of tb/reference.
+// The sweep counts cracks and double hits with the closed-mesh check of tb/common.
 TEST(CountClosed, CracksAndDoubleHitsOfAFan) {
   RasterConfig cfg;
   const Scene scene = make_builtin("fan:n=8", cfg, CameraOptions{});

@@ -1,4 +1,4 @@
-// The distributed sweep (issue 16): task shards, result files, the merge, and the two runners
+// The distributed sweep: task shards, result files, the merge, and the two runners
 // (scripts/sweep_slurm.sh on a local single-node Slurm, scripts/sweep_parallel.sh through GNU
 // parallel); each merged CSV is compared with a single-process run's on every column but the wall
 // times (scripts/sweep_compare.py).

@@ -1,4 +1,4 @@
-// Finding why a triangle is slow (issue 14): the timed engines' per-triangle cycles joined side
+// Finding why a triangle is slow: the timed engines' per-triangle cycles joined side
 // by side, the slowest triangles named with their stage breakdown and what each waited for, a
 // window of triangles exported as a .tri file, and the options of raster and compare that ask
 // for them (docs/timing.md, "Outputs", defines every column used here).

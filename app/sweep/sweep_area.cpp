@@ -117,7 +117,7 @@ AreaTerms trad_area_terms(const RasterConfig& cfg) {
   return t;
 }
 
-// Second-generation unit (docs/gen2-design.md, docs/timing.md): the same widths as the improved
+// Second-generation unit (docs/improved2.md, docs/timing.md): the same widths as the improved
 // unit; its own stages: the box stage (triangle register without C, box, the corner operands),
 // the corner values E_L per edge (radix 16: digit-serial accumulators with the signed
 // multiplicands and a digit counter; products: the multipliers are DSPs and not counted, their

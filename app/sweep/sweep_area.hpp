@@ -11,7 +11,7 @@
 namespace trirast {
 
 // Improved2: the second-generation improved unit (improved2-* engines, rtl/improved2/trirast_improved2.f,
-// docs/gen2-design.md); scripts/synth.sh synthesizes it at the default widths (and the distributed
+// docs/improved2.md); scripts/synth.sh synthesizes it at the default widths (and the distributed
 // sweep's synthesis jobs at others); it has no width formula: elsewhere its area is unknown.
 enum class UnitKind { Improved, Trad, Halfspace, Improved2, Cpu, Golden };
 const char* unit_kind_name(UnitKind k);

@@ -1,4 +1,4 @@
-// The sweep split into independent tasks (issue 16): any scheduler (Slurm job arrays, GNU parallel,
+// The sweep split into independent tasks: any scheduler (Slurm job arrays, GNU parallel,
 // a shell loop) runs `trirast sweep --shard K/N` or `--task I`, each task writes one result file,
 // and `trirast sweep --merge DIR` builds the same outputs as a single-process run.
 //

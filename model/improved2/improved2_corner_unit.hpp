@@ -1,5 +1,5 @@
-// The second-generation unit's corner stage (docs/gen2-design.md, "The C++ datapath and SystemC
-// model"): vertex-relative corner values, E_L = A*(cx0 - vx) + B*(cy0 - vy) + bias per edge (no C:
+// The second-generation unit's corner stage (docs/improved2.md, "Architecture", C: the corner
+// stage): vertex-relative corner values, E_L = A*(cx0 - vx) + B*(cy0 - vy) + bias per edge (no C:
 // E vanishes at the edge's own vertex vx, vy), and E_R = E_L + Xmax*a. The same values as gen1's
 // interface (E(c) + bias, unit/interface.hpp); the hardware forms them either as DSP products in
 // one cycle or digit-serially, MSB first, 4 operand bits per cycle

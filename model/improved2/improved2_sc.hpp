@@ -1,6 +1,6 @@
-// The SystemC model of the second-generation improved unit (issue 13; docs/gen2-design.md, "The
-// C++ datapath and SystemC model"), cycle for cycle the unit's RTL rtl/improved2/trirast_improved2.f
-// (N = 1, 2, 4 rows per walk cycle):
+// The SystemC model of the second-generation improved unit (docs/improved2.md; its timing:
+// docs/timing.md), cycle for cycle the unit's RTL rtl/improved2/trirast_improved2.f (N = 1, 2, 4
+// rows per walk cycle):
 //
 //   source -> [B] box stage -> [C] corner stage (DSP or digit-serial) -> [L] job register + three
 //             lanes (or the direct 2x2 test's row spans) -> [W] walk stage, registered push ->
@@ -13,7 +13,7 @@
 // shared span FIFO (span_fifo.hpp, which knows each pop cycle), and keeps SystemC time through a
 // quantum keeper as the first generation's setup stage does (stage_skeleton.hpp).
 //
-// The trace (--trace, docs/gen2-design.md section 8, "Trace"): the same process reports each
+// The trace (--trace, docs/improved2.md, "Trace"): the same process reports each
 // stage's signal changes, stamped with their cycles, to the run's VcdRecorder (vcd_trace.hpp): per
 // stage a busy bit and the tag it holds, the corner unit's runs, each lane's busy cycles, the walk
 // stage's state and rows; the span port, FIFO and sink through the shared SpanFifo.

@@ -1,5 +1,5 @@
-// The second-generation improved unit (issue 13; docs/gen2-design.md, "The C++ datapath and
-// SystemC model"), bit-accurate, untimed: the unit's RTL rtl/improved2/trirast_improved2.f stage by stage.
+// The second-generation improved unit (docs/improved2.md, "Architecture"), bit-accurate, untimed:
+// the unit's RTL rtl/improved2/trirast_improved2.f stage by stage.
 //
 //   [B] box stage: the box, clipped, and the empty test (gen1's interface computes the same box);
 //       an empty box retires

@@ -1,5 +1,5 @@
 // The second-generation improved unit's span FIFO in block RAM (rtl/improved2/trirast_improved2.f, FifoRam 1;
-// docs/gen2-design.md section 1, "Fitting the HX8K"): the span FIFO of rtl/common/trirast_span_fifo.sv
+// docs/improved2.md, "Build choices"): the span FIFO of rtl/common/trirast_span_fifo.sv
 // (NumEndpoints 1) with its storage in a memory read through a register, so synth_ice40 maps it to
 // block RAM (SB_RAM40_4K) instead of FifoDepth * EntryBits flip-flops. The same cycles and outputs
 // whenever valid_o is 1: a span pushed in cycle t shows from t + 1, count_o is the occupancy at the

@@ -7,7 +7,7 @@
 // line: A and B must be the vertices' edge coefficients, A_k = y_k - y_k+1, B_k = x_k+1 - x_k):
 // two operand pairs, not three, and v2 is not read.
 //
-// Signed-digit pairs (docs/gen2-design.md, "The corner unit's signed-digit pairs"): the operands
+// Signed-digit pairs (docs/improved2.md, "Architecture", C: the corner stage): the operands
 // are two's complement, n digits of DigitBits bits each (n from the operands, below). Read with
 // every bit as a digit s = 2b - 1 in {-1, +1}, and the top bit's sign flipped (b -> !b), the n*D
 // bits of an operand d stand for sum(s_i * 2^i) = 2d + 1. So bit i of dx and bit i of dy together

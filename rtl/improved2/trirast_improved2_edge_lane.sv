@@ -1,8 +1,9 @@
-// The second-generation improved unit's edge lane (rtl/improved2/trirast_improved2.f; docs/gen2-design.md
-// section 2): one edge normalizer and one edge lane of the improved unit, redesigned for area and
-// speed. Same
-// results as rtl/improved/trirast_improved_edge_normalizer.sv + rtl/improved/trirast_improved_edge_lane.sv in boundary mode `step`
-// (the mode is a build choice here: `divide` is not built), in a different number of cycles.
+// The second-generation improved unit's edge lane (rtl/improved2/trirast_improved2.f;
+// docs/improved2.md, "Architecture", L: the lanes): one edge normalizer and one edge lane of the
+// improved unit, redesigned for area and speed. Same results as
+// rtl/improved/trirast_improved_edge_normalizer.sv + rtl/improved/trirast_improved_edge_lane.sv
+// in boundary mode `step` (the mode is a build choice here: `divide` is not built), in a
+// different number of cycles.
 //
 // What differs from gen1:
 //  - The operation is a registered state; every next-state decision reads registers only (the
@@ -123,7 +124,7 @@ module trirast_improved2_edge_lane #(
   logic gt_q, gt_d, eq_q, eq_d;              // entry quotient vs Xmax, MSB first
   logic [BB-1:0] xmn_q;                      // ~Xmax, registered the cycle after the load (xmax_i
                                              // itself holds; reading it measured no smaller:
-                                             // docs/gen2-design.md, "Measured, not kept");
+                                             // CHANGELOG.md, "Tried and not kept");
                                              // complemented, so the subtraction from q needs no
                                              // inverter LUTs
   logic ld_q;                                // the cycle after the load (Xmax is valid)

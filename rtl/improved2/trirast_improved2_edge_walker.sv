@@ -21,7 +21,7 @@
 //    carry-in.
 // The load-time preparation (a few subtractions) sits on the hand-off path, which a gen2 unit
 // registers (hand-off buffer).
-// CarrySelect 0 (the iCE40 fit, docs/gen2-design.md "Fitting the HX8K"; the same rows): X' and the
+// CarrySelect 0 (the iCE40 fit, docs/improved2.md "Build choices"; the same rows): X' and the
 // bound are not formed twice; each is one adder whose carry-in is the select (X' + inc or
 // X' + inc +- 1 as X' + inc_m + t, inc_m = q_s or ~q_s prepared at the load, t = selb or !selb),
 // so it follows the e sum's sign instead of running beside it; and the entry row takes X', e and

@@ -1,6 +1,6 @@
 // The improved unit, second generation (engine "improved2-rtl"; docs/timing.md, "The
 // second-generation improved unit", for the cycle contract its SystemC model improved2-sc follows,
-// docs/gen2-design.md for its design, and docs/rtl.md): the paper's
+// docs/improved2.md for its design, and docs/rtl.md): the paper's
 // adder-based divider, boundary traversal, Bresenham stepping with remainder accumulation and span
 // generation, rebuilt as a pipeline of four stages so the next triangle's box and corner values are
 // formed while the lanes and the walk stage work. Boundary mode step, adaptive divider (build
@@ -34,7 +34,7 @@
 //       cfg_fifo_depth_i; its tag and box from the job ring, JobRing), span FIFO (n push
 //       ports) -> span port.
 // Order: every job (lane or tiny) passes through L and W in acceptance order.
-// Build choices, all with the same spans and cycles (docs/gen2-design.md, "Fitting the HX8K"):
+// Build choices, all with the same spans and cycles (docs/improved2.md, "Build choices"):
 // FifoRam 1, the span FIFO in block RAM (trirast_span_fifo_ram; N = 1 only, N > 1 has
 // flip-flops); WalkerCs 0, the walkers' carry-in step; TestHi 1, the 2x2 test on E_L >> F and
 // A, B; CRam 1 (CornerForm 1 only), C's register in block RAM but for the vertices and the bias.
@@ -51,7 +51,7 @@ module trirast_improved2_top #(
   parameter bit CRam       = 1'b1,  // CornerForm 1 only: C's fields in block RAM
   parameter bit JobRing    = 1'b1,  // the walk stage's tag, box from a job ring (block RAM)
   // trirast_improved2_edge_lane's FixedM and PreIter (0, 0: the adaptive divider as measured; other
-  // values change the lanes' cycles, docs/gen2-design.md "Fitting the HX8K")
+  // values change the lanes' cycles, docs/improved2.md "Build choices")
   parameter int LaneFixedM  = 0,
   parameter int LanePreIter = 0,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override

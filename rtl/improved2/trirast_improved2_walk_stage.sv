@@ -7,7 +7,7 @@
 // acceptance order) and emits its rows through the same registered push: one row per cycle, and
 // it ends after row 0 when row 1 is empty or outside the box (a job without spans takes one cycle).
 // The walkers load stale hand-off values for a tiny job; their outputs are not read.
-// Build choices for the iCE40 fit (docs/gen2-design.md, "Fitting the HX8K"; the same cycles):
+// Build choices for the iCE40 fit (docs/improved2.md, "Build choices"; the same cycles):
 // FifoRam 1 keeps the span FIFO in block RAM (trirast_span_fifo_ram.sv) instead of flip-flops,
 // written from the push register's inputs a cycle ahead of the push (no push data register);
 // WalkerCs 0 gives the walkers trirast_improved2_edge_walker's carry-in step (one X' and one bound adder

@@ -6,7 +6,7 @@
 // the libFuzzer target (tb/fuzz/libfuzzer/) draws from the fuzzer's bytes, so both explore the same
 // classes and a byte string the fuzzer mutates maps to a small, local change of the scene.
 //
-// Depends only on model/core and model/golden, so the libFuzzer build (clang, separate build
+// Depends only on model/common and model/golden, so the libFuzzer build (clang, separate build
 // directory) can compile it without the rest of tb/ and app/.
 #pragma once
 #include <cstddef>

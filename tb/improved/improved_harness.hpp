@@ -1,6 +1,6 @@
 // The transactor between the engine interface and one Verilated build of trirast_improved_top (docs/rtl.md,
 // "Harness"): the improved unit's configuration and triangle ports and its module counters, for a
-// build Top of the widths P (a struct of tb/verilator's generated parameter headers,
+// build Top of the widths P (a struct of tb/'s generated parameter headers,
 // scripts/gen_params.py --struct); the per-cycle loop is cycle_loop.hpp. Instantiated once per
 // build by the generated rtl_build_*.cpp (tb/CMakeLists.txt).
 #pragma once

@@ -1,8 +1,8 @@
 // The Verilated RTL of the second-generation improved unit (rtl/improved2/trirast_improved2.f, engine
 // "improved2-rtl"): its spans equal the golden's, pixel for pixel, and every column of every
 // triangle's cycles (accept, first span, done, stalls, the stage breakdown, the lanes' work, the
-// box) and the run's statistics equal its SystemC model improved2-sc's (docs/gen2-design.md,
-// section 8), in both corner forms, with the sink always ready and stalled, at several FIFO
+// box) and the run's statistics equal its SystemC model improved2-sc's (docs/improved2.md,
+// "Verification"), in both corner forms, with the sink always ready and stalled, at several FIFO
 // depths, at N = 1, 2 and 4 rows per walk cycle, on the hard cases, the cycles table's scenes,
 // random triangles and meshes. Nothing here
 // is a stored result: every expectation comes from running the golden and the model.

@@ -1,5 +1,5 @@
-// The second-generation unit's SystemC model (improved2-sc, docs/gen2-design.md, "The C++
-// datapath and SystemC model"): its spans equal the golden's in both corner forms, whatever the
+// The second-generation unit's SystemC model (improved2-sc, docs/improved2.md, "Views and
+// files"): its spans equal the golden's in both corner forms, whatever the
 // sink and N (1, 2, 4 rows per walk cycle); an empty box retires in the box stage; a walk takes
 // one cycle per group of N rows; N = 3 is refused; its trace (--trace) is a VCD
 // whose signals agree with the cycles, with the .gtkw grouped by module, and tracing changes no
