@@ -108,7 +108,7 @@ void write_file(const std::string& path, const std::string& text) {
 
 void VcdRecorder::write(const std::string& vcd_path, const std::string& top) const {
   std::string out;
-  out += "$date trirast SystemC model $end\n$version trirast model/sc $end\n";
+  out += "$date trirast SystemC model $end\n$version trirast SystemC model $end\n";
   out += "$comment one cycle = 1 ns; time = cycle number of the run (docs/timing.md) $end\n";
   out += "$timescale 1ns $end\n";
   // Scopes in order of first declaration.
