@@ -48,8 +48,8 @@
 
 #include "common/engine.hpp"
 #include "common/sink_pattern.hpp"
-#include "harness_util.hpp"
-#include "rtl_gtkw.hpp"
+#include "common/harness_util.hpp"
+#include "common/rtl_gtkw.hpp"
 
 namespace trirast {
 namespace rtl {

@@ -8,8 +8,8 @@
 #include <map>
 #include <string>
 
-#include "cycle_loop.hpp"
-#include "harness_util.hpp"
+#include "common/cycle_loop.hpp"
+#include "common/harness_util.hpp"
 #include "halfspace/halfspace_unit.hpp"
 #include "common/unit_widths.hpp"
 

@@ -1,15 +1,15 @@
 // The engine "halfspace-rtl": picks the Verilated build of trirast_halfspace_top (rtl_builds.hpp,
 // cmake/trirast_rtl_builds.cmake) of the run's widths and --stamp/--tile/--hs-walk whose FIFO
 // holds --fifo-depth, and runs it (halfspace_harness.hpp: the ports; cycle_loop.hpp: the cycles).
-#include "rtl_hs_engine.hpp"
+#include "halfspace/halfspace_rtl_engine.hpp"
 
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "rtl_builds.hpp"
-#include "sim_clock.hpp"
+#include "common/rtl_builds.hpp"
+#include "common/sim_clock.hpp"
 
 namespace trirast {
 namespace rtl {

@@ -1,6 +1,6 @@
 // The engine "rtl": picks the smallest Verilated build of trirast_improved_top that covers the run's options
 // (rtl_builds.hpp) and runs it (improved_harness.hpp: the ports; cycle_loop.hpp: the cycles).
-#include "rtl_engine.hpp"
+#include "improved/improved_rtl_engine.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "rtl_builds.hpp"
-#include "sim_clock.hpp"
+#include "common/rtl_builds.hpp"
+#include "common/sim_clock.hpp"
 
 namespace trirast {
 namespace rtl {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "cycle_loop.hpp"
-#include "harness_util.hpp"
+#include "common/cycle_loop.hpp"
+#include "common/harness_util.hpp"
 #include "improved2/improved2_unit.hpp"
 #include "common/unit_widths.hpp"
 

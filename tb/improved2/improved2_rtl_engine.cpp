@@ -2,15 +2,15 @@
 // corner form with the smallest FIFO and N that cover its --fifo-depth and --endpoints
 // (rtl_builds.hpp; cfg_endpoints_i sets the run's N within the build's) and runs it
 // (improved2_harness.hpp: the ports; cycle_loop.hpp: the cycles).
-#include "rtl_improved2_engine.hpp"
+#include "improved2/improved2_rtl_engine.hpp"
 
 #include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "rtl_builds.hpp"
-#include "sim_clock.hpp"
+#include "common/rtl_builds.hpp"
+#include "common/sim_clock.hpp"
 
 namespace trirast {
 namespace rtl {

@@ -7,9 +7,9 @@
 #include <map>
 #include <string>
 
-#include "cycle_loop.hpp"
-#include "harness_util.hpp"
-#include "improved_harness.hpp"
+#include "common/cycle_loop.hpp"
+#include "common/harness_util.hpp"
+#include "improved/improved_harness.hpp"
 #include "common/unit_widths.hpp"
 
 namespace trirast::rtl {

@@ -1,6 +1,6 @@
 // The engine "rtl-trad": picks the smallest Verilated build of trirast_trad_top that covers the
 // run's options (rtl_builds.hpp) and runs it (trad_harness.hpp: the ports; cycle_loop.hpp).
-#include "rtl_trad_engine.hpp"
+#include "trad/trad_rtl_engine.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "rtl_builds.hpp"
-#include "sim_clock.hpp"
+#include "common/rtl_builds.hpp"
+#include "common/sim_clock.hpp"
 
 namespace trirast {
 namespace rtl {

@@ -7,7 +7,7 @@
 #include <memory>
 
 #include "common/engine.hpp"
-#include "rtl_engine.hpp"
+#include "improved/improved_rtl_engine.hpp"
 
 namespace trirast {
 
