@@ -106,6 +106,52 @@ TEST(Cli, HelpOnEverySubcommand) {
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
 
+// The option forms the parser accepts and the one-line errors it gives (cli/args.cpp on CLI11):
+// --opt value and --opt=value alike, a range declared with the option checked while parsing and
+// shown in --help, a repeated flag accepted, a repeated valued option refused.
+TEST(Cli, OptionFormsAndParserErrors) {
+  TempDir dir;
+  const std::string raster = kBin + " raster --scene builtin:fan --subpixel-bits 4 ";
+  ASSERT_EQ(run_command(raster + "--width 64 --height 48 --spans " + dir.file("a")).status, 0);
+  ASSERT_EQ(run_command(raster + "--width=64 --height=48 --spans=" + dir.file("b")).status, 0);
+  EXPECT_EQ(slurp(dir.file("a")), slurp(dir.file("b")));
+  EXPECT_GT(count_lines(slurp(dir.file("a"))), 10);
+
+  const CommandResult help = run_command(kBin + " raster --help");
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("--width W:1..16384"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("(default: 1024)"), std::string::npos) << help.out;
+  EXPECT_NE(help.out.find("--engine NAME"), std::string::npos) << help.out;
+  const CommandResult short_help = run_command(kBin + " raster -h");
+  EXPECT_EQ(short_help.status, 0);
+  EXPECT_EQ(short_help.out, help.out);
+
+  const CommandResult repeated_flag = run_command(kBin + " sweep --quick --quick --list-tasks");
+  EXPECT_EQ(repeated_flag.status, 0) << repeated_flag.err;
+
+  struct Case {
+    std::string args, message;
+  };
+  const std::vector<Case> cases = {
+      {"raster --scene builtin:fan --width 10 --width 20", "trirast raster: option '--width' given twice"},
+      {"raster --scene builtin:fan --width", "trirast raster: option '--width' needs a value"},
+      {"raster --scene builtin:fan --width 0", "trirast raster: --width: 0 is outside 1..16384"},
+      {"raster --scene builtin:fan --width=abc", "trirast raster: --width: 'abc' is not an integer"},
+      {"raster --scene builtin:fan --width=", "trirast raster: --width: '' is not an integer"},
+      {"raster --scene builtin:fan --frobnicate=3",
+       "trirast raster: unknown option '--frobnicate' (see trirast raster --help)"},
+      {"raster --scene builtin:fan stray",
+       "trirast raster: unexpected argument 'stray' (see trirast raster --help)"},
+      {"sweep --quick=1 --list-tasks", "trirast sweep: option '--quick' takes no value"},
+  };
+  for (const Case& c : cases) {
+    const CommandResult r = run_command(kBin + " " + c.args);
+    EXPECT_EQ(r.status, 2) << c.args;
+    EXPECT_EQ(r.err, c.message + "\n") << c.args;
+    EXPECT_EQ(r.out, "") << c.args;
+  }
+}
+
 TEST(Cli, RasterWritesSortedSpansImageAndReport) {
   TempDir dir;
   write_file(dir.file("two.tri"), "# two triangles\n10 10 50 12 20 40\n\n60.5 5 90 30 61 44 # tail\n");

@@ -1,10 +1,17 @@
-// Command-line options of one trirast subcommand: declared once, parsed strictly, and printed by
-// --help from the same declarations so the help cannot drift from what is accepted.
+// Command-line options of one trirast subcommand: declared once as OptionSpecs, parsed by CLI11
+// (CLI::App) and printed by --help through CLI11's formatter from the same declarations, so the
+// help cannot drift from what is accepted.
 #pragma once
 #include <map>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace trirast {
 
@@ -13,16 +20,28 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// An integer option's accepted values, lo..hi inclusive.
+struct IntRange {
+  long lo, hi;
+};
+
 struct OptionSpec {
   std::string name;      // "--width"
   std::string metavar;   // "W"; empty for a flag
   std::string help;      // one line
   std::string fallback;  // default shown in --help; empty when none
+  // When set, the value must be an integer in the range: checked while parsing and shown in
+  // --help after the metavar ("W:1..16384").
+  std::optional<IntRange> range = std::nullopt;
 };
 
 class Args {
  public:
   Args(std::string command, std::string synopsis, std::vector<OptionSpec> specs);
+  ~Args();
+  Args(Args&&) noexcept;
+  Args& operator=(Args&&) noexcept;
+
   // Parses argv[first..argc). Throws UsageError("trirast CMD: ...") naming the bad option.
   void parse(int argc, char** argv, int first);
   bool help_requested() const { return help_; }
@@ -37,9 +56,11 @@ class Args {
 
  private:
   const OptionSpec* find(const std::string& name) const;
+  [[noreturn]] void usage_error(const std::string& what) const;
   std::string command_, synopsis_;
   std::vector<OptionSpec> specs_;
-  std::map<std::string, std::string> values_;
+  std::unique_ptr<CLI::App> app_;               // the declarations; parses and formats --help
+  std::map<std::string, std::string> values_;  // the options given, by name ("1" for a flag)
   bool help_ = false;
 };
 

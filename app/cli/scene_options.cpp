@@ -5,9 +5,9 @@ namespace trirast {
 std::vector<OptionSpec> scene_input_options() {
   return {
       {"--scene", "SCENE", "builtin:NAME[:k=v,...], a .tri file, or a mesh file (OBJ, PLY, STL, OFF, glTF, ...)", ""},
-      {"--width", "W", "viewport width in pixels, 1..16384", "1024"},
-      {"--height", "H", "viewport height in pixels, 1..16384", "768"},
-      {"--subpixel-bits", "S", "vertex snapping: 1/2^S pixel, 0..8", "8"},
+      {"--width", "W", "viewport width in pixels", "1024", IntRange{1, kMaxViewport}},
+      {"--height", "H", "viewport height in pixels", "768", IntRange{1, kMaxViewport}},
+      {"--subpixel-bits", "S", "vertex snapping: 1/2^S pixel", "8", IntRange{0, 8}},
       {"--cull", "MODE", "none | back | front (front faces run counter-clockwise as seen on screen)", "none"},
       {"--yaw", "DEG", "mesh camera: rotation about the up axis", "30"},
       {"--pitch", "DEG", "mesh camera: elevation", "20"},
