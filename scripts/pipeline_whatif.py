@@ -28,8 +28,8 @@ which also counts today's wait in StHold for the walk stage (so they are more pe
           bit length of |dxL|, |dy| over the three edges;
   nW+sN   narrow W-bit signed multipliers in one cycle when |A|, |B|, |dxL|, |dy| of every edge
           fit W signed bits and Xmax < 2^(W-1-F), else the sN shift-add;
-  sNpD, nW+sNpD  the same with D pipeline registers in the shift-add (scripts/gen2_study/
-          g2_corner_msb16p: D = 1 or 2): c = max(1, ceil(bits / N)) + D; the stage takes its next
+  sNpD, nW+sNpD  the same with D pipeline registers in the shift-add (D = 1 or 2):
+          c = max(1, ceil(bits / N)) + D; the stage takes its next
           triangle only after the D cycles (no overlap of two triangles).
 --corner-hold adds the same columns for a unit without a hand-off buffer (the lanes hold a
 set-up triangle until the walk stage loads it, as gen1's StHold). Between the other stages the
@@ -53,8 +53,8 @@ import sys
 import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts", "gen2_study"))
-from tri_setup import read_export  # noqa: E402  (the .tri reader shared with the gen2 study)
+sys.path.insert(0, os.path.join(ROOT, "tb", "improved2"))
+from tri_setup import read_export  # noqa: E402  (the .tri reader of the improved2 unit's checks)
 SCENES = ["builtin:lowpoly-far", "builtin:lowpoly-near", "builtin:highpoly-far",
           "builtin:highpoly-near", "builtin:mixed", "builtin:sphere", "builtin:torus",
           "builtin:surface", os.path.join(ROOT, "tests/data/cube.obj")]

@@ -1,6 +1,6 @@
 // The second-generation unit's redesigned lane (rtl/improved2/trirast_improved2_edge_lane.sv: gen1's normalizer
 // folded into the load, boundary mode step, adaptive divider): its results are gen1's normalizer
-// + lane's wherever the walker reads them (the gen2 study's check), so the model takes
+// + lane's wherever the walker reads them (tb/improved2/improved2_edge_lane_tb.sv), so the model takes
 // those from gen1's classes; what is its own is the cycle count, computed here.
 //
 // From the cycle after the load to the first cycle the lane is done (trirast_improved2_edge_lane.sv's header):

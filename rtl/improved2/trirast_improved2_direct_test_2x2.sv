@@ -4,7 +4,7 @@
 // waits for another): the 12 sign tests E_L, E_L + a, E_L + b, E_L + ab >= 0, a centre covered
 // when all three edges pass, and per box row the span (a row of
 // two centres is one run: a convex triangle) with x0, y0 added. Width W: 50 (EdgeBits, any
-// triangle) or narrow (the corner values of g2_corner_narrow's narrow path).
+// triangle) or narrower (trirast_improved2_top's TestHi: E_L >> F, with SW below).
 // SW (0: W): the signed bits that hold a and b (|a|, |b| < 2^(SW-1), |ab| < 2^SW). With SW + 5 < W
 // each sign is taken from SW + 5 low bits of E_L instead of all W, and E_L's high bits are not
 // read: the caller says per edge whether E_L is far from 0 (far_i: |E_L| >= 2^SW, so that no x

@@ -437,7 +437,7 @@ module trirast_improved2_top #(
   logic [5:0] hand_entry_state;
   logic [3*XB-1:0] hand_entry_x;
   logic [3*(BB+1)-1:0] hand_entry_b;
-  // The three redesigned lanes as g2_lanes.sv connects them, except for the box: the lanes read
+  // The three redesigned lanes, side by side on C's corner values; their box: the lanes read
   // Xmax, Ymax from the cycle after the load on, and the job register L holds them (in the load
   // cycle L may still hold the job being handed off, whose entry X' reads its own Xmax); the
   // iteration count m = bits(Xmax) + 1 (adaptive) is registered at the load from C.

@@ -1,6 +1,7 @@
-// The second-generation improved unit's walk stage (rtl/improved2/trirast_improved2.f, docs/rtl.md): the
-// retimed walk stage of the gen2 study (scripts/gen2_study/g2_walk_slice.sv: the walkers, the
-// span generator, a registered push with its credit, the span FIFO) with a tiny job: a triangle
+// The second-generation improved unit's walk stage (rtl/improved2/trirast_improved2.f, docs/rtl.md): a
+// retimed walk stage (the walkers, the span generator, a registered push with its credit, the
+// span FIFO; tb/improved2/improved2_walk_stage_tb.sv holds it against the improved unit's walk
+// stage) with a tiny job: a triangle
 // whose box has at most 2 x 2 pixel centres comes with its rows' spans already
 // decided by the direct 2x2 test (hand_tiny_i, per row j a valid bit and begin / end relative to
 // x0: 0 or 1, 1 or 2). A tiny job takes the walk stage like any other (so spans leave in

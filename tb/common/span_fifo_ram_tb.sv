@@ -1,12 +1,13 @@
-// gen2 study (scripts/gen2_study.sh --check): trirast_span_fifo_ram (block-RAM storage, registered read,
-// written a cycle ahead of the push) against rtl/common/trirast_span_fifo.sv (NumEndpoints 1) at depths 2,
-// 4, 8, 16 and 32, on the same random pushes and sink readiness, with phases of mostly pushing,
-// mostly popping and both. As the walk stage, the bench decides a push a cycle ahead, when count +
-// (the push registered now) < depth, writes its span into the block-RAM FIFO then (wr_i, wdata_i)
-// and registers push and span for both FIFOs' push_i (and the reference's data_i). Every cycle
-// count_o and valid_o must be equal, and data_o whenever valid_o. Prints "g2_fifo_check_tb: N
-// errors".
-module g2_fifo_check_tb;
+// The span FIFO in block RAM (rtl/common/trirast_span_fifo_ram.sv: registered read, written a
+// cycle ahead of the push) against the span FIFO in flip-flops (rtl/common/trirast_span_fifo.sv,
+// NumEndpoints 1) at depths 2, 4, 8, 16 and 32, on the same random pushes and sink readiness, with
+// phases of mostly pushing, mostly popping and both (tb/improved2/run_checks.sh --check-all, the
+// improved2 unit's walk stage being its user; Verilator --binary). As that walk stage, the bench
+// decides a push a cycle ahead, when count + (the push registered now) < depth, writes its span
+// into the block-RAM FIFO then (wr_i, wdata_i) and registers push and span for both FIFOs' push_i
+// (and the reference's data_i). Every cycle count_o and valid_o must be equal, and data_o
+// whenever valid_o. Prints "span_fifo_ram_tb: N errors".
+module span_fifo_ram_tb;
   localparam int EB = 24;
   localparam int Cycles = 40000;
   logic clk = 1'b0, rst_n = 1'b0;
@@ -47,7 +48,7 @@ module g2_fifo_check_tb;
         if (c1 != c2 || v1 != v2 || (v1 && d1 != d2)) begin
           errors++;
           if (errors < 10)
-            $display("g2_fifo_check_tb: depth %0d cycle %0d: count %0d / %0d valid %0d / %0d data %h / %h",
+            $display("span_fifo_ram_tb: depth %0d cycle %0d: count %0d / %0d valid %0d / %0d data %h / %h",
                      D, t, c1, c2, v1, v2, d1, d2);
         end
         if (v1 && ready) pops++;
@@ -60,8 +61,8 @@ module g2_fifo_check_tb;
     repeat (3) @(negedge clk);
     rst_n = 1'b1;
     repeat (Cycles + 5) @(negedge clk);
-    $display("g2_fifo_check_tb: depths 2, 4, 8, 16, 32, %0d cycles each, %0d spans popped", Cycles, pops);
-    $display("g2_fifo_check_tb: %0d errors", errors);
+    $display("span_fifo_ram_tb: depths 2, 4, 8, 16, 32, %0d cycles each, %0d spans popped", Cycles, pops);
+    $display("span_fifo_ram_tb: %0d errors", errors);
     $finish;
   end
 endmodule

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""gen2 study (scripts/gen2_study.sh --check): a scene's triangles for the whole-unit check.
+"""A scene's triangles for the whole-unit check (tb/improved2/run_checks.sh --check-unit:
+improved2_unit_vs_improved_tb.sv).
 
     unit_tris.py TRI_FILE OUT_HEX
 

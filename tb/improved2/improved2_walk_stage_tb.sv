@@ -1,14 +1,20 @@
-// gen2 study: the retimed walk stage as a whole (g2_walk_slice: carry-select walkers, parallel
-// span compares, registered push with a credit admission test, span FIFO) against the first
-// generation's walk stage and span port (rtl/improved/trirast_improved_walk_stage.sv + rtl/common/trirast_span_port.sv,
-// N = 1, FIFO 8), simulated side by side on the same random hand-off bundles
-// (scripts/gen2_study.sh --check; Verilator --binary --timing). Each has its own hand-off feeder
-// and sink, the sinks driven by the same pattern by cycle index: always ready (phase 1), then
-// random stalls (phase 2). Checked: the two span sequences are equal, span for span; with an
-// always-ready sink every span leaves the gen2 slice exactly one cycle after it leaves gen1 (the
-// registered push; docs/gen2-design.md, "Cycle contract"). With stalls the lag per span is
-// reported (min / max / mean), not required: the credit test is stricter than gen1's room test.
-module g2_walk_check_tb;
+// The improved2 unit's walk stage (rtl/improved2/trirast_improved2_walk_stage.sv: walkers, span
+// generator, registered push with a credit admission test, span FIFO; N = 1, FIFO 8, no tiny
+// jobs) against the improved unit's walk stage and span port
+// (rtl/improved/trirast_improved_walk_stage.sv + rtl/common/trirast_span_port.sv), simulated side by
+// side on the same random hand-off bundles (tb/improved2/run_checks.sh --check-blocks; Verilator
+// --binary --timing; ctest improved2_block_checks). Each has its own hand-off feeder and sink, the
+// sinks driven by the same pattern by cycle index: always ready (phase 1), then random stalls
+// (phase 2). Checked: the two span sequences are equal, span for span; with an always-ready sink
+// every span leaves the improved2 walk stage exactly one cycle after it leaves the improved one
+// (the registered push; docs/timing.md). With stalls the lag per span is reported (min / max /
+// mean), not required: the credit test is stricter than the improved unit's room test.
+// Parameters FifoRam, WalkerCs: the walk stage's build choices (defaults: FIFO in flip-flops,
+// carry-select walkers; 1, 0: the iCE40 fit's, the same spans and cycles).
+module improved2_walk_stage_tb #(
+  parameter bit FifoRam  = 1'b0,
+  parameter bit WalkerCs = 1'b1
+);
   localparam int SB = trirast_pkg::StepBits;
   localparam int QB = trirast_pkg::QuotBits;
   localparam int RB = trirast_pkg::RemBits;
@@ -47,7 +53,7 @@ module g2_walk_check_tb;
   bit stalls = 0;            // phase 2: random sink stalls
   logic ready_pattern;       // the sinks' ready this cycle (both)
   bundle_t h1, h2;
-  // gen2's walkers take the error term as f: e for dir +, D - 1 - e for dir - (the lane's r).
+  // The improved2 walkers take the error term as f: e for dir +, D - 1 - e for dir - (the lane's r).
   // ... and X' as the leave offset o: X' - Xmax (dir +), -X' - 1 (dir -), and the entry row's
   // span bound - 1: Xmax - X' - 1 (mirrored), X' (not).
   logic [3*RB-1:0] h2_f;
@@ -64,7 +70,7 @@ module g2_walk_check_tb;
   end
   logic v1, v2, r1, r2;
 
-  // ---- gen1: walk stage + span port ----
+  // ---- improved: walk stage + span port ----
   logic [CountBits-1:0] count1;
   logic [0:0] push1;
   logic [EntryBits-1:0] pdata1;
@@ -75,7 +81,7 @@ module g2_walk_check_tb;
   logic [TB-1:0] stag1;
   logic [PB-1:0] sy1, sxb1;
   logic [PB:0] sxe1;
-  trirast_improved_walk_stage #(.NumEndpoints (1), .CountBits (CountBits), .EntryBits (EntryBits)) u_g1 (
+  trirast_improved_walk_stage #(.NumEndpoints (1), .CountBits (CountBits), .EntryBits (EntryBits)) u_improved (
     .clk_i (clk), .rst_ni (rst_n), .endpoints_i (3'd1), .fifo_depth_i (CountBits'(Depth)),
     .hand_valid_i (v1), .hand_ready_o (r1), .hand_tag_i (h1.tag), .hand_x0_i (h1.x0),
     .hand_y0_i (h1.y0), .hand_xmax_i (h1.xmax), .hand_ymax_i (h1.ymax),
@@ -90,18 +96,23 @@ module g2_walk_check_tb;
     .push_data_i (pdata1), .count_o (count1), .span_valid_o (sv1), .span_ready_i (ready_pattern),
     .span_tag_o (stag1), .span_y_o (sy1), .span_x_begin_o (sxb1), .span_x_end_o (sxe1));
 
-  // ---- gen2: the retimed slice ----
+  // ---- improved2: the walk stage with its span FIFO ----
   logic sv2, busy2;
   logic [EntryBits-1:0] sdata2;
-  g2_walk_slice #(.FifoDepth (Depth)) u_g2 (
+  /* verilator lint_off PINCONNECTEMPTY */
+  trirast_improved2_walk_stage #(.FifoDepth (Depth), .FifoRam (FifoRam), .WalkerCs (WalkerCs)) u_improved2 (
     .clk_i (clk), .rst_ni (rst_n), .hand_valid_i (v2), .hand_ready_o (r2),
     .hand_tag_i (h2.tag), .hand_x0_i (h2.x0), .hand_y0_i (h2.y0), .hand_xmax_i (h2.xmax),
     .hand_ymax_i (h2.ymax), .hand_mirror_i (h2.mirror), .hand_dir_down_i (h2.dir_down),
     .hand_d_i (h2.d), .hand_qs_i (h2.qs), .hand_rs_i (h2.rs), .hand_ssat_i (h2.ssat),
     .hand_enters_i (h2.enters), .hand_j_entry_i (h2.j_entry),
     .hand_entry_state_i (h2.entry_state), .hand_entry_x_i (h2_o), .hand_entry_b_i (h2_b),
-    .hand_entry_e_i (h2_f), .span_ready_i (ready_pattern), .span_valid_o (sv2),
-    .span_o (sdata2), .busy_o (busy2));
+    .hand_entry_e_i (h2_f), .hand_tiny_i (1'b0), .hand_tiny_valid_i (2'b00),
+    .hand_tiny_begin_i (2'b00), .hand_tiny_end1_i (2'b00),
+    .cfg_fifo_depth_i (CountBits'(Depth)), .cfg_endpoints_i (3'd1),
+    .span_ready_i (ready_pattern), .span_valid_o (sv2), .span_o (sdata2), .busy_o (busy2),
+    .walk_o (), .stall_o (), .last_o (), .retire_o (), .tag_o (), .fifo_count_o ());
+  /* verilator lint_on PINCONNECTEMPTY */
 
   // The feeders: bundle k on the port until taken.
   always_comb begin
@@ -183,20 +194,20 @@ module g2_walk_check_tb;
     n = out1.size();
     if (out2.size() != n) begin
       errors++;
-      $display("phase %0d: gen1 %0d spans, gen2 %0d", with_stalls, n, out2.size());
+      $display("phase %0d: improved %0d spans, improved2 %0d", with_stalls, n, out2.size());
       if (out2.size() < n) n = out2.size();
     end
     lag_min = 1 << 30; lag_max = -(1 << 30); lag_sum = 0;
     for (int i = 0; i < n; i++) begin
       if (out1[i] != out2[i]) begin
         if (errors < 10)
-          $display("phase %0d span %0d: gen1 %h gen2 %h", with_stalls, i, out1[i], out2[i]);
+          $display("phase %0d span %0d: improved %h improved2 %h", with_stalls, i, out1[i], out2[i]);
         errors++;
       end
       lag = at2[i] - at1[i];
       if (!with_stalls && lag != 1) begin
         if (errors < 10)
-          $display("phase 0 span %0d: left gen1 in cycle %0d, gen2 in %0d (want +1)", i, at1[i],
+          $display("phase 0 span %0d: left improved in cycle %0d, improved2 in %0d (want +1)", i, at1[i],
                    at2[i]);
         errors++;
       end
@@ -205,10 +216,10 @@ module g2_walk_check_tb;
       lag_sum += lag;
     end
     spans_total += n;
-    $write("g2_walk_check_tb: phase %s: %0d bundles, %0d spans, last span in cycle %0d (gen1)",
+    $write("improved2_walk_stage_tb: phase %s: %0d bundles, %0d spans, last span in cycle %0d (improved)",
            with_stalls ? "random sink stalls (ready 2 of 3)" : "sink always ready", Bundles, n,
            n ? at1[n-1] - start : 0);
-    $display(" / %0d (gen2) of the phase, gen2 lag per span min %0d max %0d mean %0.3f cycles",
+    $display(" / %0d (improved2) of the phase, improved2 lag per span min %0d max %0d mean %0.3f cycles",
              n ? at2[n-1] - start : 0, lag_min, lag_max, n ? real'(lag_sum) / n : 0.0);
   endtask
 
@@ -217,8 +228,8 @@ module g2_walk_check_tb;
     rst_n = 1;
     phase(0);
     phase(1);
-    $display("g2_walk_check_tb: %0d errors (%0d spans compared)", errors, spans_total);
-    if (errors != 0) $fatal(1, "g2_walk_check_tb: FAILED");
+    $display("improved2_walk_stage_tb: %0d errors (%0d spans compared)", errors, spans_total);
+    if (errors != 0) $fatal(1, "improved2_walk_stage_tb: FAILED");
     $finish;
   end
 endmodule

@@ -1,9 +1,9 @@
-"""gen2 study: reads a `trirast raster --export-tris A:B:TRI_FILE` file (snapped vertices in pixels,
+"""Reads a `trirast raster --export-tris A:B:TRI_FILE` file (snapped vertices in pixels,
 header with --width/--height/--subpixel-bits) and sets its triangles up as model/common/setup.cpp
 does: vertices swapped to a positive area (degenerate triangles left out: they never reach a unit),
 edge k from vertex k to vertex k + 1 with A = a.y - b.y, B = b.x - a.x, C = a.x*b.y - a.y*b.x, bias 1
-unless the edge is top-left. Shared by lane_edges.py, unit_tris.py and
-scripts/pipeline_whatif.py."""
+unless the edge is top-left. Shared by lane_edges.py, unit_tris.py (the improved2 checks,
+tb/improved2/run_checks.sh) and scripts/pipeline_whatif.py."""
 import re
 import sys
 from fractions import Fraction

@@ -1,28 +1,34 @@
-// gen2 study (scripts/gen2_study.sh --check): the whole-unit prototype trirast_improved2_top against the first
-// generation's unit rtl/improved/trirast_improved_top.sv (configured as tb/common/cycle_loop.hpp configures it for
+// The whole improved2 unit (rtl/improved2/trirast_improved2_top.sv) against the improved unit
+// (rtl/improved/trirast_improved_top.sv, configured as tb/common/cycle_loop.hpp configures it for
 // the default run: the scene's viewport, N = 1, FIFO depth 8, boundary mode step, adaptive
-// divider). Both get the same triangles (a $readmemh file from unit_tris.py, +tris=FILE +n=N
-// +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always ready (+stall:
-// both sinks ready in two cycles of three, the same pattern; +rseed=S +rpct=P: both ready as
-// trirast's --sink-stall random:S:P, model/common/sink_pattern.cpp); the two span sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
+// divider) (tb/improved2/run_checks.sh --check-unit and --check-all; Verilator --binary; ctest
+// improved2_unit_vs_improved). Both get the same triangles (a $readmemh file from unit_tris.py,
+// +tris=FILE +n=N +w=WIDTH +h=HEIGHT), each through its own triangle port handshake, sinks always
+// ready (+stall: both sinks ready in two cycles of three, the same pattern; +rseed=S +rpct=P: both
+// ready as trirast's --sink-stall random:S:P, model/common/sink_pattern.cpp); the two span
+// sequences are compared span for span (tag, y, x_begin, x_end), and the empty-box retires
 // counted. Cycles: from the first cycle a triangle is offered to the first cycle in which every
 // triangle has been accepted and the unit is idle (no triangle inside, FIFO empty).
-// Prints "g2_unit_tb: N errors" (0 = the sequences are equal). (Per-triangle cycles against the
-// SystemC model: the improved2-rtl engine, tests/rtl/test_rtl_improved2_engine.cpp.)
-// Both units' span FIFO depth: 8 unless built with -DG2_FIFO_DEPTH=D (a power of two, 1..8).
-`ifndef G2_FIFO_DEPTH
-`define G2_FIFO_DEPTH 8
+// Prints "improved2_unit_vs_improved_tb: N errors" (0 = the sequences are equal). (Per-triangle
+// cycles against the SystemC model: the improved2-rtl engine, tests/rtl/test_rtl_improved2_engine.cpp.)
+// Build defines: IMPROVED2_CORNER_FORM (0: products, 1: MSB-first radix 16; required);
+// IMPROVED2_FIT (1: the iCE40 fit's build choices, the unit's defaults: FifoRam 1, WalkerCs 0,
+// TestHi 1, JobRing 1; 0, the default here: their other values); IMPROVED2_LANE_FIXEDM and
+// IMPROVED2_LANE_PREITER (the lanes' FixedM and PreIter, default 0); IMPROVED2_FIFO_DEPTH (both
+// units' span FIFO depth, a power of two 1..8, default 8).
+`ifndef IMPROVED2_FIFO_DEPTH
+`define IMPROVED2_FIFO_DEPTH 8
 `endif
-`ifndef G2_FIT
-`define G2_FIT 0
+`ifndef IMPROVED2_FIT
+`define IMPROVED2_FIT 0
 `endif
-`ifndef G2_LANE_FIXEDM
-`define G2_LANE_FIXEDM 0
+`ifndef IMPROVED2_LANE_FIXEDM
+`define IMPROVED2_LANE_FIXEDM 0
 `endif
-`ifndef G2_LANE_PREITER
-`define G2_LANE_PREITER 0
+`ifndef IMPROVED2_LANE_PREITER
+`define IMPROVED2_LANE_PREITER 0
 `endif
-module g2_unit_tb;
+module improved2_unit_vs_improved_tb;
   localparam int P  = trirast_pkg::VertexBits;
   localparam int CB = trirast_pkg::CoefBits;
   localparam int EB = trirast_pkg::EdgeBits;
@@ -62,7 +68,7 @@ module g2_unit_tb;
   assign sready = rsink ? (sink_mix(rseed, longint'(cyc)) % 100 >= longint'(rpct))
                         : (!stall || (cyc % 3 != 2));
 
-  // ---- gen1 ----
+  // ---- improved ----
   logic v1, r1, sv1, retire1, walk_busy1;
   logic [2:0] setup_state1;
   logic [3:0] count1;
@@ -71,11 +77,11 @@ module g2_unit_tb;
   logic [PB:0] sxe1;
   assign v1 = rst_n && (i1 < n);
   /* verilator lint_off PINCONNECTEMPTY */
-  trirast_improved_top #(.NumEndpoints (1), .FifoDepth (`G2_FIFO_DEPTH)) u_gen1 (
+  trirast_improved_top #(.NumEndpoints (1), .FifoDepth (`IMPROVED2_FIFO_DEPTH)) u_improved (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
     .cfg_divide_i (1'b0), .cfg_adaptive_i (1'b1), .cfg_endpoints_i (3'd1),
-    .cfg_fifo_depth_i (4'(`G2_FIFO_DEPTH)),
+    .cfg_fifo_depth_i (4'(`IMPROVED2_FIFO_DEPTH)),
     .tri_valid_i (v1), .tri_ready_o (r1), .tri_tag_i (TB'(i1)),
     .tri_vx_i (t1[0 +: 3*P]), .tri_vy_i (t1[3*P +: 3*P]),
     .tri_a_i (t1[6*P +: 3*CB]), .tri_b_i (t1[6*P+3*CB +: 3*CB]),
@@ -88,20 +94,20 @@ module g2_unit_tb;
     .handoff_o (), .box_xmax_o (), .box_ymax_o ());
   /* verilator lint_on PINCONNECTEMPTY */
 
-  // ---- gen2 ----
+  // ---- improved2 ----
   logic v2, r2, sv2, retire2, busy2;
   logic [TB-1:0] stag2, rtag2;
   logic [PB-1:0] sy2, sxb2;
   logic [PB:0] sxe2;
   assign v2 = rst_n && (i2 < n);
-  // G2_FIT 1: the iCE40 fit's build choices (g2_unit_ice40.sv's defaults; the same cycles); 0
+  // IMPROVED2_FIT 1: the iCE40 fit's build choices (the unit's defaults; the same cycles); 0
   // their other values, the job ring's too (JobRing 0: the walk stage copies L's tag and box).
-  trirast_improved2_top #(.FifoDepth (`G2_FIFO_DEPTH), .CornerForm (`G2_CORNER_FORM), .FifoRam (`G2_FIT),
-            .WalkerCs (!`G2_FIT), .TestHi (`G2_FIT), .JobRing (`G2_FIT),
-            .LaneFixedM (`G2_LANE_FIXEDM), .LanePreIter (`G2_LANE_PREITER)) u_gen2 (
+  trirast_improved2_top #(.FifoDepth (`IMPROVED2_FIFO_DEPTH), .CornerForm (`IMPROVED2_CORNER_FORM), .FifoRam (`IMPROVED2_FIT),
+            .WalkerCs (!`IMPROVED2_FIT), .TestHi (`IMPROVED2_FIT), .JobRing (`IMPROVED2_FIT),
+            .LaneFixedM (`IMPROVED2_LANE_FIXEDM), .LanePreIter (`IMPROVED2_LANE_PREITER)) u_improved2 (
     .clk_i (clk), .rst_ni (rst_n),
     .cfg_vp_xmax_i (PB'(w - 1)), .cfg_vp_ymax_i (PB'(h - 1)),
-    .cfg_fifo_depth_i ($clog2(`G2_FIFO_DEPTH + 1)'(`G2_FIFO_DEPTH)),
+    .cfg_fifo_depth_i ($clog2(`IMPROVED2_FIFO_DEPTH + 1)'(`IMPROVED2_FIFO_DEPTH)),
     .tri_valid_i (v2), .tri_ready_o (r2), .tri_tag_i (TB'(i2)),
     .tri_vx_i (t2[0 +: 3*P]), .tri_vy_i (t2[3*P +: 3*P]),
     .tri_a_i (t2[6*P +: 3*CB]), .tri_b_i (t2[6*P+3*CB +: 3*CB]),
@@ -134,11 +140,11 @@ module g2_unit_tb;
     int errors;
     if (!$value$plusargs("tris=%s", path) || !$value$plusargs("n=%d", n) ||
         !$value$plusargs("w=%d", w) || !$value$plusargs("h=%d", h)) begin
-      $display("g2_unit_tb: needs +tris=FILE +n=N +w=WIDTH +h=HEIGHT");
+      $display("improved2_unit_vs_improved_tb: needs +tris=FILE +n=N +w=WIDTH +h=HEIGHT");
       $finish;
     end
     if (n > MaxTris) begin
-      $display("g2_unit_tb: %0d triangles, more than %0d", n, MaxTris);
+      $display("improved2_unit_vs_improved_tb: %0d triangles, more than %0d", n, MaxTris);
       $finish;
     end
     stall = $test$plusargs("stall");
@@ -158,32 +164,32 @@ module g2_unit_tb;
     end
     errors = 0;
     if (end1 < 0 || end2 < 0) begin
-      $display("g2_unit_tb: stopped after %0d cycles (gen1 done %0d, gen2 done %0d)", cyc, end1, end2);
+      $display("improved2_unit_vs_improved_tb: stopped after %0d cycles (improved done %0d, improved2 done %0d)", cyc, end1, end2);
       errors++;
     end
     if (q1.size() != q2.size()) begin
-      $display("g2_unit_tb: %0d spans from gen1, %0d from gen2", q1.size(), q2.size());
+      $display("improved2_unit_vs_improved_tb: %0d spans from improved, %0d from improved2", q1.size(), q2.size());
       errors++;
     end
     for (int k = 0; k < q1.size() && k < q2.size(); k++) begin
       if (q1[k] != q2[k]) begin
         if (errors < 10)
-          $display("g2_unit_tb: span %0d: gen1 tag %0d y %0d [%0d, %0d), gen2 tag %0d y %0d [%0d, %0d)",
+          $display("improved2_unit_vs_improved_tb: span %0d: improved tag %0d y %0d [%0d, %0d), improved2 tag %0d y %0d [%0d, %0d)",
                    k, q1[k][SpanBits-1 -: TB], q1[k][2*PB+1 +: PB], q1[k][PB+1 +: PB], q1[k][PB:0],
                    q2[k][SpanBits-1 -: TB], q2[k][2*PB+1 +: PB], q2[k][PB+1 +: PB], q2[k][PB:0]);
         errors++;
       end
     end
     if (retires1 != retires2) begin
-      $display("g2_unit_tb: empty boxes retired: gen1 %0d, gen2 %0d", retires1, retires2);
+      $display("improved2_unit_vs_improved_tb: empty boxes retired: improved %0d, improved2 %0d", retires1, retires2);
       errors++;
     end
-    if (rsink) $write("g2_unit_tb: sink random:%0d:%0d: ", rseed, rpct);
-    else if (stall) $write("g2_unit_tb: sink ready 2 of 3 cycles: ");
-    else $write("g2_unit_tb: ");
-    $display("%0d triangles, %0d spans, %0d empty boxes; cycles gen1 %0d (%.2f per triangle), gen2 %0d (%.2f per triangle)",
+    if (rsink) $write("improved2_unit_vs_improved_tb: sink random:%0d:%0d: ", rseed, rpct);
+    else if (stall) $write("improved2_unit_vs_improved_tb: sink ready 2 of 3 cycles: ");
+    else $write("improved2_unit_vs_improved_tb: ");
+    $display("%0d triangles, %0d spans, %0d empty boxes; cycles improved %0d (%.2f per triangle), improved2 %0d (%.2f per triangle)",
              n, q1.size(), retires1, end1, real'(end1) / n, end2, real'(end2) / n);
-    $display("g2_unit_tb: %0d errors", errors);
+    $display("improved2_unit_vs_improved_tb: %0d errors", errors);
     $finish;
   end
 endmodule

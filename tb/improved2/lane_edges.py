@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""gen2 study (scripts/gen2_study.sh --check): the lanes' inputs of a scene's triangles.
+"""The lanes' inputs of a scene's triangles for the edge lane check (tb/improved2/run_checks.sh
+--check-all: improved2_edge_lane_tb.sv).
 
     lane_edges.py TRI_FILE OUT
 
@@ -7,7 +8,8 @@ TRI_FILE is `trirast raster --export-tris A:B:TRI_FILE` (snapped vertices in pix
 --width/--height/--subpixel-bits). For every triangle with a non-empty box, OUT gets one line per
 edge, "A B E_L E_R Xmax Ymax tiny" (decimal), computed as model/common/setup.cpp and
 rtl/common/trirast_box_stage.sv do (tri_setup.py: vertices swapped to a positive area, A, B, C, bias),
-E at the box's left and right pixel centres of row 0. tiny = 1 for a box of at most 2x2 pixels (gen2's direct test, not the lanes)."""
+E at the box's left and right pixel centres of row 0. tiny = 1 for a box of at most 2x2 pixels (the improved2 unit's
+direct test, not the lanes)."""
 import sys
 
 from tri_setup import read_export
