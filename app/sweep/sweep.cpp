@@ -11,6 +11,7 @@
 #include "core/fixed_point.hpp"
 #include "core/span_diff.hpp"
 #include "engines.hpp"
+#include "units.hpp"
 #include "reference/watertight.hpp"
 #include "util.hpp"
 
@@ -69,12 +70,12 @@ std::vector<SweepScene> sweep_scenes(bool quick) {
 }
 
 UnitKind SweepPoint::kind() const {
-  if (engine == "improved-sc" || engine == "improved-datapath" || engine == "improved-rtl")
-    return UnitKind::Improved;
-  if (engine == "trad-sc") return UnitKind::Trad;
-  if (engine == "halfspace-sc" || engine == "halfspace-datapath" || engine == "halfspace-rtl")
-    return UnitKind::Halfspace;
-  if (engine == "improved2-sc" || engine == "improved2-datapath") return UnitKind::Improved2;
+  if (const UnitDescriptor* unit = unit_of(engine)) {
+    if (unit->name == "improved") return UnitKind::Improved;
+    if (unit->name == "trad") return UnitKind::Trad;
+    if (unit->name == "halfspace") return UnitKind::Halfspace;
+    if (unit->name == "improved2") return UnitKind::Improved2;
+  }
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }
@@ -101,7 +102,7 @@ std::string SweepPoint::config_name() const {
   } else if (kind() == UnitKind::Improved2) {
     // Step, adaptive, untruncated always (the gen2 engines ignore those options): not named.
     s += " b" + std::to_string(cfg.box_bits) + " N" + std::to_string(cfg.endpoints) + " gen2";
-    if (engine == "improved2-sc") s += cfg.g2_corner_form == 0 ? " dsp" : " radix16";
+    if (engine_reads(engine, "--corner-form")) s += cfg.g2_corner_form == 0 ? " dsp" : " radix16";
   } else if (kind() == UnitKind::Halfspace) {
     s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.hs_stamp) +
          (cfg.hs_tile > 0 ? " t" + std::to_string(cfg.hs_tile) : std::string(" t-")) + " " +
@@ -565,7 +566,8 @@ Json sweep_point_json(const SweepPoint& p) {
         .set("walk", hs_walk_name(c.hs_walk));
   if (p.kind() == UnitKind::Improved2) {
     j.set("box_bits", c.box_bits).set("endpoints", c.endpoints);
-    if (p.engine == "improved2-sc") j.set("corner_form", c.g2_corner_form == 0 ? "dsp" : "radix16");
+    if (engine_reads(p.engine, "--corner-form"))
+      j.set("corner_form", c.g2_corner_form == 0 ? "dsp" : "radix16");
   }
   return j;
 }
