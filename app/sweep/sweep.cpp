@@ -176,7 +176,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   auto add_g2 = [&](const std::string& group, int S, int coord, int box) {
     for (const std::string engine : {"improved2-sc", "improved2-datapath"})
       for (int form : {0, 1})
-        if (engine == "improved2-sc" || form == 1)  // the datapath: the default form only
+        if (engine_reads(engine, "--corner-form") || form == 1)  // else the default form only
           add(engine, group, S, coord, box, 0, 1, DividerMode::Adaptive, BoundaryMode::Step, form);
   };
   auto add_g2_points = [&] {
