@@ -50,8 +50,9 @@ struct CycleWords {
   std::string retire;
   // What a per-triangle stall cycle is ("stall cycles in its walk").
   std::string stall;
-  // The job stage takes the next job only once the walk stage took the previous one: the
-  // breakdown says from which cycle it could take this one.
+  // A pipeline of box, corner and job stages (improved2): a triangle waits in the box stage
+  // until the corner stage is free (the next accept is that cycle), and the job stage takes the
+  // next job only once the walk stage took the previous one.
   bool job_stage = false;
 };
 

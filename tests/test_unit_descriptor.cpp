@@ -150,6 +150,33 @@ TEST(UnitDescriptor, ExplainNamesImproved2sOwnStages) {
     EXPECT_NE(line.find("hand-off " + std::to_string(c.handoff_cycle)), std::string::npos) << line;
   }
   EXPECT_GE(explained, 2) << "one --explain line per engine:\n" << r.out;
+
+  // The box stage hands a triangle to the corner stage in the cycle the next one is accepted:
+  // the triangle with the longest such wait has it named.
+  size_t held = 0, before = 0;
+  uint64_t held_wait = 0;
+  for (size_t p = 0, last = SIZE_MAX; p + 1 < in.cycles.size(); ++p) {
+    const TriangleCycles& t = in.cycles[p];
+    if (t.walk_start_cycle != t.handoff_cycle + 1) continue;
+    const uint64_t wait = in.cycles[p + 1].accept_cycle - (t.accept_cycle + 1);
+    if (last != SIZE_MAX && wait > held_wait) {
+      held_wait = wait;
+      held = p;
+      before = last;
+    }
+    last = p;
+  }
+  ASSERT_GT(held_wait, 0u);
+  const std::string tri = std::to_string(in.cycles[held].tri);
+  const CommandResult b = run_command(kBin + " compare" + kScene +
+                                      " --engines improved2-sc --explain " + tri);
+  ASSERT_EQ(b.status, 0) << b.err;
+  const std::string in_box = std::to_string(held_wait) +
+                             " cycles in the box stage (B): corner stage busy with triangle " +
+                             std::to_string(in.cycles[before].tri) + " until cycle " +
+                             std::to_string(in.cycles[held + 1].accept_cycle - 1);
+  EXPECT_NE(b.out.find("    triangle " + tri + ": "), std::string::npos) << b.out;
+  EXPECT_NE(b.out.find(in_box), std::string::npos) << b.out << "\nwanted: " << in_box;
 }
 
 // The half-space unit's per-triangle stall cycles are its span emitter's pushes that found the

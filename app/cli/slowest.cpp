@@ -66,6 +66,16 @@ std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t p
     waits.push_back({port, plural(port, "cycle", "cycles") + " on the port before its accept: " +
                                words.port_stage + " busy with triangle " +
                                u(cycles[pos - 1].tri) + " until cycle " + u(c.accept_cycle - 1)});
+  // A unit with a job stage: its box stage hands a triangle to the corner stage in the cycle the
+  // port accepts the next one, so the next accept ends its wait in the box stage.
+  if (words.job_stage && walked(c) && previous && pos + 1 < cycles.size()) {
+    const uint64_t to_corner = cycles[pos + 1].accept_cycle;
+    const uint64_t in_box = to_corner - (c.accept_cycle + 1);
+    if (in_box > 0)
+      waits.push_back({in_box, plural(in_box, "cycle", "cycles") +
+                                   " in the box stage (B): corner stage busy with triangle " +
+                                   u(previous->tri) + " until cycle " + u(to_corner - 1)});
+  }
   if (walked(c)) {
     const uint64_t hold = c.handoff_cycle - c.setup_done_cycle;
     if (hold > 0) {
