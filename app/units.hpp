@@ -46,7 +46,8 @@ struct CycleWords {
   // The --heatmap legend's title of setup_done_cycle - accept_cycle (its 3x5 font has no j, q
   // or comma).
   std::string setup_title;
-  // The stage an empty box (or collinear integer vertices) retires in, and why.
+  // Where a triangle with nothing to walk (an empty box, collinear integer vertices) retires:
+  // "retired in the setup stage".
   std::string retire;
   // What a per-triangle stall cycle is ("stall cycles in its walk").
   std::string stall;
