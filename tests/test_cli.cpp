@@ -273,10 +273,10 @@ TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
   EXPECT_NE(r.out.find("--report FILE.json"), std::string::npos) << r.out;
 }
 
-// Engine names: the list shows the current names; an old name (kept for one release) runs as
-// its new name after one note on stderr, and the output says the new name; an unknown name is a
-// one-line error naming the option.
-TEST(CliEngineNames, NewNamesListedOldNamesNoted) {
+// Engine names: the list shows <unit>-<view> names and the reference engines; the old names
+// (unit, model, rtl, trad, rtl-trad) are unknown engines like any other: a one-line error naming
+// the option and the name.
+TEST(CliEngineNames, ListedNamesOnlyOldNamesRefused) {
   const CommandResult list = run_command(kBin + " engines");
   ASSERT_EQ(list.status, 0) << list.err;
   std::vector<std::string> names;
@@ -286,41 +286,22 @@ TEST(CliEngineNames, NewNamesListedOldNamesNoted) {
   for (const std::string name :
        {"golden", "improved-datapath", "improved-sc", "trad-sc", "float-scanline"})
     EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name << "\n" << list.out;
-  for (const std::string old_name : {"unit", "model", "rtl", "trad", "rtl-trad"})
-    EXPECT_EQ(std::find(names.begin(), names.end(), old_name), names.end()) << old_name;
-
   TempDir dir;
-  const CommandResult r = run_command(kBin + " raster --scene builtin:fan --engine model --spans " +
-                                      dir.file("old.spans") + " --report " + dir.file("old.json"));
-  ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.err,
-            "trirast: engine 'model' is now 'improved-sc' (the old name works for this "
-            "release)\n");
-  EXPECT_NE(r.out.find("engine improved-sc,"), std::string::npos) << r.out;
-  EXPECT_NE(slurp(dir.file("old.json")).find("\"engine\": \"improved-sc\""), std::string::npos)
-      << slurp(dir.file("old.json"));
-  ASSERT_EQ(run_command(kBin + " raster --scene builtin:fan --engine improved-sc --spans " +
-                        dir.file("new.spans"))
-                .status,
-            0);
-  EXPECT_EQ(slurp(dir.file("old.spans")), slurp(dir.file("new.spans")));
-
-  // --engines of compare and fuzz: each old name noted once, the table in new names.
-  const CommandResult c =
-      run_command(kBin + " compare --scene builtin:fan --engines golden,unit,unit,trad");
-  EXPECT_EQ(c.status, 0) << c.err;
-  EXPECT_EQ(
-      c.err,
-      "trirast: engine 'unit' is now 'improved-datapath' (the old name works for this release)\n"
-      "trirast: engine 'trad' is now 'trad-sc' (the old name works for this release)\n");
-  EXPECT_NE(c.out.find("\n  improved-datapath "), std::string::npos) << c.out;
-  EXPECT_NE(c.out.find("\n  trad-sc "), std::string::npos) << c.out;
+  for (const std::string old_name : {"unit", "model", "rtl", "trad", "rtl-trad"}) {
+    EXPECT_EQ(std::find(names.begin(), names.end(), old_name), names.end()) << old_name;
+    expect_one_line_error("raster --scene builtin:fan --engine " + old_name,
+                          "--engine: unknown engine '" + old_name + "'", dir);
+    const CommandResult c =
+        run_command(kBin + " compare --scene builtin:fan --engines golden," + old_name);
+    EXPECT_EQ(c.status, 2) << c.err;
+    EXPECT_EQ(count_lines(c.err), 1) << c.err;
+    EXPECT_NE(c.err.find("--engines: unknown engine '" + old_name + "'"), std::string::npos) << c.err;
+    EXPECT_EQ(c.out, "");
+  }
   const CommandResult f =
       run_command(kBin + " fuzz --scenes 1 --seed 1 --engines golden,unit --out " + dir.path());
-  EXPECT_EQ(f.status, 0) << f.err;
-  EXPECT_NE(f.err.find("trirast: engine 'unit' is now 'improved-datapath'"), std::string::npos)
-      << f.err;
-  EXPECT_NE(f.err.find("engines golden,improved-datapath,"), std::string::npos) << f.err;
+  EXPECT_EQ(f.status, 2) << f.err;
+  EXPECT_NE(f.err.find("--engines: unknown engine 'unit'"), std::string::npos) << f.err;
 
   expect_one_line_error("raster --scene builtin:fan --engine models", "--engine", dir);
   expect_one_line_error("raster --scene builtin:fan --engine models", "'models'", dir);

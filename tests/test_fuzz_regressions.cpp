@@ -17,7 +17,7 @@
 #include "engines.hpp"
 #include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "fuzz/fuzz_scene.hpp"
+#include "common/fuzz_scene.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
 #include "scene/scene.hpp"
 #include "common/reference_raster.hpp"
@@ -386,9 +386,15 @@ TEST(FuzzCli, DisagreementWritesReproducersAndExitsOne) {
     const Scene s = parse_tri_text(text, f);
     EXPECT_EQ(s.tris.size(), 1u) << text;
     const RasterConfig cfg = parse_reproducer_config(text);
-    const CommandResult replay =
-        run_command(kBin + " compare --scene " + dir.file(f) +
-                    " --engines golden,improved-datapath " + config_options(cfg));
+    EXPECT_NE(text.find("# config: " + config_options(cfg) + "\n"), std::string::npos) << text;
+    // The replay line leaves out the options neither engine reads (the timed units' ones).
+    const size_t at = text.find("# replay: trirast ");
+    ASSERT_NE(at, std::string::npos) << text;
+    const std::string replay_line = text.substr(at + 18, text.find('\n', at) - at - 18);
+    EXPECT_EQ(replay_line.find("--endpoints"), std::string::npos) << replay_line;
+    EXPECT_NE(replay_line.find("--box-bits " + std::to_string(cfg.box_bits)), std::string::npos)
+        << replay_line;
+    const CommandResult replay = run_command(kBin + " " + replay_line);
     EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
   }
   // The same seed finds the same scenes.

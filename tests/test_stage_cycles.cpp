@@ -197,6 +197,11 @@ TEST(CliStageCycles, JoinedCyclesFlagAMismatch) {
   const std::vector<TimedCycles> hs = {{"halfspace-sc", &a}, {"halfspace-rtl", &b}};
   EXPECT_EQ(count_cycle_mismatches(hs, first), 1u);
   EXPECT_EQ(timing_unit("halfspace-rtl"), timing_unit("halfspace-sc"));
+  // And the second-generation unit's; a datapath view has no cycles to hold against them.
+  const std::vector<TimedCycles> g2 = {{"improved2-sc", &a}, {"improved2-rtl", &b}};
+  EXPECT_EQ(count_cycle_mismatches(g2, first), 1u);
+  EXPECT_EQ(timing_unit("improved2-rtl"), "improved2");
+  EXPECT_EQ(timing_unit("improved2-datapath"), "improved2-datapath");
 }
 
 TEST(CliStageCycles, ExportedWindowSetsUpTheSameTrianglesAndSpans) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 
 #include "cli/args.hpp"
@@ -16,6 +17,7 @@
 #include "common/temporary_files.hpp"
 #include "common/span_diff.hpp"
 #include "engines.hpp"
+#include "units.hpp"
 #include "golden/golden.hpp"
 #include "io/cycles_file.hpp"
 #include "io/image.hpp"
@@ -43,25 +45,56 @@ std::string gtkw_path(const std::string& trace) {
   return (has_ext ? trace.substr(0, dot) : trace) + ".gtkw";
 }
 
+// The engines that read an engine option, for its --help line: "timed engines" when those are
+// the ones; else a unit whose every view reads it as "unit-*" and other engines by name.
+std::string option_scope(const std::string& option) {
+  bool timed_only = true;
+  for (const EngineDescriptor& d : engine_descriptors())
+    timed_only = timed_only && engine_reads(d.info.name, option) == d.info.timed;
+  if (timed_only) return "timed engines";
+  std::string scope;
+  auto add = [&](const std::string& name) { scope += (scope.empty() ? "" : ", ") + name; };
+  for (const EngineDescriptor& d : engine_descriptors()) {
+    if (!engine_reads(d.info.name, option)) continue;
+    if (!d.unit) {
+      add(d.info.name);
+      continue;
+    }
+    bool all = true;
+    for (const UnitView& v : d.unit->views)
+      all = all && engine_reads(d.unit->name + "-" + v.view, option);
+    if (!all)
+      add(d.info.name);
+    else if (d.info.name == d.unit->name + "-" + d.unit->views.front().view)
+      add(d.unit->name + "-*");
+  }
+  return scope;
+}
+
 // Options every scene-consuming subcommand shares: the scene's (cli/scene_options.hpp, which
-// fit shares too) and the engines' configuration.
+// fit shares too) and the engines' configuration. An engine option's help names the engines
+// that read it (units.hpp); giving it to another engine is an error (check_engine_options).
 std::vector<OptionSpec> scene_options() {
   std::vector<OptionSpec> specs = scene_input_options();
-  const std::vector<OptionSpec> engine_specs = {
+  std::vector<OptionSpec> engine_specs = {
       {"--coord-bits", "N", "signed integer bits of a coordinate: range [-2^(N-1), 2^(N-1)) px", "16"},
-      {"--traversal", "NAME", "golden traversal: simple | incremental | block | adaptive | bisector | sat-block | window | scanline | auto", "auto"},
-      {"--threads", "N", "golden threads (0 = all cores)", "1"},
-      {"--box-bits", "N", "unit: bits of a box-relative coordinate, 1..14", "14"},
-      {"--boundary", "MODE", "unit: boundary traversal, step (the paper) | divide", "step"},
-      {"--divider", "MODE", "unit: divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
-      {"--stamp", "S", "half-space unit: stamp of S x S pixels tested per cycle, 1 | 2 | 4", "2"},
-      {"--tile", "T", "half-space unit: tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
-      {"--hs-walk", "ORDER", "half-space unit: tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
-      {"--corner-form", "FORM", "gen2 improved unit (improved2-*): corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
-      {"--endpoints", "N", "timed units: rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
-      {"--fifo-depth", "D", "timed units: span FIFO entries (>= --endpoints)", "8"},
-      {"--sink-stall", "PATTERN", "timed units: sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
+      {"--traversal", "NAME", "pixel traversal, simple | incremental | block | adaptive | bisector | sat-block | window | scanline | auto", "auto"},
+      {"--threads", "N", "threads (0 = all cores)", "1"},
+      {"--box-bits", "N", "bits of a box-relative coordinate, 1..14", "14"},
+      {"--boundary", "MODE", "boundary traversal, step (the paper) | divide", "step"},
+      {"--divider", "MODE", "divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
+      {"--stamp", "S", "stamp of S x S pixels tested per cycle, 1 | 2 | 4", "2"},
+      {"--tile", "T", "tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
+      {"--hs-walk", "ORDER", "tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
+      {"--corner-form", "FORM", "corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
+      {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
+      {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
+      {"--sink-stall", "PATTERN", "sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
   };
+  for (OptionSpec& spec : engine_specs)
+    if (std::find(engine_options().begin(), engine_options().end(), spec.name) !=
+        engine_options().end())
+      spec.help = option_scope(spec.name) + ": " + spec.help;
   specs.insert(specs.end(), engine_specs.begin(), engine_specs.end());
   return specs;
 }
@@ -136,25 +169,48 @@ Json triangle_counts(const LoadedScene& ls) {
       .set("range_dropped", ls.scene.range_dropped);
 }
 
-Json config_json(const RasterConfig& cfg) {
-  return Json::object()
-      .set("width", cfg.width)
+// Golden options (--traversal, --threads) of a command; other engines ignore them.
+struct GoldenOptions {
+  Traversal traversal = Traversal::Auto;
+  int threads = 1;
+};
+
+// The parameters that shaped the run of `engines` (compare: the golden among them): the scene's,
+// then each engine option (units.hpp) that one of them reads, with the value it ran with.
+Json config_json(const RasterConfig& cfg, const GoldenOptions& golden,
+                 const std::vector<std::string>& engines) {
+  Json j = Json::object();
+  j.set("width", cfg.width)
       .set("height", cfg.height)
       .set("subpixel_bits", cfg.subpixel_bits)
       .set("coord_bits", cfg.coord_int_bits)
-      .set("cull", cull_mode_name(cfg.cull))
-      .set("box_bits", cfg.box_bits)
-      .set("boundary", boundary_mode_name(cfg.boundary))
-      .set("divider", divider_mode_name(cfg.divider))
-      .set("endpoints", cfg.endpoints)
-      .set("fifo_depth", cfg.fifo_depth)
-      .set("sink_stall", cfg.sink_stall);
+      .set("cull", cull_mode_name(cfg.cull));
+  // Each engine option's key and the value the run used.
+  const std::map<std::string, std::pair<const char*, Json>> value = {
+      {"--box-bits", {"box_bits", Json::integer(cfg.box_bits)}},
+      {"--boundary", {"boundary", Json::string(boundary_mode_name(cfg.boundary))}},
+      {"--divider", {"divider", Json::string(divider_mode_name(cfg.divider))}},
+      {"--stamp", {"stamp", Json::integer(cfg.halfspace.stamp)}},
+      {"--tile", {"tile", Json::integer(cfg.halfspace.tile)}},
+      {"--hs-walk", {"hs_walk", Json::string(hs_walk_name(cfg.halfspace.walk))}},
+      {"--corner-form", {"corner_form", Json::string(corner_form_name(cfg.improved2.corner_form))}},
+      {"--endpoints", {"endpoints", Json::integer(cfg.endpoints)}},
+      {"--fifo-depth", {"fifo_depth", Json::integer(cfg.fifo_depth)}},
+      {"--sink-stall", {"sink_stall", Json::string(cfg.sink_stall)}},
+      {"--traversal", {"traversal", Json::string(traversal_name(golden.traversal))}},
+      {"--threads", {"threads", Json::integer(golden.threads)}},
+  };
+  for (const std::string& option : engine_options())
+    if (std::any_of(engines.begin(), engines.end(),
+                    [&](const std::string& e) { return engine_reads(e, option); }))
+      j.set(value.at(option).first, value.at(option).second);
+  return j;
 }
 
 // `option` is the option the name came from ("--engine", "--engines"), for the message.
 const EngineInfo& engine_or_throw(const std::string& name, const std::string& cmd,
                                   const std::string& option) {
-  const EngineInfo* info = find_engine(current_engine_name(name));
+  const EngineInfo* info = find_engine(name);
   if (!info) {
     std::string known;
     for (const EngineInfo& e : engine_registry()) known += (known.empty() ? "" : ", ") + e.name;
@@ -168,12 +224,6 @@ struct EngineRun {
   const EngineInfo* info;
   EngineResult result;
   double seconds = 0;
-};
-
-// Golden options (--traversal, --threads) of a command; other engines ignore them.
-struct GoldenOptions {
-  Traversal traversal = Traversal::Auto;
-  int threads = 1;
 };
 
 GoldenOptions golden_options_from(const Args& a) {
@@ -263,8 +313,8 @@ int cmd_raster(int argc, char** argv) {
   specs.push_back({"--image", "FILE.png", "write the viewport as PNG, a colour per triangle", ""});
   specs.push_back({"--report", "FILE.json", "write the JSON report", ""});
   specs.push_back({"--cycles", "FILE.csv", "timed engines: per-triangle cycles (docs/timing.md)", ""});
-  specs.push_back({"--trace", "FILE",
-                   "timed engines: waveform trace (.vcd; improved-rtl and trad-rtl also .fst)",
+  specs.push_back({"--trace", "FILE.vcd|FILE.fst",
+                   "timed engines: waveform trace, VCD or FST by the extension, and FILE.gtkw",
                    ""});
   specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
   add_diag_options(specs, false);
@@ -277,9 +327,10 @@ int cmd_raster(int argc, char** argv) {
   }
   RasterConfig cfg = config_from(a);
   const EngineInfo& info = engine_or_throw(a.get("--engine"), "raster", "--engine");
+  check_engine_options(a, {info.name});
   if (a.has("--trace")) {
     check_trace_engine(info, "raster");
-    check_output_path(a.get("--trace"), "--trace");
+    check_trace_path(a.get("--trace"), "raster");
     cfg.trace_path = a.get("--trace");
   }
   if (a.has("--trace-tris") && !a.has("--trace"))
@@ -313,13 +364,14 @@ int cmd_raster(int argc, char** argv) {
   for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
     if (a.has(opt)) stamps.note(a.get(opt));
   if (a.has("--trace")) stamps.note(gtkw_path(a.get("--trace")));
-  EngineRun run = run_engine(info, ls, cfg, golden_options_from(a));
+  const GoldenOptions golden_options = golden_options_from(a);
+  EngineRun run = run_engine(info, ls, cfg, golden_options);
   const int64_t pixels = count_pixels(run.result.spans);
 
   Json report = Json::object();
   report.set("engine", info.name)
       .set("scene", a.get("--scene"))
-      .set("config", config_json(cfg))
+      .set("config", config_json(cfg, golden_options, {info.name}))
       .set("triangles", triangle_counts(ls))
       .set("spans", uint64_t(run.result.spans.size()))
       .set("pixels", pixels)
@@ -338,7 +390,7 @@ int cmd_raster(int argc, char** argv) {
     if (run.result.cycles.empty() && !ls.setup.tris.empty())
       throw UsageError("trirast raster: --heatmap: engine '" + info.name + "' is not timed");
     write_png(heatmap_image(run.result.spans, run.result.cycles, diag.heatmap_metric, info.name,
-                            cfg.width, cfg.height),
+                            cycle_words(info.name).setup_title, cfg.width, cfg.height),
               diag.heatmap_path, "--heatmap");
   }
   size_t exported = 0;
@@ -419,9 +471,13 @@ int cmd_compare(int argc, char** argv) {
   Args a("compare", "--scene SCENE --engines A,B,... [options]", specs);
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
+    std::string inexact;
+    for (const EngineInfo& e : engine_registry())
+      if (!e.exact) inexact += (inexact.empty() ? "" : ", ") + e.name;
     std::cout << "Run engines on one scene and compare each with the golden pixel for pixel.\n"
-                 "Exit status 0 only if every exact engine (all but trad-sc, trad-rtl,\n"
-                 "float-scanline) agrees with the golden.\n\n"
+              << "Exit status 0 only if every exact engine (all but " + inexact + ")\n"
+              << "agrees with the golden. Engines of one unit's timed pair (its SystemC model and\n"
+                 "RTL) must also agree on every triangle's cycles.\n\n"
               << a.help_text();
     return 0;
   }
@@ -442,6 +498,10 @@ int cmd_compare(int argc, char** argv) {
     engines.push_back(name.rfind("file:", 0) == 0 ? &file_engines[next_file++]
                                                    : &engine_or_throw(name, "compare", "--engines"));
   if (engines.empty()) throw UsageError("trirast compare: --engines: empty list");
+  std::vector<std::string> engine_names;  // the engines that run (recorded spans do not)
+  for (const EngineInfo* info : engines)
+    if (info->make) engine_names.push_back(info->name);
+  check_engine_options(a, engine_names);
   if (a.has("--diff-image")) check_png_path(a.get("--diff-image"), "compare", "--diff-image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
   const DiagOptions diag = diag_options_from(a, true);
@@ -543,7 +603,9 @@ int cmd_compare(int argc, char** argv) {
     if (timed_cycles.empty())
       throw UsageError("trirast compare: --heatmap: none of --engines is timed");
     write_png(heatmap_image(heatmap_spans, timed_cycles[0].second, diag.heatmap_metric,
-                            timed_cycles[0].first, cfg.width, cfg.height),
+                            timed_cycles[0].first,
+                            cycle_words(timed_cycles[0].first).setup_title, cfg.width,
+                            cfg.height),
               diag.heatmap_path, "--heatmap");
     std::printf("  wrote %s (heatmap of %s, %s)\n", diag.heatmap_path.c_str(),
                 diag.heatmap_metric.c_str(), timed_cycles[0].first.c_str());
@@ -579,8 +641,10 @@ int cmd_compare(int argc, char** argv) {
   if (a.has("--report")) {
     OutputFile out(a.get("--report"), "--report");
     Json report = Json::object();
+    std::vector<std::string> ran = engine_names;
+    ran.push_back("golden");  // the reference, run whether listed or not
     report.set("scene", a.get("--scene"))
-        .set("config", config_json(cfg))
+        .set("config", config_json(cfg, golden_options, ran))
         .set("triangles", triangle_counts(ls))
         .set("golden_pixels", golden_pixels)
         .set("engines", [&] {
@@ -614,15 +678,45 @@ int cmd_scenes(int argc, char** argv) {
 }
 
 int cmd_engines(int argc, char** argv) {
-  Args a("engines", "", {});
+  Args a("engines", "[--units]",
+         {{"--units", "", "list the units instead: their engines, the options they read, the "
+                          "engines whose cycles must agree, their pipeline stages and states",
+           ""}});
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
     std::cout << "List the engines compiled into this build.\n\n" << a.help_text();
     return 0;
   }
-  for (const EngineInfo& e : engine_registry())
-    std::printf("%-18s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
-                e.description.c_str());
+  if (!a.has("--units")) {
+    for (const EngineInfo& e : engine_registry())
+      std::printf("%-18s %-8s %s\n", e.name.c_str(), e.exact ? "exact" : "inexact",
+                  e.description.c_str());
+    return 0;
+  }
+  auto joined = [](const std::vector<std::string>& items, const char* sep) {
+    std::string s;
+    for (const std::string& i : items) s += (s.empty() ? "" : sep) + i;
+    return s;
+  };
+  for (const UnitDescriptor& u : units()) {
+    std::printf("%s: %s (%s)\n", u.name.c_str(), u.title.c_str(), u.exact ? "exact" : "inexact");
+    for (const UnitView& v : u.views) {
+      const std::string name = u.name + "-" + v.view;
+      const EngineDescriptor* d = find_engine_descriptor(name);
+      std::printf("  engine       %-18s %s; reads %s\n", name.c_str(),
+                  v.timed ? "timed" : "untimed",
+                  d->options.empty() ? "no engine option" : joined(d->options, ", ").c_str());
+    }
+    std::printf("  cycles agree %s\n", joined(u.timed_pair, " = ").c_str());
+    for (const PipelineStage& st : u.stages)
+      std::printf("  stage        %s%s%s\n", st.name.c_str(), st.states.empty() ? "" : ": ",
+                  joined(st.states, ", ").c_str());
+  }
+  for (const EngineDescriptor& d : engine_descriptors())
+    if (!d.unit)
+      std::printf("%s: reference engine (%s); reads %s\n", d.info.name.c_str(),
+                  d.info.exact ? "exact" : "inexact",
+                  d.options.empty() ? "no engine option" : joined(d.options, ", ").c_str());
   return 0;
 }
 

@@ -16,8 +16,9 @@
 #include "cli/commands.hpp"
 #include "common/engine.hpp"
 #include "engines.hpp"
-#include "fuzz/fuzz_scene.hpp"
+#include "common/fuzz_scene.hpp"
 #include "io/output_file.hpp"
+#include "units.hpp"
 #include "util.hpp"
 #include "common/rtl_builds.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
@@ -122,7 +123,7 @@ int cmd_fuzz(int argc, char** argv) {
   for (const std::string& given : split(a.get("--engines"), ',')) {
     if (given.empty())
       throw UsageError("trirast fuzz: --engines: empty engine name in '" + a.get("--engines") + "'");
-    const std::string name = current_engine_name(given);
+    const std::string& name = given;
     const EngineInfo* info = find_engine(name);
     if (!info) {
       std::string known;
@@ -146,7 +147,7 @@ int cmd_fuzz(int argc, char** argv) {
 
   EngineInfo faulty;
   if (a.has("--inject-fault")) {
-    const std::string victim = current_engine_name(a.get("--inject-fault"));
+    const std::string victim = a.get("--inject-fault");
     for (const EngineInfo*& info : engines)
       if (info->name == victim && victim != "golden") {
         const auto make = info->make;
@@ -167,30 +168,32 @@ int cmd_fuzz(int argc, char** argv) {
 
   std::string engine_list;
   for (const std::string& n : names) engine_list += (engine_list.empty() ? "" : ",") + n;
-  // With RTL engines among them, the widths are those every one of them has a Verilated build
-  // of (for the improved and traditional units: every width configuration of docs/synth.md), so
-  // that no scene skips them.
+  // With RTL engines among them (units.hpp: a view with Verilated builds), the widths are those
+  // every one of them has a build of (for the improved units: every width configuration of
+  // docs/synth.md), so that no scene skips them.
   auto same = [](const FuzzWidths& a, const FuzzWidths& b) {
     return a.subpixel_bits == b.subpixel_bits && a.coord_int_bits == b.coord_int_bits &&
            a.box_bits == b.box_bits;
   };
+  auto holds = [&](const std::vector<FuzzWidths>& list, const FuzzWidths& w) {
+    return std::any_of(list.begin(), list.end(), [&](const FuzzWidths& o) { return same(o, w); });
+  };
   std::vector<FuzzWidths> widths;
   bool any_rtl = false;
   for (const EngineInfo* info : engines) {
-    const std::vector<rtl::RtlBuild>* builds = info->name == "improved-rtl"    ? &rtl::improved_builds()
-                                               : info->name == "trad-rtl"      ? &rtl::trad_builds()
-                                               : info->name == "halfspace-rtl" ? &rtl::halfspace_builds()
-                                                                               : nullptr;
-    if (!builds) continue;
-    std::vector<FuzzWidths> own;
-    for (const rtl::RtlBuild& b : *builds) {
+    const EngineDescriptor* d = find_engine_descriptor(info->name);
+    if (!d || !d->rtl_builds) continue;
+    std::vector<FuzzWidths> own;  // this engine's widths, in the order of its builds
+    for (const rtl::RtlBuild& b : d->rtl_builds()) {
       const FuzzWidths w{b.subpixel_bits, b.coord_int_bits, b.box_bits};
-      if (std::none_of(own.begin(), own.end(), [&](const FuzzWidths& o) { return same(o, w); }) &&
-          (!any_rtl || std::any_of(widths.begin(), widths.end(),
-                                   [&](const FuzzWidths& o) { return same(o, w); })))
-        own.push_back(w);
+      if (!holds(own, w)) own.push_back(w);
     }
-    widths = own;
+    if (any_rtl)  // the widths every RTL engine so far has, in the first one's order
+      widths.erase(std::remove_if(widths.begin(), widths.end(),
+                                  [&](const FuzzWidths& w) { return !holds(own, w); }),
+                   widths.end());
+    else
+      widths = own;
     any_rtl = true;
   }
   if (any_rtl && widths.empty())
@@ -201,7 +204,11 @@ int cmd_fuzz(int argc, char** argv) {
                time_limited ? (std::to_string(seconds) + " s").c_str()
                             : (std::to_string(max_scenes) + " scenes").c_str());
 
-  const bool hs_rtl = std::find(names.begin(), names.end(), "halfspace-rtl") != names.end();
+  // An RTL engine that reads --stamp (the half-space unit's): its builds' stamp, tile and walk.
+  const bool hs_rtl = std::any_of(names.begin(), names.end(), [](const std::string& n) {
+    const EngineDescriptor* d = find_engine_descriptor(n);
+    return d && d->rtl_builds && engine_reads(n, "--stamp");
+  });
   const auto t0 = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   double next_report = 1.0;
@@ -253,13 +260,20 @@ int cmd_fuzz(int argc, char** argv) {
         std::vector<std::string> ran;
         for (const std::string& name : names)
           if (std::find(skipped.begin(), skipped.end(), name) == skipped.end()) ran.push_back(name);
+        // Options none of them reads (compare refuses those) stay out of the replay.
+        std::vector<std::string> unread;
+        for (const std::string& option : engine_options())
+          if (!engine_reads("golden", option) &&
+              std::none_of(ran.begin(), ran.end(),
+                           [&](const std::string& e) { return engine_reads(e, option); }))
+            unread.push_back(option);
         OutputFile out(repro_path(n), "--out");
-        out.write(format_reproducer(small, cfg, ran, note, repro_path(n)));
+        out.write(format_reproducer(small, cfg, ran, note, repro_path(n), unread));
         out.commit();
         ++written;
         std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\nfuzz: replay: %s\n",
                      (unsigned long long)n, summary.c_str(), repro_path(n).c_str(),
-                     replay_command(cfg, ran, repro_path(n)).c_str());
+                     replay_command(cfg, ran, repro_path(n), unread).c_str());
       } else {
         std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s)\n", (unsigned long long)n,
                      summary.c_str());

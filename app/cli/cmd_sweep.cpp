@@ -394,7 +394,6 @@ int cmd_sweep(int argc, char** argv) {
   base.height = int(a.get_int("--height", 1, kMaxViewport));
   const std::string out_dir = a.get("--out");
   std::vector<std::string> engines = nonempty_items(a.get("--engines"), ',');
-  for (std::string& e : engines) e = current_engine_name(e);
   for (const std::string& e : engines)
     if (!find_engine(e))
       throw UsageError("trirast sweep: --engines: unknown engine '" + e + "'");

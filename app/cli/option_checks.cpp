@@ -6,6 +6,7 @@
 
 #include "cli/args.hpp"
 #include "io/output_file.hpp"
+#include "units.hpp"
 
 namespace trirast {
 
@@ -13,6 +14,43 @@ void check_trace_engine(const EngineInfo& engine, const std::string& cmd) {
   if (!engine.timed)
     throw UsageError("trirast " + cmd + ": --trace: engine '" + engine.name +
                      "' is not timed (it has no cycles to trace); use a timed engine");
+}
+
+void check_trace_path(const std::string& path, const std::string& cmd) {
+  auto ends_with = [&](const char* ext) {
+    const size_t n = std::char_traits<char>::length(ext);
+    return path.size() > n && path.compare(path.size() - n, n, ext) == 0;
+  };
+  if (!ends_with(".vcd") && !ends_with(".fst"))
+    throw UsageError("trirast " + cmd + ": --trace " + path +
+                     ": writes VCD or FST by the name's extension; name the file .vcd or .fst");
+  check_output_path(path, "--trace");
+}
+
+void check_engine_options(const Args& a, const std::vector<std::string>& engines) {
+  const std::string who = "trirast " + a.command() + ": ";
+  // compare runs the golden besides its --engines, as the reference.
+  const bool golden_runs = a.command() == "compare";
+  for (const std::string& option : engine_options()) {
+    if (!a.has(option)) continue;
+    bool read = golden_runs && engine_reads("golden", option);
+    std::vector<std::string> ignoring;  // the engines of `engines` that do not read it
+    for (const std::string& engine : engines) {
+      if (engine_reads(engine, option)) read = true;
+      else if (std::find(ignoring.begin(), ignoring.end(), engine) == ignoring.end())
+        ignoring.push_back(engine);
+    }
+    std::string names;
+    for (const std::string& engine : ignoring)
+      names += (names.empty() ? "'" : ", '") + engine + "'";
+    const std::string applies = " (it applies to: " + engines_reading(option) + ")";
+    if (!read && !golden_runs)
+      throw UsageError(who + option + ": does not apply to engine " + names + applies);
+    if (!read) throw UsageError(who + option + ": applies to none of the engines run" + applies);
+    if (!ignoring.empty())
+      std::fprintf(stderr, "%snote: %s: ignored by %s%s\n", who.c_str(), option.c_str(),
+                   names.c_str(), applies.c_str());
+  }
 }
 
 void check_png_path(const std::string& path, const std::string& cmd, const std::string& option) {

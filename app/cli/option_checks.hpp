@@ -1,13 +1,16 @@
 // Checks of command-line options that need more than their own text: the engine (--trace needs a
-// timed one), the scene (--trace-tris within its triangles), the file type (PNG only), and which
-// output files a run actually wrote (for its "wrote" lines).
+// timed one; an engine option must be one the engine reads), the scene (--trace-tris within its
+// triangles), the file type (PNG only; a trace .vcd or .fst), and which output files a run
+// actually wrote (for its "wrote" lines).
 #pragma once
 #include <sys/stat.h>
 
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
+#include "cli/args.hpp"
 #include "common/engine.hpp"
 
 namespace trirast {
@@ -15,6 +18,17 @@ namespace trirast {
 // Throws UsageError "trirast CMD: --trace: engine 'X' is not timed ..." for an untimed engine
 // (one that reports no cycles: it has no waveform to trace).
 void check_trace_engine(const EngineInfo& engine, const std::string& cmd);
+
+// Throws UsageError "trirast CMD: --trace PATH: ..." unless `path` ends in .vcd or .fst (the
+// format every timed engine then writes); then checks that the path can be written.
+void check_trace_path(const std::string& path, const std::string& cmd);
+
+// The engine options (units.hpp, engine_options()) given on the command line that an engine of
+// the run does not read. raster (one engine): UsageError "trirast raster: --boundary: does not
+// apply to engine 'improved2-sc' (it applies to: ...)". compare (`engines`, the golden always
+// running besides them): UsageError when no engine of the run reads the option, else one note
+// per option on stderr naming the engines of `engines` that ignore it.
+void check_engine_options(const Args& a, const std::vector<std::string>& engines);
 
 // Throws UsageError naming `option` unless `path` ends in .png (any case); then checks that the
 // path can be written (check_output_path).

@@ -7,15 +7,15 @@
 #include <map>
 
 #include "io/output_file.hpp"
+#include "units.hpp"
 
 namespace trirast {
 
 std::string timing_unit(const std::string& engine) {
-  // The old names and the new ones (improved-sc, improved-rtl, trad-sc, trad-rtl, halfspace-sc,
-  // halfspace-rtl).
-  if (engine.rfind("improved-", 0) == 0) return "improved";
-  if (engine.rfind("trad-", 0) == 0) return "trad";
-  if (engine.rfind("halfspace-", 0) == 0) return "halfspace";
+  const UnitDescriptor* unit = unit_of(engine);
+  if (unit && std::find(unit->timed_pair.begin(), unit->timed_pair.end(), engine) !=
+                  unit->timed_pair.end())
+    return unit->name;
   return engine;
 }
 
@@ -44,36 +44,52 @@ bool walked(const TriangleCycles& c) { return c.walk_start_cycle == c.handoff_cy
 }  // namespace
 
 std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t pos,
-                             const std::string& sink_stall) {
+                             const std::string& sink_stall, const CycleWords& words) {
   const TriangleCycles& c = cycles[pos];
   std::string s = "triangle " + u(c.tri) + ": " + plural(latency(c), "cycle", "cycles") +
                   " (accept " + u(c.accept_cycle) + ", done " + u(c.done_cycle) + ", " +
                   plural(c.spans, "span", "spans") + ", " + plural(c.pixels, "pixel", "pixels") +
                   ")";
+  // The triangle before it that went through the walk stage: the walk stage (and in a unit with
+  // a job stage, the job stage) held it before this one.
+  const TriangleCycles* previous = nullptr;
+  for (size_t q = pos; q-- > 0;)
+    if (walked(cycles[q])) {
+      previous = &cycles[q];
+      break;
+    }
   // The waits, each with what it waited for; the largest is named first.
   std::vector<std::pair<uint64_t, std::string>> waits;
-  // On the port: the setup stage was busy with the previous triangle.
+  // On the port: the stage that takes a triangle from the port was busy with the previous one.
   const uint64_t port = pos == 0 ? c.accept_cycle : c.accept_cycle - (cycles[pos - 1].accept_cycle + 1);
   if (pos > 0 && port > 0)
-    waits.push_back({port, plural(port, "cycle", "cycles") + " on the port before its accept: setup stage busy with triangle " +
+    waits.push_back({port, plural(port, "cycle", "cycles") + " on the port before its accept: " +
+                               words.port_stage + " busy with triangle " +
                                u(cycles[pos - 1].tri) + " until cycle " + u(c.accept_cycle - 1)});
+  // A unit with a job stage: its box stage hands a triangle to the corner stage in the cycle the
+  // port accepts the next one, so the next accept ends its wait in the box stage.
+  if (words.job_stage && walked(c) && previous && pos + 1 < cycles.size()) {
+    const uint64_t to_corner = cycles[pos + 1].accept_cycle;
+    const uint64_t in_box = to_corner - (c.accept_cycle + 1);
+    if (in_box > 0)
+      waits.push_back({in_box, plural(in_box, "cycle", "cycles") +
+                                   " in the box stage (B): corner stage busy with triangle " +
+                                   u(previous->tri) + " until cycle " + u(to_corner - 1)});
+  }
   if (walked(c)) {
     const uint64_t hold = c.handoff_cycle - c.setup_done_cycle;
     if (hold > 0) {
       // The walk stage's previous triangle ended its walk in handoff - 1.
-      std::string who = "an earlier triangle";
-      for (size_t q = pos; q-- > 0;)
-        if (walked(cycles[q])) {
-          who = "triangle " + u(cycles[q].tri);
-          break;
-        }
-      waits.push_back({hold, plural(hold, "cycle", "cycles") + " in StHold: walk stage busy with " + who +
-                                 " until cycle " + u(c.handoff_cycle - 1)});
+      const std::string who = previous ? "triangle " + u(previous->tri) : "an earlier triangle";
+      waits.push_back({hold, plural(hold, "cycle", "cycles") + " " + words.ready_wait +
+                                 ": walk stage busy with " + who + " until cycle " +
+                                 u(c.handoff_cycle - 1)});
     }
     if (c.stall_cycles > 0) {
       const bool sink_stalls = !sink_stall.empty() && sink_stall != "none";
       waits.push_back({c.stall_cycles,
-                       plural(c.stall_cycles, "stall cycle", "stall cycles") + " in its walk: FIFO full (" +
+                       plural(c.stall_cycles, "stall cycle", "stall cycles") + " " + words.stall +
+                           " (" +
                            (sink_stalls ? "sink stalled, --sink-stall " + sink_stall
                                         : std::string("the sink takes one span a cycle")) +
                            ")"});
@@ -96,12 +112,17 @@ std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t p
   }
   // The stage breakdown.
   if (!walked(c)) {
-    s += "; retired in the setup stage in cycle " + u(c.setup_done_cycle) + " (no box to walk)";
+    s += "; " + words.retire + " in cycle " + u(c.setup_done_cycle) + " (no box to walk)";
     return s;
   }
   const uint64_t setup = c.setup_done_cycle - c.setup_start_cycle;
-  s += "; set-up " + plural(setup, "cycle", "cycles") + " (" + u(c.setup_start_cycle) + ".." +
-       u(c.setup_done_cycle - 1);
+  s += "; " + words.setup_span + " " + plural(setup, "cycle", "cycles") + " (" +
+       u(c.setup_start_cycle) + ".." + u(c.setup_done_cycle - 1);
+  if (!words.setup_span_note.empty()) s += ", " + words.setup_span_note;
+  // The job stage takes a job in the cycle its previous one leaves for the walk stage.
+  if (words.job_stage && previous && previous->handoff_cycle > c.setup_start_cycle)
+    s += "; the job stage took it in cycle " + u(previous->handoff_cycle) +
+         " at the earliest, when triangle " + u(previous->tri) + " left it";
   if (c.divider_iterations + c.boundary_steps > 0)
     s += "; divider: " + plural(c.divider_iterations, "iteration", "iterations") +
          ", boundary: " + plural(c.boundary_steps, "step", "steps") + ", summed over the three lanes";
@@ -232,12 +253,13 @@ void print_timed_cycles(const std::vector<std::pair<std::string, std::vector<Tri
     std::printf(" side by side)\n");
   }
   for (const TimedCycles& r : runs) {
+    const CycleWords& words = cycle_words(r.engine);
     if (diag.slowest) {
       const std::vector<size_t> slow = slowest_triangles(*r.cycles, diag.slowest);
       std::printf("  slowest %zu triangles of %s (cycles from accept to done):\n", slow.size(),
                   r.engine.c_str());
       for (size_t p : slow)
-        std::printf("    %s\n", explain_triangle(*r.cycles, p, sink_stall).c_str());
+        std::printf("    %s\n", explain_triangle(*r.cycles, p, sink_stall, words).c_str());
     }
     if (diag.explain) {
       std::printf("  triangles %lld..%lld of %s:\n", (long long)diag.explain_first,
@@ -246,7 +268,7 @@ void print_timed_cycles(const std::vector<std::pair<std::string, std::vector<Tri
       for (size_t p = 0; p < r.cycles->size(); ++p) {
         const int64_t idx = (*r.cycles)[p].tri;
         if (idx < diag.explain_first || idx > diag.explain_last) continue;
-        std::printf("    %s\n", explain_triangle(*r.cycles, p, sink_stall).c_str());
+        std::printf("    %s\n", explain_triangle(*r.cycles, p, sink_stall, words).c_str());
         ++shown;
       }
       if (shown == 0) std::printf("    (none of them was set up: degenerate, culled or not in the scene)\n");

@@ -11,6 +11,7 @@
 #include "cli/args.hpp"
 #include "common/engine.hpp"
 #include "common/setup.hpp"
+#include "units.hpp"
 
 namespace trirast {
 
@@ -20,8 +21,9 @@ struct TimedCycles {
   const std::vector<TriangleCycles>* cycles;
 };
 
-// The unit whose cycle contract an engine follows ("improved" or "trad"; another engine's own
-// name): engines of one unit must report identical rows.
+// The unit whose cycle contract an engine follows: its unit's name for the engines of a unit's
+// timed pair (improved-sc and improved-rtl: "improved"), the engine's own name otherwise.
+// Engines of one unit must report identical rows.
 std::string timing_unit(const std::string& engine);
 
 // Cycles from accept to done.
@@ -30,11 +32,12 @@ inline uint64_t latency(const TriangleCycles& c) { return c.done_cycle - c.accep
 // Positions of the n triangles with the most cycles from accept to done (ties: earlier first).
 std::vector<size_t> slowest_triangles(const std::vector<TriangleCycles>& cycles, size_t n);
 
-// One line on the triangle at position pos: its cycles, the stage breakdown, and what it waited
-// for (largest wait first), e.g. "waited 53 cycles for the walk stage (busy with triangle 1285
-// until cycle 23218)". sink_stall is the run's --sink-stall pattern.
+// One line on the triangle at position pos: its cycles, what it waited for (largest wait first)
+// and the stage breakdown, in the words of the engine's unit (units.hpp, CycleWords), e.g.
+// "waited 53 cycles in StHold: walk stage busy with triangle 1285 until cycle 23218".
+// sink_stall is the run's --sink-stall pattern.
 std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t pos,
-                             const std::string& sink_stall);
+                             const std::string& sink_stall, const CycleWords& words);
 
 // The timed engines' rows side by side: tri, then every column but tri of each engine prefixed
 // "ENGINE.", then `mismatch`: the engines whose row differs from the first engine of their unit

@@ -266,7 +266,8 @@ int text_width(const std::string& s) { return int(s.size()) * kAdvance - kScale;
 }  // namespace
 
 RgbImage heatmap_image(const SpanList& spans, const std::vector<TriangleCycles>& cycles,
-                       const std::string& metric, const std::string& engine, int width, int height) {
+                       const std::string& metric, const std::string& engine,
+                       const std::string& setup_title, int width, int height) {
   // The scale: log(1 + v) from the smallest to the largest value of a triangle with pixels.
   std::unordered_map<uint32_t, uint64_t> value;
   value.reserve(cycles.size());
@@ -284,7 +285,7 @@ RgbImage heatmap_image(const SpanList& spans, const std::vector<TriangleCycles>&
   };
 
   const std::string title = metric == "stalls"  ? "stall cycles per triangle"
-                            : metric == "setup" ? "set-up cycles per triangle (accept to hold)"
+                            : metric == "setup" ? setup_title
                                                 : "cycles per triangle (accept to done)";
   const std::string caption = title + ", " + engine + ", log scale";
   const int legend_w = std::max(360, text_width(caption) + 16);

@@ -11,6 +11,7 @@
 #include "common/fixed_point.hpp"
 #include "common/span_diff.hpp"
 #include "engines.hpp"
+#include "units.hpp"
 #include "common/watertight.hpp"
 #include "util.hpp"
 
@@ -69,12 +70,12 @@ std::vector<SweepScene> sweep_scenes(bool quick) {
 }
 
 UnitKind SweepPoint::kind() const {
-  if (engine == "improved-sc" || engine == "improved-datapath" || engine == "improved-rtl")
-    return UnitKind::Improved;
-  if (engine == "trad-sc") return UnitKind::Trad;
-  if (engine == "halfspace-sc" || engine == "halfspace-datapath" || engine == "halfspace-rtl")
-    return UnitKind::Halfspace;
-  if (engine == "improved2-sc" || engine == "improved2-datapath") return UnitKind::Improved2;
+  if (const UnitDescriptor* unit = unit_of(engine)) {
+    if (unit->name == "improved") return UnitKind::Improved;
+    if (unit->name == "trad") return UnitKind::Trad;
+    if (unit->name == "halfspace") return UnitKind::Halfspace;
+    if (unit->name == "improved2") return UnitKind::Improved2;
+  }
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }
@@ -101,7 +102,7 @@ std::string SweepPoint::config_name() const {
   } else if (kind() == UnitKind::Improved2) {
     // Step, adaptive, untruncated always (the gen2 engines ignore those options): not named.
     s += " b" + std::to_string(cfg.box_bits) + " N" + std::to_string(cfg.endpoints) + " gen2";
-    if (engine == "improved2-sc") s += cfg.improved2.corner_form == 0 ? " dsp" : " radix16";
+    if (engine_reads(engine, "--corner-form")) s += cfg.improved2.corner_form == 0 ? " dsp" : " radix16";
   } else if (kind() == UnitKind::Halfspace) {
     s += " b" + std::to_string(cfg.box_bits) + " s" + std::to_string(cfg.halfspace.stamp) +
          (cfg.halfspace.tile > 0 ? " t" + std::to_string(cfg.halfspace.tile) : std::string(" t-")) + " " +
@@ -175,7 +176,7 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
   auto add_g2 = [&](const std::string& group, int S, int coord, int box) {
     for (const std::string engine : {"improved2-sc", "improved2-datapath"})
       for (int form : {0, 1})
-        if (engine == "improved2-sc" || form == 1)  // the datapath: the default form only
+        if (engine_reads(engine, "--corner-form") || form == 1)  // else the default form only
           add(engine, group, S, coord, box, 0, 1, DividerMode::Adaptive, BoundaryMode::Step, form);
   };
   auto add_g2_points = [&] {
@@ -565,7 +566,8 @@ Json sweep_point_json(const SweepPoint& p) {
         .set("walk", halfspace_walk_name(c.halfspace.walk));
   if (p.kind() == UnitKind::Improved2) {
     j.set("box_bits", c.box_bits).set("endpoints", c.endpoints);
-    if (p.engine == "improved2-sc") j.set("corner_form", c.improved2.corner_form == 0 ? "dsp" : "radix16");
+    if (engine_reads(p.engine, "--corner-form"))
+      j.set("corner_form", c.improved2.corner_form == 0 ? "dsp" : "radix16");
   }
   return j;
 }

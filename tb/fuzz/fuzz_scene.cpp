@@ -1,4 +1,4 @@
-#include "fuzz/fuzz_scene.hpp"
+#include "common/fuzz_scene.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -556,15 +556,21 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 // ---- reproducers --------------------------------------------------------------------------------
 
 std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
-                           const std::string& scene_path) {
+                           const std::string& scene_path, const std::vector<std::string>& unread) {
   std::string list;
   for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
-  return "trirast compare --scene " + scene_path + " --engines " + list + " " + config_options(cfg);
+  // config_options() writes "--option value" pairs.
+  std::istringstream in(config_options(cfg));
+  std::string options, key, value;
+  while (in >> key >> value)
+    if (std::find(unread.begin(), unread.end(), key) == unread.end())
+      options += (options.empty() ? "" : " ") + key + " " + value;
+  return "trirast compare --scene " + scene_path + " --engines " + list + " " + options;
 }
 
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
                               const std::vector<std::string>& engines, const std::string& note,
-                              const std::string& scene_path) {
+                              const std::string& scene_path, const std::vector<std::string>& unread) {
   std::string list;
   for (const std::string& e : engines) list += (list.empty() ? "" : ",") + e;
   std::string text = "# trirast fuzz reproducer\n# engines: " + list + "\n";
@@ -572,7 +578,7 @@ std::string format_reproducer(const std::vector<InputTriangle>& tris, const Rast
   std::string line;
   while (std::getline(notes, line)) text += "# " + line + "\n";
   text += "# config: " + config_options(cfg) + "\n";
-  text += "# replay: " + replay_command(cfg, engines, scene_path) + "\n";
+  text += "# replay: " + replay_command(cfg, engines, scene_path, unread) + "\n";
   char buf[256];
   for (const InputTriangle& t : tris) {
     // %.17g reads back bit for bit; grid values print short and exact (k / 2^(S+1)).

@@ -144,12 +144,17 @@ std::vector<InputTriangle> reduce_scene(const std::vector<InputTriangle>& tris,
 // triangle per line with coordinates printed so that they read back bit for bit. The replay
 // command names the file `scene_path` (trirast fuzz: the path it writes, so the line runs as
 // written from the fuzz run's folder; the libFuzzer target: THIS_FILE, its crash file's name).
+// `unread`: options (with their values) the replay leaves out, as none of its engines reads
+// them (trirast refuses those); the "# config:" line keeps them.
 std::string format_reproducer(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
                               const std::vector<std::string>& engines, const std::string& note,
-                              const std::string& scene_path = "THIS_FILE");
-// The replay command of a reproducer: trirast compare on scene_path with its engines and options.
+                              const std::string& scene_path = "THIS_FILE",
+                              const std::vector<std::string>& unread = {});
+// The replay command of a reproducer: trirast compare on scene_path with its engines and options
+// (those in `unread` left out).
 std::string replay_command(const RasterConfig& cfg, const std::vector<std::string>& engines,
-                           const std::string& scene_path);
+                           const std::string& scene_path,
+                           const std::vector<std::string>& unread = {});
 // The configuration of a reproducer's "# config:" line (defaults when there is none).
 RasterConfig parse_reproducer_config(const std::string& text);
 

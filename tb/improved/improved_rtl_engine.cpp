@@ -1,6 +1,7 @@
-// The engine "rtl": picks the smallest Verilated build of trirast_improved_top that covers the run's options
-// (rtl_builds.hpp) and runs it (improved_harness.hpp: the ports; cycle_loop.hpp: the cycles).
-#include "improved/improved_rtl_engine.hpp"
+// The engine "improved-rtl": picks the smallest Verilated build of trirast_improved_top that covers the
+// run's options (rtl_builds.hpp) and runs it (improved_harness.hpp: the ports; cycle_loop.hpp:
+// the cycles).
+#include "rtl_engine.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -29,11 +30,11 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
       return b;
   }
   const std::string built = built_configuration();
-  if (!widths) refuse_widths("rtl", builds, cfg, true, built);
+  if (!widths) refuse_widths("improved-rtl", builds, cfg, true, built);
   if (cfg.endpoints < 1 || cfg.endpoints > widths->endpoints)
-    refuse_build("rtl", "--endpoints", std::to_string(cfg.endpoints),
+    refuse_build("improved-rtl", "--endpoints", std::to_string(cfg.endpoints),
                  "at most " + std::to_string(widths->endpoints), built);
-  refuse_build("rtl", "--fifo-depth", std::to_string(cfg.fifo_depth),
+  refuse_build("improved-rtl", "--fifo-depth", std::to_string(cfg.fifo_depth),
                "from --endpoints up to " + std::to_string(widths->fifo_depth), built);
 }
 

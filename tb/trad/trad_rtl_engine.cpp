@@ -1,4 +1,4 @@
-// The engine "rtl-trad": picks the smallest Verilated build of trirast_trad_top that covers the
+// The engine "trad-rtl": picks the smallest Verilated build of trirast_trad_top that covers the
 // run's options (rtl_builds.hpp) and runs it (trad_harness.hpp: the ports; cycle_loop.hpp).
 #include "trad/trad_rtl_engine.hpp"
 
@@ -28,8 +28,8 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
     if (cfg.fifo_depth >= 1 && cfg.fifo_depth <= b.fifo_depth) return b;
   }
   const std::string built = describe_builds(builds, false);
-  if (!widths) refuse_widths("rtl-trad", builds, cfg, false, built);
-  refuse_build("rtl-trad", "--fifo-depth", std::to_string(cfg.fifo_depth),
+  if (!widths) refuse_widths("trad-rtl", builds, cfg, false, built);
+  refuse_build("trad-rtl", "--fifo-depth", std::to_string(cfg.fifo_depth),
                "from 1 up to " + std::to_string(widths->fifo_depth), built);
 }
 
