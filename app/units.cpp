@@ -5,7 +5,10 @@
 #include <algorithm>
 
 #include "golden/golden.hpp"
-#include "common/sc_engine.hpp"
+#include "halfspace/halfspace_sc.hpp"
+#include "improved/improved_sc.hpp"
+#include "improved2/improved2_sc.hpp"
+#include "trad/trad_sc.hpp"
 #include "halfspace/halfspace_unit.hpp"
 #include "improved2/improved2_unit.hpp"
 #include "improved/improved_unit.hpp"

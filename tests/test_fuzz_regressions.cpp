@@ -17,7 +17,7 @@
 #include "engines.hpp"
 #include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "common/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
 #include "scene/scene.hpp"
 #include "common/reference_raster.hpp"

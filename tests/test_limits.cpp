@@ -14,7 +14,7 @@
 #include "common/fixed_point.hpp"
 #include "common/span_diff.hpp"
 #include "golden/golden.hpp"
-#include "common/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "common/reference_raster.hpp"
 #include "support/run_command.hpp"
 #include "improved/improved_unit.hpp"

@@ -16,7 +16,7 @@
 #include "cli/commands.hpp"
 #include "common/engine.hpp"
 #include "engines.hpp"
-#include "common/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "io/output_file.hpp"
 #include "units.hpp"
 #include "util.hpp"

@@ -1,4 +1,4 @@
-#include "common/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 
 #include <algorithm>
 #include <cmath>

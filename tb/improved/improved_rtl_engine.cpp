@@ -1,7 +1,7 @@
 // The engine "improved-rtl": picks the smallest Verilated build of trirast_improved_top that covers the
 // run's options (rtl_builds.hpp) and runs it (improved_harness.hpp: the ports; cycle_loop.hpp:
 // the cycles).
-#include "rtl_engine.hpp"
+#include "improved/improved_rtl_engine.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -20,7 +20,7 @@
 #include "common/engine.hpp"
 #include "common/setup.hpp"
 #include "golden/golden.hpp"
-#include "common/fuzz_scene.hpp"
+#include "fuzz/fuzz_scene.hpp"
 #include "halfspace/halfspace_unit.hpp"
 #include "improved/improved_unit.hpp"
 #ifdef TRIRAST_FUZZ_HAS_RTL
