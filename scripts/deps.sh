@@ -14,6 +14,7 @@ PACKAGES=(
   xvfb xauth imagemagick                  # GTKWave headless in tests/gtkwave (xvfb-run), screenshots
   libglm-dev libassimp-dev assimp-testmodels  # mesh scenes and camera
   libpng-dev                              # PNG images
+  nlohmann-json3-dev                      # JSON: reports, the sweep's result files
   python3-matplotlib                      # plots (scripts call /usr/bin/python3)
   slurm-wlm munge parallel                # distributed sweep: local Slurm (scripts/slurm_local.sh), GNU parallel
 )
