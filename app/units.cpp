@@ -73,11 +73,11 @@ UnitDescriptor improved2_unit() {
   u.title = "second-generation improved unit";
   u.views = {
       {"datapath",
-       "second-generation improved unit, bit-accurate datapath, untimed (docs/gen2-design.md)",
+       "second-generation improved unit, bit-accurate datapath, untimed (docs/improved2.md)",
        make_improved2_datapath_engine},
       {"sc",
        "second-generation improved unit, SystemC model: its spans plus cycles, N = 1, 2, 4 "
-       "(docs/gen2-design.md)",
+       "(docs/improved2.md)",
        make_improved2_sc_engine, true},
       {"rtl",
        "second-generation improved unit, Verilated RTL (rtl/improved2/trirast_improved2.f): improved2-sc's "

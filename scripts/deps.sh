@@ -15,6 +15,7 @@ PACKAGES=(
   libglm-dev libassimp-dev assimp-testmodels  # mesh scenes and camera
   libpng-dev                              # PNG images
   libcli11-dev                            # CLI11: command-line options and --help
+  nlohmann-json3-dev                      # JSON: reports, the sweep's result files
   python3-matplotlib                      # plots (scripts call /usr/bin/python3)
   slurm-wlm munge parallel                # distributed sweep: local Slurm (scripts/slurm_local.sh), GNU parallel
 )

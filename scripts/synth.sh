@@ -202,10 +202,13 @@ TIE_DEPTH="--tie cfg_fifo_depth_i=trirast_pkg::DefaultFifoDepth"
 
 # ---- --one: one configuration of one unit for the distributed sweep (scripts/sweep_slurm.sh) ----
 # Xilinx 7 synthesis (the sweep's area target) and, with --one-pnr, iCE40 place and route for Fmax.
-# Writes ONE_OUT: "# trirast-synth-result 1", a CSV header, one row per target, "# end".
+# Writes ONE_OUT: a synthesis result of the sweep's result format (app/sweep/sweep_shard.hpp:
+# "format": "trirast-sweep-result", "version": 2, "kind": "synthesis", one row per target).
 if [ -n "$ONE" ]; then
   IFS=: read -r unit s c b n <<< "$ONE"
   [ -n "$n" ] && [ -n "$ONE_OUT" ] || { echo "synth.sh: --one UNIT:S:COORD:BOX:N needs --one-out FILE" >&2; exit 2; }
+  [[ "$unit" =~ ^[A-Za-z0-9_-]+$ && "$s:$c:$b:$n" =~ ^[0-9]+:[0-9]+:[0-9]+:[0-9]+$ ]] ||
+    { echo "synth.sh: --one: '$ONE' is not UNIT:S:COORD:BOX:N" >&2; exit 2; }
   name="$unit-S$s-c$c-b$b-N$n"
   mkdir -p "$WORK/$name"
   python3 "$ROOT/scripts/gen_params.py" --subpixel-bits "$s" --coord-bits "$c" --box-bits "$b" \
@@ -223,19 +226,31 @@ if [ -n "$ONE" ]; then
       fm=$(grep -o "Max frequency for clock '[^']*': [0-9.]* MHz" "$log" | tail -1 | sed "s/.*: \([0-9.]*\) MHz/\1/")
     fi
   fi
+  json_number() { [[ "$1" =~ ^[0-9]+(\.[0-9]+)?$ ]] && echo "$1" || echo null; }  # "": null
+  # result_row TARGET "LUT,FF,CARRY,BRAM,DSP" FMAX: one row's JSON object (names need no escapes)
+  result_row() {
+    local l ff ca br ds
+    IFS=, read -r l ff ca br ds <<< "$2"
+    printf '{"unit": "%s", "config": "%s", "target": "%s", "luts": %s, "ffs": %s, "carry": %s, '\
+'"bram": %s, "dsp": %s, "fmax_mhz": %s, "subpixel_bits": %s, "coord_bits": %s, "box_bits": %s, '\
+'"endpoints": %s, "seconds": %s}' \
+      "$unit" "$name" "$1" "$(json_number "$l")" "$(json_number "$ff")" "$(json_number "$ca")" \
+      "$(json_number "$br")" "$(json_number "$ds")" "$(json_number "$3")" "$(json_number "$s")" \
+      "$(json_number "$c")" "$(json_number "$b")" "$(json_number "$n")" "$(($(date +%s) - t0))"
+  }
+  row=$(result_row xilinx7 "$(xc7_cells "$f")" "")
   tmp="$ONE_OUT.tmp.$$"
   {
-    echo "# trirast-synth-result 1"
-    echo "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,box_bits,endpoints,seconds"
-    echo "$unit,$name,xilinx7,$(xc7_cells "$f"),,$s,$c,$b,$n,$(($(date +%s) - t0))"
+    printf '{\n  "format": "trirast-sweep-result",\n  "version": 2,\n  "kind": "synthesis",\n'
+    printf '  "rows": [\n    %s' "$row"
     if [ -n "$fm" ]; then
       p="$WORK/pnr/trad.$name/design.stat"
-      echo "$unit,$name,ice40-pnr,$(count '^SB_LUT4$' "$p"),$(count '^SB_DFF' "$p"),$(count '^SB_CARRY$' "$p"),0,0,$fm,$s,$c,$b,$n,$(($(date +%s) - t0))"
+      printf ',\n    %s' "$(result_row ice40-pnr "$(count '^SB_LUT4$' "$p"),$(count '^SB_DFF' "$p"),$(count '^SB_CARRY$' "$p"),0,0" "$fm")"
     fi
-    echo "# end"
+    printf '\n  ]\n}\n'
   } > "$tmp"
   mv "$tmp" "$ONE_OUT"
-  echo "synth.sh: $name: $(sed -n 3p "$ONE_OUT")" >&2
+  echo "synth.sh: $name: $row" >&2
   exit 0
 fi
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <set>
@@ -49,6 +50,33 @@ std::string task_file(const std::string& dir, int i) {
   return dir + buf;
 }
 
+// A stand-in for scripts/synth.sh --one's result file: the rows of synth_row.
+std::string synth_result(const std::vector<std::string>& rows) {
+  std::string out =
+      "{\n  \"format\": \"trirast-sweep-result\",\n  \"version\": 2,\n  \"kind\": \"synthesis\",\n"
+      "  \"rows\": [";
+  for (size_t i = 0; i < rows.size(); ++i) out += (i ? ",\n    " : "\n    ") + rows[i];
+  return out + "\n  ]\n}\n";
+}
+
+std::string synth_row(const std::string& unit, const std::string& target, int luts, int ffs,
+                      const std::string& fmax, int s, int c, int b, int n) {
+  return "{\"unit\": \"" + unit + "\", \"config\": \"x\", \"target\": \"" + target +
+         "\", \"luts\": " + std::to_string(luts) + ", \"ffs\": " + std::to_string(ffs) +
+         ", \"carry\": 0, \"bram\": 0, \"dsp\": 0, \"fmax_mhz\": " + fmax +
+         ", \"subpixel_bits\": " + std::to_string(s) + ", \"coord_bits\": " + std::to_string(c) +
+         ", \"box_bits\": " + std::to_string(b) + ", \"endpoints\": " + std::to_string(n) +
+         ", \"seconds\": 60}";
+}
+
+// `text` with the first `from` after `after` replaced by `to`.
+std::string replaced(std::string text, const std::string& after, const std::string& from,
+                     const std::string& to) {
+  const size_t at = text.find(from, text.find(after));
+  EXPECT_NE(at, std::string::npos) << from;
+  return at == std::string::npos ? text : text.replace(at, from.size(), to);
+}
+
 // Every "ran I" line of DIR/run.log, counted per task.
 std::map<int, int> ran_counts(const std::string& dir) {
   std::map<int, int> n;
@@ -85,11 +113,8 @@ TEST(SweepDistributed, SynthesisJobRowsReplaceTheEstimateOfTheirConfiguration) {
   ASSERT_TRUE(area.area(UnitKind::Improved, c13).estimate());
   mkdir(d.file("synth").c_str(), 0777);
   test::write_file(d.file("synth/a.synth"),
-                   "# trirast-synth-result 1\n"
-                   "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,coord_bits,"
-                   "box_bits,endpoints,seconds\n"
-                   "improved,x,xilinx7,1234,567,0,0,9,,8,13,14,1,60\n"
-                   "trad,y,ice40-pnr,100,50,0,0,0,42.5,8,13,14,1,60\n# end\n");
+                   synth_result({synth_row("improved", "xilinx7", 1234, 567, "null", 8, 13, 14, 1),
+                                 synth_row("trad", "ice40-pnr", 100, 50, "42.5", 8, 13, 14, 1)}));
   const std::vector<SynthRow> rows = read_synth_results(d.path());
   ASSERT_EQ(rows.size(), 2u);
   area.add_rows(rows);
@@ -104,6 +129,56 @@ TEST(SweepDistributed, SynthesisJobRowsReplaceTheEstimateOfTheirConfiguration) {
   EXPECT_EQ(area.fmax_mhz(UnitKind::Trad, c13), 42.5);
   EXPECT_TRUE(area.area(UnitKind::Trad, c13).estimate());  // an Fmax row gives no area
   EXPECT_NE(area.estimate(UnitKind::Improved, c13).luts, 1234);
+}
+
+// A result file and the worker pipe carry every number as it was: doubles bit for bit.
+TEST(SweepDistributed, ResultFilesAndTheWorkerPipeKeepEveryNumberExactly) {
+  TempDir d;
+  mkdir(d.file("tasks").c_str(), 0777);
+  const double seconds[] = {0.1, 1.0 / 3.0, 5e-324, 1.7976931348623157e308, 2.5e-7,
+                            12345.678901234567, 0.0, 3.0};
+  for (const double w : seconds) {
+    PointResult r;
+    r.read = UINT64_MAX;
+    r.offered = 17;
+    r.pixels = INT64_MIN;
+    r.missing = INT64_MAX;
+    r.cracks = -1;
+    r.doubles = -1;
+    r.total_cycles = uint64_t(1) << 63;
+    r.wall_seconds = w;
+    r.error = "line one\nline \"two\"\t\\";
+    SceneFigures f;
+    f.triangles = 9;
+    f.reference_pixels = -5;
+    f.golden_seconds = w / 7;
+    SweepTask t;
+    t.index = 3;
+    const std::string path = task_path(d.path(), 3);
+    write_task_result(path, "00ff", t, "improved-sc S8 c16 b14 K- N1", "builtin:mixed", f, r);
+    ASSERT_TRUE(task_result_complete(path, "00ff", 3));
+    EXPECT_FALSE(task_result_complete(path, "00fe", 3));
+    EXPECT_FALSE(task_result_complete(path, "00ff", 4));
+    const TaskResult back = read_task_result(path, "00ff", 3);
+    for (const PointResult& x : {back.result, decode_point_result(encode_point_result(r))}) {
+      EXPECT_EQ(std::memcmp(&x.wall_seconds, &r.wall_seconds, sizeof(double)), 0) << w;
+      EXPECT_EQ(x.read, r.read);
+      EXPECT_EQ(x.offered, r.offered);
+      EXPECT_EQ(x.pixels, r.pixels);
+      EXPECT_EQ(x.missing, r.missing);
+      EXPECT_EQ(x.cracks, r.cracks);
+      EXPECT_EQ(x.total_cycles, r.total_cycles);
+      EXPECT_EQ(x.error, r.error);
+    }
+    EXPECT_EQ(std::memcmp(&back.scene.golden_seconds, &f.golden_seconds, sizeof(double)), 0) << w;
+    EXPECT_EQ(back.scene.triangles, 9u);
+    EXPECT_EQ(back.scene.reference_pixels, -5);
+    const std::string text = slurp(path);
+    EXPECT_NE(text.find("\"version\": " + std::to_string(kSweepResultFormat)), std::string::npos);
+    EXPECT_EQ(encode_point_result(r).find('\n'), std::string::npos);  // one line through the pipe
+  }
+  EXPECT_THROW(decode_point_result("{\"read\": 1"), std::runtime_error);
+  EXPECT_THROW(decode_point_result("{\"read\": 1}"), std::runtime_error);
 }
 
 // The hardware fronts hold buildable configurations only: an improved configuration with quotient
@@ -179,13 +254,8 @@ TEST(SweepDistributed, EveryHardwareFrontPointIsSynthesizedByTheRun) {
       const int luts = (unit == "trad" ? 900 : 2000) + 100 * f[0] + 50 * f[1] + 20 * f[2] + 3000 * (f[3] - 1);
       test::write_file(res + "/synth/" + unit + "-" + std::to_string(rounds) + "-" +
                            std::to_string(synthesized.size()) + ".synth",
-                       "# trirast-synth-result 1\n"
-                       "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz,subpixel_bits,"
-                       "coord_bits,box_bits,endpoints,seconds\n" +
-                           unit + ",x,xilinx7," + std::to_string(luts) + "," +
-                           std::to_string(luts / 3) + ",0,0,0,," + std::to_string(f[0]) + "," +
-                           std::to_string(f[1]) + "," + std::to_string(f[2]) + "," +
-                           std::to_string(f[3]) + ",1\n# end\n");
+                       synth_result({synth_row(unit, "xilinx7", luts, luts / 3, "null", f[0], f[1],
+                                               f[2], f[3])}));
     }
   }
   ASSERT_LT(rounds, 8) << "the synthesis rounds did not converge";
@@ -307,23 +377,53 @@ TEST(SweepDistributed, ShardsMergeToTheSingleRunAndRefuseBadResultSets) {
   // A result file cut short.
   test::write_file(task_file(res, 5), task5.substr(0, task5.size() / 2));
   expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": cut short");
-  // Mixed versions: another task list or build (fingerprint), another format version.
+  test::write_file(task_file(res, 5), task5.substr(0, task5.rfind('}')));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": cut short");
+  test::write_file(task_file(res, 5), "");
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": cut short");
+  // Mixed versions: another task list or build (fingerprint), another format version (the text
+  // format before JSON among them).
   std::string other = task5;
-  const size_t at = other.find("fingerprint ") + 12;
+  const size_t at = other.find("\"fingerprint\": \"") + 16;
   other[at] = other[at] == '0' ? '1' : '0';
   test::write_file(task_file(res, 5), other);
   expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": fingerprint");
-  other = task5;
-  other.replace(0, other.find('\n'), "trirast-sweep-result 2");
-  test::write_file(task_file(res, 5), other);
-  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": result format 2");
+  test::write_file(task_file(res, 5), replaced(task5, "", "\"version\": 2", "\"version\": 3"));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": result format 3");
+  test::write_file(task_file(res, 5), "trirast-sweep-result 1\nfingerprint 0\ntask 5\nend\n");
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": result format 1 (text)");
+  // Not a result of this format, a member missing or of another type, another task's file.
+  test::write_file(task_file(res, 5), "{\"format\": \"something else\"}\n");
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": not a sweep result file");
+  test::write_file(task_file(res, 5), "{\"format\": \"trirast-sweep-result\", x}\n");
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": not a sweep result file");
+  test::write_file(task_file(res, 5),
+                   replaced(task5, "\"result\"", "\"pixels\": ", "\"pixels\": 0.5, \"p\": "));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": malformed 'result.pixels'");
+  test::write_file(task_file(res, 5), replaced(task5, "\"result\"", "\"spans\": ", "\"spans\": -"));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": malformed 'result.spans'");
+  test::write_file(task_file(res, 5), replaced(task5, "\"result\"", "\"error\": ", "\"error2\": "));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": no 'result.error'");
+  test::write_file(task_file(res, 5), slurp(task_file(res, 6)));
+  expect_one_line_error(merge(d.file("bad")), task_file(res, 5) + ": holds task 6, not task 5");
   test::write_file(task_file(res, 5), task5);
-  // A synthesis result cut short or of another format.
+  // A synthesis result cut short, of another format or kind, or with a malformed row.
   mkdir((res + "/synth").c_str(), 0777);
-  test::write_file(res + "/synth/x.synth", "# trirast-synth-result 1\nunit,config\n");
+  const std::string synth =
+      synth_result({synth_row("trad", "xilinx7", 900, 300, "null", 8, 16, 14, 1)});
+  test::write_file(res + "/synth/x.synth", synth.substr(0, synth.size() - 4));
   expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: cut short");
-  test::write_file(res + "/synth/x.synth", "# trirast-synth-result 9\n# end\n");
-  expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: not a synthesis result");
+  test::write_file(res + "/synth/x.synth", "# trirast-synth-result 1\n# end\n");
+  expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: result format 1 (text)");
+  test::write_file(res + "/synth/x.synth", replaced(synth, "", "\"version\": 2", "\"version\": 9"));
+  expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: result format 9");
+  test::write_file(res + "/synth/x.synth", task5);
+  expect_one_line_error(merge(d.file("bad")),
+                        res + "/synth/x.synth: holds a simulation result, not a synthesis result");
+  test::write_file(res + "/synth/x.synth", replaced(synth, "", "\"luts\": 900", "\"luts\": null"));
+  expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: malformed 'rows[0].luts'");
+  test::write_file(res + "/synth/x.synth", synth_result({}));
+  expect_one_line_error(merge(d.file("bad")), res + "/synth/x.synth: no result row");
   std::remove((res + "/synth/x.synth").c_str());
   EXPECT_FALSE(file_exists(d.file("bad") + "/sweep.csv"));
   m = merge(d.file("merged2"));

@@ -83,35 +83,16 @@ class Progress {
 
 // ---- worker processes -------------------------------------------------------------------------
 
-// A PointResult through a pipe: numbers as text (doubles in hex, exact), then the error text.
-std::string encode(const PointResult& r) {
-  char buf[512];
-  std::snprintf(buf, sizeof buf,
-                "%" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64 " %" PRIu64
-                " %" PRId64 " %" PRId64 " %" PRId64 " %" PRId64 " %" PRId64 " %" PRIu64 " %" PRIu64
-                " %a\n",
-                r.read, r.offered, r.degenerate, r.culled, r.rejected_range, r.rejected_width,
-                r.spans, r.pixels, r.missing, r.extra, r.cracks, r.doubles, r.total_cycles,
-                r.divider_iterations, r.wall_seconds);
-  return buf + r.error;
-}
-
+// A PointResult comes back through the pipe as encode_point_result's JSON (a simulation result
+// file's "result"); one that does not decode is the point's error.
 PointResult decode(const std::string& s) {
-  PointResult r;
-  const size_t nl = s.find('\n');
-  if (std::sscanf(s.c_str(),
-                  "%" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64 " %" SCNu64
-                  " %" SCNd64 " %" SCNd64 " %" SCNd64 " %" SCNd64 " %" SCNd64 " %" SCNu64 " %" SCNu64
-                  " %la",
-                  &r.read, &r.offered, &r.degenerate, &r.culled, &r.rejected_range,
-                  &r.rejected_width, &r.spans, &r.pixels, &r.missing, &r.extra, &r.cracks,
-                  &r.doubles, &r.total_cycles, &r.divider_iterations, &r.wall_seconds) != 15 ||
-      nl == std::string::npos) {
-    r.error = "worker: malformed result";
+  try {
+    return decode_point_result(s);
+  } catch (const std::exception& e) {
+    PointResult r;
+    r.error = std::string("worker: malformed result (") + e.what() + ")";
     return r;
   }
-  r.error = s.substr(nl + 1);
-  return r;
 }
 
 bool write_all(int fd, const void* data, size_t n) {
@@ -164,7 +145,7 @@ Worker spawn_worker(const std::vector<Task>& tasks, const std::vector<SweepPoint
     uint64_t index;
     while (read_all(down[0], &index, sizeof index)) {
       const Task& t = tasks[size_t(index)];
-      const std::string msg = encode(run_sweep_point(points[t.point], scenes[t.scene]));
+      const std::string msg = encode_point_result(run_sweep_point(points[t.point], scenes[t.scene]));
       const uint64_t len = msg.size();
       if (!write_all(up[1], &len, sizeof len) || !write_all(up[1], msg.data(), msg.size())) break;
     }

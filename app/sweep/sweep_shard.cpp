@@ -11,11 +11,12 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <map>
 #include <memory>
 #include <set>
 #include <sstream>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "io/output_file.hpp"
 
@@ -23,7 +24,11 @@ namespace trirast {
 
 namespace {
 
-constexpr const char* kMagic = "trirast-sweep-result";
+using nlohmann::ordered_json;
+
+constexpr const char* kFormatName = "trirast-sweep-result";
+constexpr const char* kSimulationKind = "simulation";
+constexpr const char* kSynthesisKind = "synthesis";
 
 uint64_t fnv1a(uint64_t h, const void* data, size_t n) {
   const unsigned char* p = static_cast<const unsigned char*>(data);
@@ -51,17 +56,177 @@ uint64_t build_hash() {
   return hash;
 }
 
-std::string hex(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%a", v);
-  return buf;
-}
-
-// One line: newlines become spaces (an error text is one line in the file).
+// One line: newlines become spaces (an error text is one line of run.log or stderr).
 std::string one_line(std::string s) {
   for (char& c : s)
     if (c == '\n' || c == '\r') c = ' ';
   return s;
+}
+
+// The members every result file starts with.
+ordered_json result_file_header(const char* kind) {
+  ordered_json j = ordered_json::object();
+  j["format"] = kFormatName;
+  j["version"] = kSweepResultFormat;
+  j["kind"] = kind;
+  return j;
+}
+
+// Doubles are written with the digits that read back to the same double.
+std::string dump_result(const ordered_json& j, int indent) {
+  const std::string text = j.dump(indent, ' ', false, ordered_json::error_handler_t::replace);
+  return indent >= 0 ? text + "\n" : text;
+}
+
+// nlohmann's parse error without its "[json.exception.parse_error.101] " tag.
+std::string parse_error_text(const nlohmann::json::parse_error& e) {
+  const std::string what = e.what();
+  const size_t tag = what.find("] ");
+  return tag == std::string::npos ? what : what.substr(tag + 2);
+}
+
+// The typed members of an object of a result file: a member that is missing or of another type
+// is an error naming the file and the member ("FILE: malformed 'result.pixels'").
+class Fields {
+ public:
+  Fields(const nlohmann::json& j, std::string path, std::string prefix = "")
+      : j_(j), path_(std::move(path)), prefix_(std::move(prefix)) {}
+
+  std::runtime_error fail(const std::string& why) const {
+    return std::runtime_error(path_.empty() ? why : path_ + ": " + why);
+  }
+  bool has(const char* key) const { return j_.is_object() && j_.contains(key); }
+  bool is_null(const char* key) const { return at(key).is_null(); }
+  uint64_t u64(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (!v.is_number_unsigned()) throw malformed(key);
+    return v.get<uint64_t>();
+  }
+  int64_t i64(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (v.is_number_unsigned() && v.get<uint64_t>() > uint64_t(INT64_MAX)) throw malformed(key);
+    if (!v.is_number_integer()) throw malformed(key);
+    return v.get<int64_t>();
+  }
+  int i32(const char* key) const {
+    const int64_t v = i64(key);
+    if (v < INT32_MIN || v > INT32_MAX) throw malformed(key);
+    return int(v);
+  }
+  double dbl(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (!v.is_number()) throw malformed(key);
+    return v.get<double>();
+  }
+  std::string str(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (!v.is_string()) throw malformed(key);
+    return v.get<std::string>();
+  }
+  Fields object(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (!v.is_object()) throw malformed(key);
+    return Fields(v, path_, prefix_ + key + ".");
+  }
+  const nlohmann::json& array(const char* key) const {
+    const nlohmann::json& v = at(key);
+    if (!v.is_array()) throw malformed(key);
+    return v;
+  }
+  Fields element(const char* key, size_t i) const {
+    const nlohmann::json& v = array(key)[i];
+    const std::string name = prefix_ + key + "[" + std::to_string(i) + "]";
+    if (!v.is_object()) throw fail("malformed '" + name + "'");
+    return Fields(v, path_, name + ".");
+  }
+
+ private:
+  const nlohmann::json& at(const char* key) const {
+    if (!has(key)) throw fail("no '" + prefix_ + key + "'");
+    return j_.at(key);
+  }
+  std::runtime_error malformed(const char* key) const {
+    return fail("malformed '" + prefix_ + key + "'");
+  }
+  const nlohmann::json& j_;
+  std::string path_, prefix_;
+};
+
+// Reads a result file of `kind` and checks what every result file holds: complete JSON (a file
+// cut short ends before its last brace), this format and version, this kind.
+nlohmann::json read_result_file(const std::string& path, const char* kind) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot read result file");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  auto fail = [&](const std::string& why) { return std::runtime_error(path + ": " + why); };
+  auto mixed = [&](const std::string& version) {
+    return fail("result format " + version + ", this trirast reads " +
+                std::to_string(kSweepResultFormat) + ": mixed versions are not merged");
+  };
+  // The text formats before this one began with a line naming the format and its version.
+  for (const std::string old : {"trirast-sweep-result ", "# trirast-synth-result "})
+    if (text.rfind(old, 0) == 0)
+      throw mixed(text.substr(old.size(), text.find('\n') - old.size()) + " (text)");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    if (e.byte > text.size()) throw fail("cut short (the JSON ends early): rerun its task");
+    throw fail("not a sweep result file (" + parse_error_text(e) + ")");
+  }
+  const auto format = j.is_object() ? j.find("format") : j.end();
+  if (format == j.end() || *format != kFormatName)
+    throw fail(std::string("not a sweep result file (no \"format\": \"") + kFormatName + "\")");
+  const Fields f(j, path);
+  const int64_t version = f.i64("version");
+  if (version != kSweepResultFormat) throw mixed(std::to_string(version));
+  const std::string k = f.str("kind");
+  if (k != kind) throw fail("holds a " + k + " result, not a " + kind + " result");
+  return j;
+}
+
+ordered_json point_result_record(const PointResult& r) {
+  ordered_json j = ordered_json::object();
+  j["read"] = r.read;
+  j["offered"] = r.offered;
+  j["degenerate"] = r.degenerate;
+  j["culled"] = r.culled;
+  j["rejected_range"] = r.rejected_range;
+  j["rejected_width"] = r.rejected_width;
+  j["spans"] = r.spans;
+  j["pixels"] = r.pixels;
+  j["missing"] = r.missing;
+  j["extra"] = r.extra;
+  j["cracks"] = r.cracks;
+  j["doubles"] = r.doubles;
+  j["total_cycles"] = r.total_cycles;
+  j["divider_iterations"] = r.divider_iterations;
+  j["wall_seconds"] = r.wall_seconds;
+  j["error"] = r.error;
+  return j;
+}
+
+PointResult point_result_from(const Fields& f) {
+  PointResult r;
+  r.read = f.u64("read");
+  r.offered = f.u64("offered");
+  r.degenerate = f.u64("degenerate");
+  r.culled = f.u64("culled");
+  r.rejected_range = f.u64("rejected_range");
+  r.rejected_width = f.u64("rejected_width");
+  r.spans = f.u64("spans");
+  r.pixels = f.i64("pixels");
+  r.missing = f.i64("missing");
+  r.extra = f.i64("extra");
+  r.cracks = f.i64("cracks");
+  r.doubles = f.i64("doubles");
+  r.total_cycles = f.u64("total_cycles");
+  r.divider_iterations = f.u64("divider_iterations");
+  r.wall_seconds = f.dbl("wall_seconds");
+  r.error = f.str("error");
+  return r;
 }
 
 void make_dir(const std::string& d) {
@@ -111,7 +276,7 @@ std::vector<SweepTask> shard_tasks(const std::vector<SweepTask>& all, const Shar
 std::string sweep_fingerprint(const std::vector<SweepPoint>& points,
                               const std::vector<SweepScene>& scenes, const RasterConfig& base) {
   uint64_t h = 14695981039346656037ull;
-  h = fnv1a(h, std::string(kMagic) + " " + std::to_string(kSweepResultFormat));
+  h = fnv1a(h, std::string(kFormatName) + " " + std::to_string(kSweepResultFormat));
   h = fnv1a(h, std::to_string(base.width) + "x" + std::to_string(base.height));
   for (const SweepPoint& p : points) h = fnv1a(h, p.label() + "|" + p.group);
   for (const SweepScene& s : scenes)
@@ -139,118 +304,57 @@ void write_task_result(const std::string& path, const std::string& fingerprint,
                        const SweepTask& t, const std::string& point_label,
                        const std::string& scene_spec, const SceneFigures& sc,
                        const PointResult& r) {
-  std::ostringstream o;
-  o << kMagic << " " << kSweepResultFormat << "\n"
-    << "fingerprint " << fingerprint << "\n"
-    << "task " << t.index << "\n"
-    << "point " << one_line(point_label) << "\n"
-    << "scene " << one_line(scene_spec) << "\n"
-    << "scene_triangles " << sc.triangles << "\n"
-    << "reference_triangles " << sc.reference_triangles << "\n"
-    << "reference_pixels " << sc.reference_pixels << "\n"
-    << "reference_cracks " << sc.reference_cracks << "\n"
-    << "reference_doubles " << sc.reference_doubles << "\n"
-    << "golden_seconds " << hex(sc.golden_seconds) << "\n"
-    << "read " << r.read << "\n"
-    << "offered " << r.offered << "\n"
-    << "degenerate " << r.degenerate << "\n"
-    << "culled " << r.culled << "\n"
-    << "rejected_range " << r.rejected_range << "\n"
-    << "rejected_width " << r.rejected_width << "\n"
-    << "spans " << r.spans << "\n"
-    << "pixels " << r.pixels << "\n"
-    << "missing " << r.missing << "\n"
-    << "extra " << r.extra << "\n"
-    << "cracks " << r.cracks << "\n"
-    << "doubles " << r.doubles << "\n"
-    << "total_cycles " << r.total_cycles << "\n"
-    << "divider_iterations " << r.divider_iterations << "\n"
-    << "wall_seconds " << hex(r.wall_seconds) << "\n"
-    << "error " << one_line(r.error) << "\n"
-    << "end\n";
+  ordered_json j = result_file_header(kSimulationKind);
+  j["fingerprint"] = fingerprint;
+  j["task"] = t.index;
+  j["point"] = point_label;
+  j["scene"] = scene_spec;
+  j["scene_figures"] = {{"triangles", sc.triangles},
+                        {"reference_triangles", sc.reference_triangles},
+                        {"reference_pixels", sc.reference_pixels},
+                        {"reference_cracks", sc.reference_cracks},
+                        {"reference_doubles", sc.reference_doubles},
+                        {"golden_seconds", sc.golden_seconds}};
+  j["result"] = point_result_record(r);
   OutputFile out(path, "--out");
-  out.write(o.str());
+  out.write(dump_result(j, 2));
   out.commit();
+}
+
+std::string encode_point_result(const PointResult& r) {
+  return dump_result(point_result_record(r), -1);
+}
+
+PointResult decode_point_result(const std::string& text) {
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error("not JSON: " + parse_error_text(e));
+  }
+  return point_result_from(Fields(j, ""));
 }
 
 TaskResult read_task_result(const std::string& path, const std::string& fingerprint,
                             size_t index) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot read result file");
-  auto fail = [&](const std::string& why) -> std::runtime_error {
-    return std::runtime_error(path + ": " + why);
-  };
-  std::string line;
-  if (!std::getline(in, line) || line.rfind(kMagic, 0) != 0)
-    throw fail("not a sweep result file (no '" + std::string(kMagic) + "' line)");
-  const std::string version = line.substr(std::strlen(kMagic));
-  if (version != " " + std::to_string(kSweepResultFormat))
-    throw fail("result format" + version + ", this trirast reads " +
-               std::to_string(kSweepResultFormat) + ": mixed versions are not merged");
-  std::map<std::string, std::string> kv;
-  bool ended = false;
-  while (std::getline(in, line)) {
-    if (line == "end") {
-      ended = true;
-      break;
-    }
-    const size_t sp = line.find(' ');
-    kv[line.substr(0, sp)] = sp == std::string::npos ? "" : line.substr(sp + 1);
-  }
-  if (!ended) throw fail("cut short (no 'end' line): rerun its task");
-  if (kv["fingerprint"] != fingerprint)
-    throw fail("fingerprint " + kv["fingerprint"] + " is not this task list's and build's (" +
-               fingerprint + "): mixed versions are not merged");
-  if (kv["task"] != std::to_string(index))
-    throw fail("holds task '" + kv["task"] + "', not task " + std::to_string(index));
-  auto u64 = [&](const char* k) -> uint64_t {
-    const std::string& v = kv[k];
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long x = std::strtoull(v.c_str(), &end, 10);
-    if (v.empty() || *end || errno) throw fail(std::string("malformed '") + k + "'");
-    return x;
-  };
-  auto i64 = [&](const char* k) -> int64_t {
-    const std::string& v = kv[k];
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(v.c_str(), &end, 10);
-    if (v.empty() || *end || errno) throw fail(std::string("malformed '") + k + "'");
-    return x;
-  };
-  auto dbl = [&](const char* k) -> double {
-    const std::string& v = kv[k];
-    char* end = nullptr;
-    const double x = std::strtod(v.c_str(), &end);
-    if (v.empty() || *end) throw fail(std::string("malformed '") + k + "'");
-    return x;
-  };
-  if (!kv.count("error")) throw fail("no 'error' line");
+  const nlohmann::json j = read_result_file(path, kSimulationKind);
+  const Fields f(j, path);
+  const std::string fp = f.str("fingerprint");
+  if (fp != fingerprint)
+    throw f.fail("fingerprint " + fp + " is not this task list's and build's (" + fingerprint +
+                 "): mixed versions are not merged");
+  const uint64_t task = f.u64("task");
+  if (task != index)
+    throw f.fail("holds task " + std::to_string(task) + ", not task " + std::to_string(index));
   TaskResult t;
-  t.scene.triangles = u64("scene_triangles");
-  t.scene.reference_triangles = u64("reference_triangles");
-  t.scene.reference_pixels = i64("reference_pixels");
-  t.scene.reference_cracks = i64("reference_cracks");
-  t.scene.reference_doubles = i64("reference_doubles");
-  t.scene.golden_seconds = dbl("golden_seconds");
-  PointResult& r = t.result;
-  r.read = u64("read");
-  r.offered = u64("offered");
-  r.degenerate = u64("degenerate");
-  r.culled = u64("culled");
-  r.rejected_range = u64("rejected_range");
-  r.rejected_width = u64("rejected_width");
-  r.spans = u64("spans");
-  r.pixels = i64("pixels");
-  r.missing = i64("missing");
-  r.extra = i64("extra");
-  r.cracks = i64("cracks");
-  r.doubles = i64("doubles");
-  r.total_cycles = u64("total_cycles");
-  r.divider_iterations = u64("divider_iterations");
-  r.wall_seconds = dbl("wall_seconds");
-  r.error = kv["error"];
+  const Fields sc = f.object("scene_figures");
+  t.scene.triangles = sc.u64("triangles");
+  t.scene.reference_triangles = sc.u64("reference_triangles");
+  t.scene.reference_pixels = sc.i64("reference_pixels");
+  t.scene.reference_cracks = sc.i64("reference_cracks");
+  t.scene.reference_doubles = sc.i64("reference_doubles");
+  t.scene.golden_seconds = sc.dbl("golden_seconds");
+  t.result = point_result_from(f.object("result"));
   return t;
 }
 
@@ -373,44 +477,25 @@ std::vector<SynthRow> read_synth_results(const std::string& dir) {
   closedir(d);
   std::sort(files.begin(), files.end());
   for (const std::string& path : files) {
-    std::ifstream in(path);
-    std::string line;
-    std::vector<std::string> lines;
-    while (std::getline(in, line)) lines.push_back(line);
-    if (lines.empty() || lines.front() != "# trirast-synth-result 1")
-      throw std::runtime_error(path + ": not a synthesis result of format 1 "
-                               "(scripts/synth.sh --one): mixed versions are not merged");
-    if (lines.back() != "# end") throw std::runtime_error(path + ": cut short (no '# end' line)");
-    if (lines.size() < 4) throw std::runtime_error(path + ": no result row");
-    std::vector<std::string> head;
-    {
-      std::stringstream ss(lines[1]);
-      std::string f;
-      while (std::getline(ss, f, ',')) head.push_back(f);
-    }
-    for (size_t i = 2; i + 1 < lines.size(); ++i) {
-      std::map<std::string, std::string> kv;
-      std::stringstream ss(lines[i]);
-      std::string f;
-      for (size_t c = 0; std::getline(ss, f, ','); ++c)
-        if (c < head.size()) kv[head[c]] = f;
+    const nlohmann::json j = read_result_file(path, kSynthesisKind);
+    const Fields f(j, path);
+    const size_t n = f.array("rows").size();
+    if (n == 0) throw f.fail("no result row");
+    for (size_t i = 0; i < n; ++i) {
+      const Fields row = f.element("rows", i);
       SynthRow r;
-      r.unit = kv["unit"];
-      r.config = kv["config"];
-      r.target = kv["target"];
+      r.unit = row.str("unit");
+      r.config = row.str("config");
+      r.target = row.str("target");
       r.origin = path;
-      try {
-        r.luts = std::stod(kv["luts"]);
-        r.ffs = std::stod(kv["ffs"]);
-        r.subpixel_bits = std::stoi(kv["subpixel_bits"]);
-        r.coord_bits = std::stoi(kv["coord_bits"]);
-        r.box_bits = std::stoi(kv["box_bits"]);
-        r.endpoints = std::stoi(kv["endpoints"]);
-        if (!kv["fmax_mhz"].empty()) r.fmax_mhz = std::stod(kv["fmax_mhz"]);
-      } catch (const std::exception&) {
-        throw std::runtime_error(path + ":" + std::to_string(i + 1) +
-                                 ": malformed row (a synthesis that failed leaves no file)");
-      }
+      r.luts = row.dbl("luts");
+      r.ffs = row.dbl("ffs");
+      r.subpixel_bits = row.i32("subpixel_bits");
+      r.coord_bits = row.i32("coord_bits");
+      r.box_bits = row.i32("box_bits");
+      r.endpoints = row.i32("endpoints");
+      // null: no place and route (Fmax unknown).
+      if (row.has("fmax_mhz") && !row.is_null("fmax_mhz")) r.fmax_mhz = row.dbl("fmax_mhz");
       rows.push_back(r);
     }
   }

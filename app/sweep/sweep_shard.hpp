@@ -7,14 +7,24 @@
 // options and build; its fingerprint (format version, viewport, every point and scene, the
 // executable's bytes) is written into every result file, and a merge refuses files of another.
 //
-// Result file DIR/tasks/sim-IIIIII.res: "trirast-sweep-result 1", then "key value" lines (the
-// scene's reference figures and the PointResult; doubles in hex, exact), then "end". Written to a
-// temporary name and renamed when complete, so a file without "end" was cut short.
+// Result files hold JSON objects of one format: "format": "trirast-sweep-result", "version"
+// (kSweepResultFormat), "kind", then the kind's members; numbers are JSON numbers (doubles written
+// with the digits that read back to the same double). A reader refuses, in one line naming the
+// file, a file of another format, version or kind, one cut short (incomplete JSON) and a member
+// that is missing or of another type.
 //
-// Synthesis tasks: after the simulation, `--merge DIR --synth-todo FILE` lists the buildable
+// Simulation results DIR/tasks/sim-IIIIII.res, "kind": "simulation": "fingerprint", "task",
+// "point" and "scene" (their names), "scene_figures" (the scene's reference figures) and "result"
+// (the PointResult: encode_point_result's object, which also carries a worker process's result
+// to the single-process sweep). Written to a temporary name and renamed when complete.
+//
+// Synthesis results: after the simulation, `--merge DIR --synth-todo FILE` lists the buildable
 // configurations on a hardware Pareto front (no quotient truncation) whose area is not from this
-// run's synthesis (synth_todo); scripts/sweep_synth_task.sh synthesizes one line into DIR/synth/NAME.synth, which
-// the next merge reads (read_synth_results).
+// run's synthesis (synth_todo); scripts/sweep_synth_task.sh synthesizes one line with
+// scripts/synth.sh --one into DIR/synth/NAME.synth, "kind": "synthesis", "rows": one object per
+// target (unit, config, target, luts, ffs, carry, bram, dsp, fmax_mhz or null, subpixel_bits,
+// coord_bits, box_bits, endpoints, seconds), which the next merge reads (read_synth_results).
+// scripts/synth.sh writes the format name and version itself: change them together.
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -26,7 +36,7 @@
 
 namespace trirast {
 
-constexpr int kSweepResultFormat = 1;
+constexpr int kSweepResultFormat = 2;
 
 struct SweepTask {
   size_t index = 0, point = 0, scene = 0;
@@ -73,6 +83,11 @@ struct TaskResult {
 };
 TaskResult read_task_result(const std::string& path, const std::string& fingerprint,
                             size_t index);
+// A PointResult as one line of JSON (the "result" object of a simulation result file), and back;
+// decode_point_result throws std::runtime_error ("malformed 'pixels'", "not JSON: ...").
+std::string encode_point_result(const PointResult& r);
+PointResult decode_point_result(const std::string& text);
+
 // Whether `path` holds a complete result of this task list (a rerun skips the task).
 bool task_result_complete(const std::string& path, const std::string& fingerprint, size_t index);
 
@@ -97,7 +112,7 @@ void merge_task_results(const std::string& dir, const std::string& fingerprint,
                         std::vector<std::string>& missing);
 
 // DIR/synth/*.synth (scripts/synth.sh --one); throws std::runtime_error naming a file that is cut
-// short or malformed. No directory: no rows.
+// short, malformed or of another format version. No directory: no rows.
 std::vector<SynthRow> read_synth_results(const std::string& dir);
 
 // Configurations to synthesize in a distributed run, as "UNIT:S:COORD:BOX:N" lines (deduplicated):
