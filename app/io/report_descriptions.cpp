@@ -24,7 +24,7 @@ const std::map<std::string, std::string>& table() {
       {"config.divider", "the improved unit's divider iterations: adaptive or fixed (--divider)"},
       {"config.stamp", "the half-space unit's stamp side in pixels (--stamp)"},
       {"config.tile", "the half-space unit's tile side in pixels, 0 for no tiles (--tile)"},
-      {"config.halfspace.walk", "the half-space unit's tile order: row or zigzag (--hs-walk)"},
+      {"config.hs_walk", "the half-space unit's tile order: row or zigzag (--hs-walk)"},
       {"config.corner_form", "the second-generation unit's corner form: dsp or radix16 (--corner-form)"},
       {"config.traversal", "the golden's pixel traversal (--traversal)"},
       {"config.threads", "the golden's threads, 0 for all cores (--threads)"},
