@@ -3,6 +3,8 @@
 // combinational): a = A*u, b = B*u and the corner values E_L = E(c(x0, y0)) + bias,
 // E_R = E(c(x1, y0)) + bias. The corner values are the unit's only multipliers: with the pixel
 // centre c = x*u + h, A*c = (A*x << F) + (A << (F - 1)), so each is a (p + 1) x PixBits product.
+`include "trirast_ports.svh"
+
 module trirast_box_stage (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -32,13 +34,8 @@ module trirast_box_stage (
   output logic [3*trirast_pkg::EdgeBits-1:0]    el_o,       // E_L of edge k
   output logic [3*trirast_pkg::EdgeBits-1:0]    er_o        // E_R of edge k
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int BoxBits = trirast_pkg::BoxBits;
-  localparam int TagBits = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int WBits = P + 2;                   // box arithmetic
   localparam int ProdBits = CoefBits + PixBits + 1;  // A * x (x unsigned)
   localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);  // h = u/2
@@ -98,17 +95,8 @@ module trirast_box_stage (
   end
 
   always_comb begin
-    tag_d  = tag_q;
-    vx_d   = vx_q;
-    vy_d   = vy_q;
-    a_d    = a_q;
-    b_d    = b_q;
-    c_d    = c_q;
-    bias_d = bias_q;
-    x0_d   = x0_q;
-    y0_d   = y0_q;
-    xmax_d = xmax_q;
-    ymax_d = ymax_q;
+    {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d, x0_d, y0_d, xmax_d, ymax_d} =
+        {tag_q, vx_q, vy_q, a_q, b_q, c_q, bias_q, x0_q, y0_q, xmax_q, ymax_q};
     if (accept_i) begin
       tag_d  = tag_i;
       vx_d   = vx_i;
@@ -129,17 +117,8 @@ module trirast_box_stage (
 
   // Datapath registers: no reset (written by the handshake before they are read).
   always_ff @(posedge clk_i) begin
-    tag_q  <= tag_d;
-    vx_q   <= vx_d;
-    vy_q   <= vy_d;
-    a_q    <= a_d;
-    b_q    <= b_d;
-    c_q    <= c_d;
-    bias_q <= bias_d;
-    x0_q   <= x0_d;
-    y0_q   <= y0_d;
-    xmax_q <= xmax_d;
-    ymax_q <= ymax_d;
+    {tag_q, vx_q, vy_q, a_q, b_q, c_q, bias_q, x0_q, y0_q, xmax_q, ymax_q} <=
+        {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d, x0_d, y0_d, xmax_d, ymax_d};
   end
 
   // Corner values. The products are exact; the sums are taken modulo 2^EdgeBits, exact because
@@ -168,13 +147,8 @@ module trirast_box_stage (
         ({{(EdgeBits - ProdBits){ax1[ProdBits-1]}}, ax1} <<< F) + ak_h + common;
   end
 
-  assign tag_o  = tag_q;
-  assign x0_o   = x0_q;
-  assign y0_o   = y0_q;
-  assign xmax_o = xmax_q;
-  assign ymax_o = ymax_q;
-  assign a_o    = a_q;
-  assign b_o    = b_q;
+  assign {tag_o, x0_o, y0_o, xmax_o, ymax_o, a_o, b_o} =
+      {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q};
 
   // rst_ni is unused: the interface holds only data registers.
   logic unused_rst;

@@ -7,6 +7,7 @@
 //            band row 0, E_end = E0 + ((Xmax & ~(U-1)) * A) << F (one multiplier per edge).
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_halfspace_setup_stage #(
   parameter int UnitSize = 8  // U: tile side, or the stamp side without tiles
@@ -16,36 +17,22 @@ module trirast_halfspace_setup_stage #(
   input  logic [trirast_pkg::PixBits-1:0]       vp_xmax_i,
   input  logic [trirast_pkg::PixBits-1:0]       vp_ymax_i,
   // ---- triangle port ----
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
-  input  logic [2:0]                            tri_bias_i,
+  `TRIRAST_TRIANGLE_PORT,
   // ---- empty-box retirement (StBox) ----
   output logic                                  box_retire_o,
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   // ---- hand-off to the walk stage (valid in StHold) ----
   output logic                                  hand_valid_o,
   input  logic                                  hand_ready_i,
-  output logic [trirast_pkg::TagBits-1:0]       hand_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       hand_x0_o,
-  output logic [trirast_pkg::PixBits-1:0]       hand_y0_o,
-  output logic [trirast_pkg::BoxBits-1:0]       hand_xmax_o,
-  output logic [trirast_pkg::BoxBits-1:0]       hand_ymax_o,
+  `TRIRAST_HANDOFF_BOX(output, _o),
   output logic [3*trirast_pkg::CoefBits-1:0]    hand_a_o,     // A of edge k
   output logic [3*trirast_pkg::CoefBits-1:0]    hand_b_o,     // B of edge k
   output logic [3*trirast_pkg::EdgeBits-1:0]    hand_e0_o,    // E0 of edge k
   output logic [3*trirast_pkg::EdgeBits-1:0]    hand_eend_o,  // E_end of edge k
   output logic [2:0]                            state_o
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
-  localparam int BoxBits = trirast_pkg::BoxBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int ProdBits = CoefBits + BoxBits + 1;  // A * (Xmax & ~(U-1)), signed
 
   typedef enum logic [2:0] {
@@ -63,25 +50,7 @@ module trirast_halfspace_setup_stage #(
   assign accept = tri_valid_i && tri_ready_o;
 
   trirast_box_stage u_interface (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .vp_xmax_i (vp_xmax_i),
-    .vp_ymax_i (vp_ymax_i),
-    .accept_i  (accept),
-    .tag_i     (tri_tag_i),
-    .vx_i      (tri_vx_i),
-    .vy_i      (tri_vy_i),
-    .a_i       (tri_a_i),
-    .b_i       (tri_b_i),
-    .c_i       (tri_c_i),
-    .bias_i    (tri_bias_i),
-    .box_i     (box_en),
-    .empty_o   (empty),
-    .tag_o     (hand_tag_o),
-    .x0_o      (hand_x0_o),
-    .y0_o      (hand_y0_o),
-    .xmax_o    (hand_xmax_o),
-    .ymax_o    (hand_ymax_o),
+    `TRIRAST_CONNECT_BOX_STAGE(accept, box_en, empty),
     .a_o       (hand_a_o),
     .b_o       (hand_b_o),
     .el_o      (el),
@@ -129,10 +98,7 @@ module trirast_halfspace_setup_stage #(
   assign hand_eend_o = eend_q;
   assign state_o = state_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) state_q <= StIdle;
-    else state_q <= state_d;
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, StIdle)
   always_ff @(posedge clk_i) begin
     e0_q <= e0_d;
     eend_q <= eend_d;

@@ -110,11 +110,7 @@ module trirast_halfspace_span_emitter #(
     end
   end
   always_ff @(posedge clk_i) begin
-    accf_q <= accf_d;
-    accl_q <= accl_d;
-    outf_q <= outf_d;
-    outl_q <= outl_d;
-    outj0_q <= outj0_d;
+    {accf_q, accl_q, outf_q, outl_q, outj0_q} <= {accf_d, accl_d, outf_d, outl_d, outj0_d};
   end
 
   // A band is handed over only when the previous one is out.

@@ -7,6 +7,7 @@
 // emitter is free (WWait until then). States: WIdle, WUnit, WStamp, WWait, WDrain (the last band
 // is being pushed).
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_halfspace_tile_walker #(
   parameter int StampSize = 2,   // S: 1, 2, 4
@@ -25,11 +26,7 @@ module trirast_halfspace_tile_walker #(
   // ---- hand-off from the setup stage ----
   input  logic                                  hand_valid_i,
   output logic                                  hand_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       hand_tag_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_x0_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_y0_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_xmax_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_ymax_i,
+  `TRIRAST_HANDOFF_BOX(input, _i),
   input  logic [3*trirast_pkg::CoefBits-1:0]    hand_a_i,
   input  logic [3*trirast_pkg::CoefBits-1:0]    hand_b_i,
   input  logic [3*trirast_pkg::EdgeBits-1:0]    hand_e0_i,
@@ -183,26 +180,10 @@ module trirast_halfspace_tile_walker #(
   always_comb begin
     logic band_load, last, retire;  // one write each of the outputs (Icarus 11)
     state_d = state_q;
-    tag_d = tag_q;
-    x0_d = x0_q;
-    y0_d = y0_q;
-    xmax_d = xmax_q;
-    ymax_d = ymax_q;
-    a_d = a_q;
-    b_d = b_q;
-    eu_d = eu_q;
-    ebl_d = ebl_q;
-    ebr_d = ebr_q;
-    es_d = es_q;
-    esr_d = esr_q;
-    i0_d = i0_q;
-    j0_d = j0_q;
-    si_d = si_q;
-    sj_d = sj_q;
-    iend_d = iend_q;
-    back_d = back_q;
-    seen_d = seen_q;
-    spans_d = spans_q;
+    {tag_d, x0_d, y0_d, xmax_d, ymax_d, a_d, b_d, eu_d, ebl_d, ebr_d, es_d, esr_d, i0_d, j0_d, si_d,
+     sj_d, iend_d, back_d, seen_d, spans_d} =
+        {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, eu_q, ebl_q, ebr_q, es_q, esr_q, i0_q, j0_q,
+         si_q, sj_q, iend_q, back_q, seen_q, spans_q};
     band_load = 1'b0;
     last = 1'b0;
     retire = 1'b0;
@@ -211,11 +192,7 @@ module trirast_halfspace_tile_walker #(
       WIdle: begin
         if (hand_valid_i) begin
           state_d = WUnit;
-          tag_d = hand_tag_i;
-          x0_d = hand_x0_i;
-          y0_d = hand_y0_i;
-          xmax_d = hand_xmax_i;
-          ymax_d = hand_ymax_i;
+          `TRIRAST_LOAD_HANDOFF_BOX
           for (int k = 0; k < 3; k++) begin
             a_d[k*EdgeBits +: EdgeBits] = {{(EdgeBits - CoefBits - F){hand_a_i[k*CoefBits + CoefBits-1]}},
                                            hand_a_i[k*CoefBits +: CoefBits], {F{1'b0}}};
@@ -310,31 +287,12 @@ module trirast_halfspace_tile_walker #(
   assign busy_o = state_q != WIdle;
   assign state_o = state_q;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) state_q <= WIdle;
-    else state_q <= state_d;
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, WIdle)
   always_ff @(posedge clk_i) begin
-    tag_q <= tag_d;
-    x0_q <= x0_d;
-    y0_q <= y0_d;
-    xmax_q <= xmax_d;
-    ymax_q <= ymax_d;
-    a_q <= a_d;
-    b_q <= b_d;
-    eu_q <= eu_d;
-    ebl_q <= ebl_d;
-    ebr_q <= ebr_d;
-    es_q <= es_d;
-    esr_q <= esr_d;
-    i0_q <= i0_d;
-    j0_q <= j0_d;
-    si_q <= si_d;
-    sj_q <= sj_d;
-    iend_q <= iend_d;
-    back_q <= back_d;
-    seen_q <= seen_d;
-    spans_q <= spans_d;
+    {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, eu_q, ebl_q, ebr_q, es_q, esr_q, i0_q, j0_q, si_q,
+     sj_q, iend_q, back_q, seen_q, spans_q} <=
+        {tag_d, x0_d, y0_d, xmax_d, ymax_d, a_d, b_d, eu_d, ebl_d, ebr_d, es_d, esr_d, i0_d, j0_d,
+         si_d, sj_d, iend_d, back_d, seen_d, spans_d};
   end
 
   `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits)

@@ -8,6 +8,7 @@
 // Every boundary is a valid/ready handshake: triangle port, hand-off, band hand-over to the
 // emitter, FIFO push (admitted by the occupancy test count <= DEPTH - 1), span port.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_halfspace_top #(
   parameter int StampSize = 2,
@@ -16,83 +17,37 @@ module trirast_halfspace_top #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
 ) (
-  input  logic                                  clk_i,
-  input  logic                                  rst_ni,
-  // ---- configuration (static) ----
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
+  // ---- clock, reset and configuration (static) ----
+  `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i,
   // ---- triangle port: one set-up triangle per handshake ----
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
-  input  logic [2:0]                            tri_bias_i,
+  `TRIRAST_TRIANGLE_PORT,
   // ---- span port ----
-  output logic                                  span_valid_o,
-  input  logic                                  span_ready_i,
-  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
-  output logic [trirast_pkg::PixBits:0]         span_x_end_o,
+  `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
   output logic                                  box_retire_o,
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
-  output logic                                  walk_busy_o,
-  output logic                                  walk_stall_o,
-  output logic                                  walk_last_o,
-  output logic                                  walk_retire_o,
-  output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o,
+  `TRIRAST_WALK_OBSERVATION,
   output logic [2:0]                            setup_state_o,    // StIdle, StBox, StEdge, StHold (0, 1, 2, 4)
   output logic                                  handoff_o,        // the walk stage loads
   output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,       // its box: Xmax, Ymax
   output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o        //   (valid with handoff_o)
 );
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int TagBits = trirast_pkg::TagBits;
-  localparam int BoxBits = trirast_pkg::BoxBits;
-  localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
+  `TRIRAST_PKG_NAMES
   localparam int PB = BoxBits + 1;
   localparam int EntryBits = TagBits + PixBits + PixBits + PixBits + 1;
   localparam int UnitSize = (TileSize > 0) ? TileSize : StampSize;
 
   logic hand_valid, hand_ready;
-  logic [TagBits-1:0] hand_tag;
-  logic [PixBits-1:0] hand_x0, hand_y0;
-  logic [BoxBits-1:0] hand_xmax, hand_ymax;
+  `TRIRAST_HANDOFF_BOX_SIGNALS(hand_)
   logic [3*CoefBits-1:0] hand_a, hand_b;
   logic [3*EdgeBits-1:0] hand_e0, hand_eend;
   logic [2:0] setup_state, walk_state;
+  logic unused_obs;  // walk_state is observed in traces only
+  assign unused_obs = ^walk_state;
 
   trirast_halfspace_setup_stage #(.UnitSize (UnitSize)) u_setup (
-    .clk_i            (clk_i),
-    .rst_ni           (rst_ni),
-    .vp_xmax_i        (cfg_vp_xmax_i),
-    .vp_ymax_i        (cfg_vp_ymax_i),
-    .tri_valid_i      (tri_valid_i),
-    .tri_ready_o      (tri_ready_o),
-    .tri_tag_i        (tri_tag_i),
-    .tri_vx_i         (tri_vx_i),
-    .tri_vy_i         (tri_vy_i),
-    .tri_a_i          (tri_a_i),
-    .tri_b_i          (tri_b_i),
-    .tri_c_i          (tri_c_i),
-    .tri_bias_i       (tri_bias_i),
-    .box_retire_o     (box_retire_o),
-    .box_retire_tag_o (box_retire_tag_o),
-    .hand_valid_o     (hand_valid),
-    .hand_ready_i     (hand_ready),
-    .hand_tag_o       (hand_tag),
-    .hand_x0_o        (hand_x0),
-    .hand_y0_o        (hand_y0),
-    .hand_xmax_o      (hand_xmax),
-    .hand_ymax_o      (hand_ymax),
+    `TRIRAST_CONNECT_SETUP_STAGE,
     .hand_a_o         (hand_a),
     .hand_b_o         (hand_b),
     .hand_e0_o        (hand_e0),
@@ -116,11 +71,7 @@ module trirast_halfspace_top #(
     .rst_ni        (rst_ni),
     .hand_valid_i  (hand_valid),
     .hand_ready_o  (hand_ready),
-    .hand_tag_i    (hand_tag),
-    .hand_x0_i     (hand_x0),
-    .hand_y0_i     (hand_y0),
-    .hand_xmax_i   (hand_xmax),
-    .hand_ymax_i   (hand_ymax),
+    `TRIRAST_CONNECT_HANDOFF_BOX(_i),
     .hand_a_i      (hand_a),
     .hand_b_i      (hand_b),
     .hand_e0_i     (hand_e0),
@@ -167,21 +118,11 @@ module trirast_halfspace_top #(
     .push_data_o   (push_data),
     .stall_o       (walk_stall_o)
   );
-  assign walk_tag_o = tag;
-  assign setup_state_o = setup_state;
-  assign handoff_o = hand_valid && hand_ready;
-  assign box_xmax_o = hand_xmax;
-  assign box_ymax_o = hand_ymax;
-
-  // Observed in traces only.
-  logic unused_obs;
-  assign unused_obs = ^walk_state;
+  assign {walk_tag_o, setup_state_o} = {tag, setup_state};
+  `TRIRAST_ASSIGN_HANDOFF_OBSERVATION(hand_xmax, hand_ymax)
 
   trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
-    .clk_i (clk_i), .rst_ni (rst_ni),
-    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
-    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
-    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
+    `TRIRAST_CONNECT_SPAN_PORT);
 
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i != '0 && 32'(cfg_fifo_depth_i) <= FifoDepth,
           clk_i, !rst_ni)

@@ -1,7 +1,7 @@
 // The improved-Bresenham unit (top: trirast_improved_top), in dependency order: the package first.
 // One path per line, relative to this list's folder (Verilator's -F rule); read by rtl/CMakeLists.txt (Verilator, lint, Yosys),
 // the Icarus testbench, the libFuzzer build and scripts/synth.sh. Include dir: rtl/common/
-// (trirast_assert.svh).
+// (trirast_assert.svh, trirast_ports.svh).
 ../common/trirast_pkg.sv
 trirast_improved_adder_divider.sv
 trirast_improved_edge_lane.sv

@@ -7,6 +7,8 @@
 // Saturation (n >= d * 2^m) is read off the final remainder: a saturated division sets every
 // quotient bit and leaves r = n - (2^m - 1)*d >= d, an unsaturated one leaves r < d; this is the
 // model's compare n >> m >= d without a second shifter.
+`include "trirast_ports.svh"
+
 module trirast_improved_adder_divider (
   input  logic                               clk_i,
   input  logic                               rst_ni,
@@ -20,10 +22,7 @@ module trirast_improved_adder_divider (
   output logic [trirast_pkg::RemBits-1:0]    rem_o,      // r = n - q*d (unsaturated: r < d)
   output logic                               sat_o       // n >= d * 2^m, at last_o
 );
-  localparam int NumerBits = trirast_pkg::NumerBits;
-  localparam int StepBits = trirast_pkg::StepBits;
-  localparam int QuotBits = trirast_pkg::QuotBits;
-  localparam int RemBits = trirast_pkg::RemBits;
+  `TRIRAST_PKG_NAMES
   // The divisor shifted to the quotient's MSB, d << (Q - 1), and the width both fit in.
   localparam int ShiftBits = StepBits + QuotBits - 1;
   localparam int WideBits = (NumerBits > ShiftBits ? NumerBits : ShiftBits) + 1;
@@ -77,22 +76,11 @@ module trirast_improved_adder_divider (
   assign rem_o  = rem_d[RemBits-1:0];
   assign sat_o  = WideBits'(rem_d) >= WideBits'(shift_in);
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      busy_q <= 1'b0;
-      iter_q <= '0;
-    end else begin
-      busy_q <= busy_d;
-      iter_q <= iter_d;
-    end
-  end
+  `TRIRAST_FLOP_AR({busy_q, iter_q}, {busy_d, iter_d}, '0)
 
   // Datapath registers: no reset (written by the first iteration before they are read).
   always_ff @(posedge clk_i) begin
-    rem_q   <= rem_d;
-    shift_q <= shift_d;
-    quot_q  <= quot_d;
-    bits_q  <= bits_d;
+    {rem_q, shift_q, quot_q, bits_q} <= {rem_d, shift_d, quot_d, bits_d};
   end
 
 endmodule

@@ -5,6 +5,8 @@
 // The next operation is chosen combinationally, so there is no cycle between operations:
 // the lane works for L_k = boundary_steps_k + Q * divisions_k cycles.
 // Its result registers are what the walk stage loads at the hand-off.
+`include "trirast_ports.svh"
+
 module trirast_improved_edge_lane (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -29,28 +31,10 @@ module trirast_improved_edge_lane (
   output logic                                 div_o,         // ... and it is a divider iteration
   // ---- results: the walker's start registers (docs/unit.md, section 4) ----
   output logic                                 horiz_o,
-  output logic                                 mirror_o,
-  output logic                                 dir_down_o,
-  output logic [trirast_pkg::StepBits-1:0]     d_o,           // D
-  output logic [trirast_pkg::QuotBits-1:0]     qs_o,          // slope quotient q_s
-  output logic [trirast_pkg::RemBits-1:0]      rs_o,          // slope remainder r_s
-  output logic                                 ssat_o,        // slope saturated
-  output logic                                 enters_o,      // enters the box at a row <= Ymax
-  output logic [trirast_pkg::RowBits-1:0]      j_entry_o,     // that row
-  output logic [1:0]                           entry_state_o, // row state at j_entry
-  output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o, // X' at j_entry (when bound)
+  `TRIRAST_IMPROVED_EDGE_RESULT(output, _o),
   output logic [trirast_pkg::RemBits-1:0]      entry_e_o      // e at j_entry (when bound)
 );
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
-  localparam int StepBits = trirast_pkg::StepBits;
-  localparam int NumerBits = trirast_pkg::NumerBits;
-  localparam int QuotBits = trirast_pkg::QuotBits;
-  localparam int RemBits = trirast_pkg::RemBits;
-  localparam int RowBits = trirast_pkg::RowBits;
-  localparam int WalkerXBits = trirast_pkg::WalkerXBits;
-  localparam logic [1:0] RowOut = trirast_pkg::RowOut;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
-  localparam logic [1:0] RowClear = trirast_pkg::RowClear;
+  `TRIRAST_PKG_NAMES
   localparam logic [RowBits-1:0] NeverRow = '1;  // "never enters" (> any Ymax)
 
   // The lane's operations, in the order it runs them.
@@ -143,20 +127,9 @@ module trirast_improved_edge_lane (
 
   // Next state: the results of this cycle's work.
   always_comb begin
-    phase_d  = phase_q;
-    horiz_d  = horiz_q;
-    mirror_d = mirror_q;
-    dir_d    = dir_q;
-    d_d      = d_q;
-    s_d      = s_q;
-    v_d     = v_q;
-    j_d     = j_q;
-    qs_d    = qs_q;
-    rs_d    = rs_q;
-    ssat_d  = ssat_q;
-    est_d   = est_q;
-    ex_d    = ex_q;
-    ee_d    = ee_q;
+    {phase_d, horiz_d, mirror_d, dir_d, d_d, s_d, v_d, j_d, qs_d, rs_d, ssat_d, est_d, ex_d, ee_d} =
+        {phase_q, horiz_q, mirror_q, dir_q, d_q, s_q, v_q, j_q, qs_q, rs_q, ssat_q, est_q, ex_q,
+         ee_q};
 
     unique case (cur)
       PhSlope: begin
@@ -243,38 +216,16 @@ module trirast_improved_edge_lane (
   assign busy_o      = cur != PhDone;
   assign div_o       = div_en;
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      phase_q <= PhDone;
-    end else begin
-      phase_q <= phase_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(phase_q, phase_d, PhDone)
 
   // Datapath registers: no reset (loaded before use).
   always_ff @(posedge clk_i) begin
-    horiz_q  <= horiz_d;
-    mirror_q <= mirror_d;
-    dir_q    <= dir_d;
-    d_q      <= d_d;
-    s_q      <= s_d;
-    v_q    <= v_d;
-    j_q    <= j_d;
-    qs_q   <= qs_d;
-    rs_q   <= rs_d;
-    ssat_q <= ssat_d;
-    est_q  <= est_d;
-    ex_q   <= ex_d;
-    ee_q   <= ee_d;
+    {horiz_q, mirror_q, dir_q, d_q, s_q, v_q, j_q, qs_q, rs_q, ssat_q, est_q, ex_q, ee_q} <=
+        {horiz_d, mirror_d, dir_d, d_d, s_d, v_d, j_d, qs_d, rs_d, ssat_d, est_d, ex_d, ee_d};
   end
 
-  assign horiz_o    = horiz_q;
-  assign mirror_o   = mirror_q;
-  assign dir_down_o = dir_q;
-  assign d_o        = d_q;
-  assign qs_o       = qs_q;
-  assign rs_o       = rs_q;
-  assign ssat_o     = ssat_q;
+  assign {horiz_o, mirror_o, dir_down_o, d_o, qs_o, rs_o, ssat_o} =
+      {horiz_q, mirror_q, dir_q, d_q, qs_q, rs_q, ssat_q};
   assign enters_o   = entered_now && in_box_now;
   assign j_entry_o  = j_q;
   // A horizontal edge has no bound: past its entry it is clear (dir +) or out (dir -).

@@ -1,6 +1,8 @@
 // Stage 2, edge_normalizer (x3, combinational; docs/unit.md, section 2): turns a box-relative edge
 // into the one form f(i', j) = T - i'*D + j*b >= 0 with D > 0 by mirroring x, and splits the
 // signs off into flags, so the divider only sees non-negative numerators and positive divisors.
+`include "trirast_ports.svh"
+
 module trirast_improved_edge_normalizer (
   input  logic signed [trirast_pkg::CoefBits-1:0]  a_i,       // A (a = A*u)
   input  logic signed [trirast_pkg::CoefBits-1:0]  b_i,       // B (b = B*u)
@@ -14,9 +16,8 @@ module trirast_improved_edge_normalizer (
   output logic [trirast_pkg::StepBits-1:0]         d_o,       // D = |a|
   output logic [trirast_pkg::StepBits-1:0]         s_o        // s = |b|
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int StepBits = trirast_pkg::StepBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
 
   // |A| < 2^p, so |A|*u fits p + F bits.
   logic [CoefBits-1:0] abs_a, abs_b;

@@ -6,6 +6,7 @@
 //   StLanes: the lanes run (L = max L_k cycles).
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_improved_setup_stage (
   input  logic                                  clk_i,
@@ -16,49 +17,22 @@ module trirast_improved_setup_stage (
   input  logic                                  divide_i,     // boundary mode divide
   input  logic                                  adaptive_i,   // divider adaptive (else fixed)
   // ---- triangle port ----
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,
-  input  logic [2:0]                            tri_bias_i,
+  `TRIRAST_TRIANGLE_PORT,
   // ---- empty-box retirement (StBox) ----
   output logic                                  box_retire_o,
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   // ---- hand-off to the walk stage (valid in StHold) ----
   output logic                                  hand_valid_o,
   input  logic                                  hand_ready_i,  // the walk stage is idle
-  output logic [trirast_pkg::TagBits-1:0]       hand_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       hand_x0_o,
-  output logic [trirast_pkg::PixBits-1:0]       hand_y0_o,
-  output logic [trirast_pkg::BoxBits-1:0]       hand_xmax_o,
-  output logic [trirast_pkg::BoxBits-1:0]       hand_ymax_o,
-  output logic [2:0]                            hand_mirror_o,
-  output logic [2:0]                            hand_dir_down_o,
-  output logic [3*trirast_pkg::StepBits-1:0]    hand_d_o,
-  output logic [3*trirast_pkg::QuotBits-1:0]    hand_qs_o,
-  output logic [3*trirast_pkg::RemBits-1:0]     hand_rs_o,
-  output logic [2:0]                            hand_ssat_o,
-  output logic [2:0]                            hand_enters_o,
-  output logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_o,
-  output logic [5:0]                            hand_entry_state_o,
-  output logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_o,
+  `TRIRAST_HANDOFF_BOX(output, _o),
+  `TRIRAST_IMPROVED_HANDOFF_EDGES(output, _o),
   output logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_o,
   // ---- observation ----
   output logic [2:0]                            state_o,
   output logic [2:0]                            lane_busy_o,
   output logic [2:0]                            lane_div_o    // lane k's divider iterates
 );
-  localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = trirast_pkg::EdgeBits;
-  localparam int StepBits = trirast_pkg::StepBits;
-  localparam int QuotBits = trirast_pkg::QuotBits;
-  localparam int RemBits = trirast_pkg::RemBits;
-  localparam int RowBits = trirast_pkg::RowBits;
-  localparam int XBits = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
 
   typedef enum logic [2:0] {
     StIdle  = 3'd0,
@@ -95,25 +69,7 @@ module trirast_improved_setup_stage (
   logic [3*EdgeBits-1:0] el_all, er_all;
 
   trirast_box_stage u_interface (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .vp_xmax_i (vp_xmax_i),
-    .vp_ymax_i (vp_ymax_i),
-    .accept_i  (accept),
-    .tag_i     (tri_tag_i),
-    .vx_i      (tri_vx_i),
-    .vy_i      (tri_vy_i),
-    .a_i       (tri_a_i),
-    .b_i       (tri_b_i),
-    .c_i       (tri_c_i),
-    .bias_i    (tri_bias_i),
-    .box_i     (box_en),
-    .empty_o   (empty),
-    .tag_o     (hand_tag_o),
-    .x0_o      (hand_x0_o),
-    .y0_o      (hand_y0_o),
-    .xmax_o    (hand_xmax_o),
-    .ymax_o    (hand_ymax_o),
+    `TRIRAST_CONNECT_BOX_STAGE(accept, box_en, empty),
     .a_o       (a_all),
     .b_o       (b_all),
     .el_o      (el_all),
@@ -169,7 +125,7 @@ module trirast_improved_setup_stage (
       .enters_o      (hand_enters_o[k]),
       .j_entry_o     (hand_j_entry_o[k*RowBits +: RowBits]),
       .entry_state_o (hand_entry_state_o[2*k +: 2]),
-      .entry_x_o     (hand_entry_x_o[k*XBits +: XBits]),
+      .entry_x_o     (hand_entry_x_o[k*WalkerXBits +: WalkerXBits]),
       .entry_e_o     (hand_entry_e_o[k*RemBits +: RemBits])
     );
   end
@@ -199,13 +155,7 @@ module trirast_improved_setup_stage (
     endcase
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      state_q <= StIdle;
-    end else begin
-      state_q <= state_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, StIdle)
 
   assign state_o = state_q;
 

@@ -1,6 +1,8 @@
 // Stage 5, span_generator (docs/unit.md, section 5), for one row: combines the three walkers'
 // states into at most one span. Out if any edge is out; else begin = max(0, mirrored bounds),
 // end = min(Xmax + 1, non-mirrored bounds); a span when begin < end. Box-relative.
+`include "trirast_ports.svh"
+
 module trirast_improved_span_generator (
   input  logic [5:0]                                 state_i,   // edge k: [2k +: 2]
   input  logic [3*trirast_pkg::WalkerXBits-1:0]      x_i,       // edge k: X' (when bound)
@@ -10,31 +12,28 @@ module trirast_improved_span_generator (
   output logic [trirast_pkg::BoxBits:0]              begin_o,   // first covered i
   output logic [trirast_pkg::BoxBits:0]              end_o      // one past the last covered i
 );
-  localparam int BoxBits = trirast_pkg::BoxBits;
-  localparam int XBits = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
   localparam int Box1Bits = BoxBits + 1;
-  localparam logic [1:0] RowOut = trirast_pkg::RowOut;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
 
   // The whole row as a function (its temporaries are local: see docs/rtl.md, Icarus).
   function automatic logic [2*Box1Bits:0] gen(input logic [5:0] st,
-                                              input logic [3*XBits-1:0] xs,
+                                              input logic [3*WalkerXBits-1:0] xs,
                                               input logic [2:0] mirror,
                                               input logic [BoxBits-1:0] xmax);
     logic out;
     logic [Box1Bits-1:0] b, e;
-    logic signed [XBits-1:0] x;
+    logic signed [WalkerXBits-1:0] x;
     // The restored bound: Xmax - X' (mirrored) or X' + 1. Only its low BoxBits + 1 bits are
     // used: a bound edge has 0 <= X' <= Xmax, so the bound lies in [0, Xmax + 1].
     /* verilator lint_off UNUSEDSIGNAL */
-    logic signed [XBits-1:0] bound;
+    logic signed [WalkerXBits-1:0] bound;
     /* verilator lint_on UNUSEDSIGNAL */
     out = 1'b0;
     b   = '0;
     e   = Box1Bits'(xmax) + 1'b1;
     for (int k = 0; k < 3; k++) begin
-      x = xs[k*XBits +: XBits];
-      bound = mirror[k] ? $signed(XBits'(xmax)) - x : x + 1'b1;
+      x = xs[k*WalkerXBits +: WalkerXBits];
+      bound = mirror[k] ? $signed(WalkerXBits'(xmax)) - x : x + 1'b1;
       if (st[2*k +: 2] == RowOut) out = 1'b1;
       if (st[2*k +: 2] == RowBound) begin
         if (mirror[k]) begin

@@ -6,6 +6,8 @@
 // are placed together). The registers around them are trirast_synth_shell's, so the timing paths
 // are the stages' own. NumEndpoints and FifoDepth are the synthesized defaults and the runtime n
 // and DEPTH are tied to them, as in the whole unit's wrapper (scripts/synth.sh).
+`include "trirast_ports.svh"
+
 module trirast_improved_synth_walk #(
   parameter int WithFifo = 0
 ) (
@@ -16,14 +18,8 @@ module trirast_improved_synth_walk #(
   localparam int N = trirast_pkg::DefaultEndpoints;
   localparam int Depth = trirast_pkg::DefaultFifoDepth;
   localparam int CountBits = $clog2(Depth + 1);
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int TB = trirast_pkg::TagBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int EntryBits = TB + 3 * PB + 1;
   // The hand-off bundle: {tag, x0, y0, xmax, ymax, mirror, dir_down, d, qs, rs, ssat, enters,
   // j_entry, entry_state, entry_x, entry_e}.

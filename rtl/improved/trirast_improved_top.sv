@@ -4,47 +4,27 @@
 // Every boundary is a valid/ready handshake: triangle port, hand-off, FIFO pushes (admitted by
 // the occupancy test), span port. The cfg_* inputs are static during a run (docs/rtl.md).
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_improved_top #(
   parameter int NumEndpoints = trirast_pkg::DefaultEndpoints,  // rows per cycle (hardware)
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
 ) (
-  input  logic                                  clk_i,
-  input  logic                                  rst_ni,
-  // ---- configuration (static) ----
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,    // viewport width - 1
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,    // viewport height - 1
+  // ---- clock, reset and configuration (static) ----
+  `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic                                  cfg_divide_i,     // --boundary divide
   input  logic                                  cfg_adaptive_i,   // --divider adaptive
   input  logic [2:0]                            cfg_endpoints_i,  // --endpoints (<= NumEndpoints)
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   // ---- triangle port: one set-up triangle per handshake ----
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,        // returned with its spans
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,         // vertex k: [k*p +: p] signed
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,          // edge k: A signed
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,          // edge k: B signed
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,          // edge k: C signed
-  input  logic [2:0]                            tri_bias_i,       // edge k: 1 = bias -1
+  `TRIRAST_TRIANGLE_PORT,
   // ---- span port ----
-  output logic                                  span_valid_o,
-  input  logic                                  span_ready_i,
-  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
-  output logic [trirast_pkg::PixBits:0]         span_x_end_o,     // exclusive
+  `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
   output logic                                  box_retire_o,     // empty box retires (StBox)
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
-  output logic                                  walk_busy_o,      // walk stage in StWalk
-  output logic                                  walk_stall_o,     // a stall cycle
-  output logic                                  walk_last_o,      // its last group goes
-  output logic                                  walk_retire_o,    // ... and it has no span
-  output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o,     // occupancy at cycle start
+  `TRIRAST_WALK_OBSERVATION,
   // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
   output logic [2:0]                            setup_state_o,    // StIdle..StHold (0..4)
   output logic [2:0]                            lane_busy_o,      // lane k works this cycle
@@ -53,70 +33,28 @@ module trirast_improved_top #(
   output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,       // its box: Xmax, Ymax
   output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o        //   (valid with handoff_o)
 );
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int TagBits = trirast_pkg::TagBits;
-  localparam int StepBits = trirast_pkg::StepBits;
-  localparam int QuotBits = trirast_pkg::QuotBits;
-  localparam int RemBits = trirast_pkg::RemBits;
-  localparam int RowBits = trirast_pkg::RowBits;
-  localparam int XBits = trirast_pkg::WalkerXBits;
-  localparam int BoxBits = trirast_pkg::BoxBits;
+  `TRIRAST_PKG_NAMES
   localparam int EntryBits = TagBits + PixBits + PixBits + PixBits + 1;
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
-  logic [TagBits-1:0] hand_tag;
-  logic [PixBits-1:0] hand_x0, hand_y0;
-  logic [BoxBits-1:0] hand_xmax, hand_ymax;
-  logic [2:0] hand_mirror, hand_dir_down, hand_ssat, hand_enters;
-  logic [3*StepBits-1:0] hand_d;
-  logic [3*QuotBits-1:0] hand_qs;
-  logic [3*RemBits-1:0] hand_rs, hand_entry_e;
-  logic [3*RowBits-1:0] hand_j_entry;
-  logic [5:0] hand_entry_state;
-  logic [3*XBits-1:0] hand_entry_x;
+  `TRIRAST_HANDOFF_BOX_SIGNALS(hand_)
+  `TRIRAST_IMPROVED_HANDOFF_EDGES_SIGNALS(hand_)
+  logic [3*RemBits-1:0] hand_entry_e;
   // Observation signals (the trace; the harness counts module busy cycles from them, hence
   // public: Verilator keeps them even in a build without tracing).
   logic [2:0] setup_state /* verilator public_flat_rd */;
   logic [2:0] lane_busy /* verilator public_flat_rd */;
   logic [2:0] lane_div;
   logic [RowBits-1:0] walk_row;
+  logic unused_obs;  // walk_row is observed in traces only
+  assign unused_obs = ^walk_row;
 
   trirast_improved_setup_stage u_setup (
-    .clk_i              (clk_i),
-    .rst_ni             (rst_ni),
-    .vp_xmax_i          (cfg_vp_xmax_i),
-    .vp_ymax_i          (cfg_vp_ymax_i),
+    `TRIRAST_CONNECT_SETUP_STAGE,
     .divide_i           (cfg_divide_i),
     .adaptive_i         (cfg_adaptive_i),
-    .tri_valid_i        (tri_valid_i),
-    .tri_ready_o        (tri_ready_o),
-    .tri_tag_i          (tri_tag_i),
-    .tri_vx_i           (tri_vx_i),
-    .tri_vy_i           (tri_vy_i),
-    .tri_a_i            (tri_a_i),
-    .tri_b_i            (tri_b_i),
-    .tri_c_i            (tri_c_i),
-    .tri_bias_i         (tri_bias_i),
-    .box_retire_o       (box_retire_o),
-    .box_retire_tag_o   (box_retire_tag_o),
-    .hand_valid_o       (hand_valid),
-    .hand_ready_i       (hand_ready),
-    .hand_tag_o         (hand_tag),
-    .hand_x0_o          (hand_x0),
-    .hand_y0_o          (hand_y0),
-    .hand_xmax_o        (hand_xmax),
-    .hand_ymax_o        (hand_ymax),
-    .hand_mirror_o      (hand_mirror),
-    .hand_dir_down_o    (hand_dir_down),
-    .hand_d_o           (hand_d),
-    .hand_qs_o          (hand_qs),
-    .hand_rs_o          (hand_rs),
-    .hand_ssat_o        (hand_ssat),
-    .hand_enters_o      (hand_enters),
-    .hand_j_entry_o     (hand_j_entry),
-    .hand_entry_state_o (hand_entry_state),
-    .hand_entry_x_o     (hand_entry_x),
+    `TRIRAST_CONNECT_IMPROVED_HANDOFF_EDGES(_o),
     .hand_entry_e_o     (hand_entry_e),
     .state_o            (setup_state),
     .lane_busy_o        (lane_busy),
@@ -137,48 +75,18 @@ module trirast_improved_top #(
     .fifo_depth_i       (cfg_fifo_depth_i),
     .hand_valid_i       (hand_valid),
     .hand_ready_o       (hand_ready),
-    .hand_tag_i         (hand_tag),
-    .hand_x0_i          (hand_x0),
-    .hand_y0_i          (hand_y0),
-    .hand_xmax_i        (hand_xmax),
-    .hand_ymax_i        (hand_ymax),
-    .hand_mirror_i      (hand_mirror),
-    .hand_dir_down_i    (hand_dir_down),
-    .hand_d_i           (hand_d),
-    .hand_qs_i          (hand_qs),
-    .hand_rs_i          (hand_rs),
-    .hand_ssat_i        (hand_ssat),
-    .hand_enters_i      (hand_enters),
-    .hand_j_entry_i     (hand_j_entry),
-    .hand_entry_state_i (hand_entry_state),
-    .hand_entry_x_i     (hand_entry_x),
+    `TRIRAST_CONNECT_HANDOFF_BOX(_i),
+    `TRIRAST_CONNECT_IMPROVED_HANDOFF_EDGES(_i),
     .hand_entry_e_i     (hand_entry_e),
-    .fifo_count_i       (fifo_count_o),
-    .push_o             (push),
-    .push_data_o        (push_data),
-    .busy_o             (walk_busy_o),
-    .stall_o            (walk_stall_o),
-    .last_o             (walk_last_o),
-    .retire_o           (walk_retire_o),
-    .tag_o              (walk_tag_o),
-    .row_o              (walk_row)
+    `TRIRAST_CONNECT_WALK_STAGE_OUTPUTS
   );
 
-  // Observation outputs; the walk row is observed in traces only.
-  assign setup_state_o = setup_state;
-  assign lane_busy_o   = lane_busy;
-  assign lane_div_o    = lane_div;
-  assign handoff_o     = hand_valid && hand_ready;
-  assign box_xmax_o    = hand_xmax;
-  assign box_ymax_o    = hand_ymax;
-  logic unused_obs;
-  assign unused_obs = ^walk_row;
+  // Observation outputs.
+  assign {setup_state_o, lane_busy_o, lane_div_o} = {setup_state, lane_busy, lane_div};
+  `TRIRAST_ASSIGN_HANDOFF_OBSERVATION(hand_xmax, hand_ymax)
 
   trirast_span_port #(.NumEndpoints (NumEndpoints), .FifoDepth (FifoDepth)) u_span_port (
-    .clk_i (clk_i), .rst_ni (rst_ni),
-    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
-    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
-    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
+    `TRIRAST_CONNECT_SPAN_PORT);
 
   // Runtime configuration within the hardware maximums: 1 <= n <= NumEndpoints and
   // n <= DEPTH <= FifoDepth (a larger n or DEPTH would overflow the walk stage or the FIFO).

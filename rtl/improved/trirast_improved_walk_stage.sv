@@ -2,6 +2,8 @@
 // generators, FSM StWalkIdle -> StWalk. Loaded at the hand-off in cycle h, it walks from h + 1:
 // each StWalk cycle processes the next group of n rows (n = cfg_endpoints_i <= NumEndpoints)
 // when the FIFO held at most DEPTH - n spans at the start of the cycle, else it stalls.
+`include "trirast_ports.svh"
+
 module trirast_improved_walk_stage #(
   parameter int NumEndpoints = 1,
   parameter int CountBits = 4,      // bits of the FIFO occupancy and of the runtime depth
@@ -15,21 +17,8 @@ module trirast_improved_walk_stage #(
   // ---- hand-off from the setup stage ----
   input  logic                                  hand_valid_i,
   output logic                                  hand_ready_o,  // StWalkIdle
-  input  logic [trirast_pkg::TagBits-1:0]       hand_tag_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_x0_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_y0_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_xmax_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_ymax_i,
-  input  logic [2:0]                            hand_mirror_i,
-  input  logic [2:0]                            hand_dir_down_i,
-  input  logic [3*trirast_pkg::StepBits-1:0]    hand_d_i,
-  input  logic [3*trirast_pkg::QuotBits-1:0]    hand_qs_i,
-  input  logic [3*trirast_pkg::RemBits-1:0]     hand_rs_i,
-  input  logic [2:0]                            hand_ssat_i,
-  input  logic [2:0]                            hand_enters_i,
-  input  logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_i,
-  input  logic [5:0]                            hand_entry_state_i,
-  input  logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_i,
+  `TRIRAST_HANDOFF_BOX(input, _i),
+  `TRIRAST_IMPROVED_HANDOFF_EDGES(input, _i),
   input  logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_i,
   // ---- pushes into the span FIFO ----
   input  logic [CountBits-1:0]                  fifo_count_i,  // occupancy at the cycle's start
@@ -43,14 +32,7 @@ module trirast_improved_walk_stage #(
   output logic [trirast_pkg::TagBits-1:0]       tag_o,         // the walked triangle
   output logic [trirast_pkg::RowBits-1:0]       row_o          // first row of the group
 );
-  localparam int StepBits = trirast_pkg::StepBits;
-  localparam int QuotBits = trirast_pkg::QuotBits;
-  localparam int RemBits = trirast_pkg::RemBits;
-  localparam int RowBits = trirast_pkg::RowBits;
-  localparam int XBits = trirast_pkg::WalkerXBits;
-  localparam int BoxBits = trirast_pkg::BoxBits;
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int TagBits = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
   localparam int CountExtBits = CountBits + 1;
   localparam int Pix1Bits = PixBits + 1;
 
@@ -70,7 +52,7 @@ module trirast_improved_walk_stage #(
 
   logic [2:0] mirror;
   logic [2*NumEndpoints-1:0] wst [3];
-  logic [NumEndpoints*XBits-1:0] wx [3];
+  logic [NumEndpoints*WalkerXBits-1:0] wx [3];
 
   for (genvar k = 0; k < 3; k++) begin : g_walker
     trirast_improved_edge_walker #(
@@ -88,7 +70,7 @@ module trirast_improved_walk_stage #(
       .enters_i      (hand_enters_i[k]),
       .j_entry_i     (hand_j_entry_i[k*RowBits +: RowBits]),
       .entry_state_i (hand_entry_state_i[2*k +: 2]),
-      .entry_x_i     (hand_entry_x_i[k*XBits +: XBits]),
+      .entry_x_i     (hand_entry_x_i[k*WalkerXBits +: WalkerXBits]),
       .entry_e_i     (hand_entry_e_i[k*RemBits +: RemBits]),
       .xmax_i        (xmax_q),
       .row_i         (row_q),
@@ -108,7 +90,7 @@ module trirast_improved_walk_stage #(
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
     trirast_improved_span_generator u_span_generator (
       .state_i  ({wst[2][2*r +: 2], wst[1][2*r +: 2], wst[0][2*r +: 2]}),
-      .x_i      ({wx[2][r*XBits +: XBits], wx[1][r*XBits +: XBits], wx[0][r*XBits +: XBits]}),
+      .x_i      ({wx[2][r*WalkerXBits +: WalkerXBits], wx[1][r*WalkerXBits +: WalkerXBits], wx[0][r*WalkerXBits +: WalkerXBits]}),
       .mirror_i (mirror),
       .xmax_i   (xmax_q),
       .valid_o  (gen_valid[r]),
@@ -146,22 +128,13 @@ module trirast_improved_walk_stage #(
   always_comb begin
     retire_o = last_o && !any_q && (push_o == '0);
     state_d = state_q;
-    tag_d   = tag_q;
-    x0_d    = x0_q;
-    y0_d    = y0_q;
-    xmax_d  = xmax_q;
-    ymax_d  = ymax_q;
-    row_d   = row_q;
-    any_d   = any_q;
+    {tag_d, x0_d, y0_d, xmax_d, ymax_d, row_d, any_d} =
+        {tag_q, x0_q, y0_q, xmax_q, ymax_q, row_q, any_q};
     unique case (state_q)
       StWalkIdle: begin
         if (load) begin
           state_d = StWalk;
-          tag_d   = hand_tag_i;
-          x0_d    = hand_x0_i;
-          y0_d    = hand_y0_i;
-          xmax_d  = hand_xmax_i;
-          ymax_d  = hand_ymax_i;
+          `TRIRAST_LOAD_HANDOFF_BOX
           row_d   = '0;
           any_d   = 1'b0;
         end
@@ -177,23 +150,12 @@ module trirast_improved_walk_stage #(
     endcase
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      state_q <= StWalkIdle;
-    end else begin
-      state_q <= state_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, StWalkIdle)
 
   // Datapath registers: no reset (loaded at the hand-off).
   always_ff @(posedge clk_i) begin
-    tag_q  <= tag_d;
-    x0_q   <= x0_d;
-    y0_q   <= y0_d;
-    xmax_q <= xmax_d;
-    ymax_q <= ymax_d;
-    row_q  <= row_d;
-    any_q  <= any_d;
+    {tag_q, x0_q, y0_q, xmax_q, ymax_q, row_q, any_q} <=
+        {tag_d, x0_d, y0_d, xmax_d, ymax_d, row_d, any_d};
   end
 
   assign hand_ready_o = state_q == StWalkIdle;

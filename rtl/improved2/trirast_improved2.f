@@ -1,7 +1,7 @@
 // The improved unit, second generation (top: trirast_improved2_top), in dependency order: the
 // package first. One path per line, relative to this list's folder (Verilator's -F rule); read by rtl/CMakeLists.txt (Verilator, lint,
 // Yosys, Icarus), the Verilated builds (cmake/trirast_rtl_builds.cmake) and scripts/synth.sh.
-// Include dir: rtl/common/ (trirast_assert.svh).
+// Include dir: rtl/common/ (trirast_assert.svh, trirast_ports.svh).
 ../common/trirast_pkg.sv
 trirast_improved2_corner_products.sv
 trirast_improved2_corner_serial.sv

@@ -4,6 +4,8 @@
 // form for devices with multipliers (xc7 maps each 25 x 26 product onto DSP48E1 slices).
 //   E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias   per edge (no C: E vanishes at the edge's vertex),
 // or, for an edge whose x1sel_i bit is set, the same at the column x1_i (E_R for x1 = x0 + Xmax).
+`include "trirast_ports.svh"
+
 module trirast_improved2_corner_products (
   input  logic [3*trirast_pkg::VertexBits-1:0] vx_i,
   input  logic [3*trirast_pkg::VertexBits-1:0] vy_i,
@@ -16,10 +18,8 @@ module trirast_improved2_corner_products (
   input  logic [trirast_pkg::PixBits-1:0]      y0_i,
   output logic [3*trirast_pkg::EdgeBits-1:0]   el_o
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int DW = P + 2;
 
   logic signed [DW-1:0] cx0, cx1, cy;

@@ -35,6 +35,7 @@
 // count is the one registered then; P and M are kept. So a second start reads neither the
 // vertices, x0_i, y0_i, a_i nor b_i.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_improved2_corner_serial #(
   parameter int DigitBits = 4
@@ -62,10 +63,8 @@ module trirast_improved2_corner_serial #(
   output logic [2:0]                           far_o,
   output logic [2:0]                           fneg_o
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int DB = DigitBits;
   localparam int DW = P + 2;                        // cx - vx, signed
   localparam int ND = (DW + DB - 1) / DB;           // digits of an operand
@@ -196,10 +195,7 @@ module trirast_improved2_corner_serial #(
     always_ff @(posedge clk_i) begin
       acc_q <= acc_d;
     end
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) run_q <= 1'b0;
-      else run_q <= run_d;
-    end
+    `TRIRAST_FLOP_AR(run_q, run_d, 1'b0)
     // E = (acc - P) / 2 - bias: acc - P is even (acc's bit 0 is P's), so it is acc's bits above
     // bit 0 minus P's, and - bias the carry-in's complement.
     logic [EB:0] esum;
@@ -234,10 +230,7 @@ module trirast_improved2_corner_serial #(
   always_ff @(posedge clk_i) begin
     if (start_i && !second_i) gy_q <= gy;
   end
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) ptr_q <= '0;
-    else ptr_q <= ptr_d;
-  end
+  `TRIRAST_FLOP_AR(ptr_q, ptr_d, '0)
   assign busy_o = ptr_q != '0;
 
 endmodule

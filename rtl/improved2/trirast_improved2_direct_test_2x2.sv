@@ -11,6 +11,8 @@
 // changes its sign, which is fneg_i), and otherwise |E_L| < 2^(SW+3), so that E_L + x fits SW + 5
 // signed bits. (The unit's corner unit knows that from its accumulator before E_L's carry chain
 // ends.)
+`include "trirast_ports.svh"
+
 module trirast_improved2_direct_test_2x2 #(
   parameter int W  = trirast_pkg::EdgeBits,
   parameter int SW = 0
@@ -30,7 +32,8 @@ module trirast_improved2_direct_test_2x2 #(
   output logic [2*trirast_pkg::PixBits-1:0] xb_o,
   output logic [2*(trirast_pkg::PixBits+1)-1:0] xe_o
 );
-  localparam int PB = trirast_pkg::PixBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   logic [2:0] c00, c10, c01, c11;   // per edge: centre (i, j) passes
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic signed [W-1:0] e, a, b, ab;

@@ -35,6 +35,8 @@
 // load to the first cycle with done_o): a horizontal edge T + 1; otherwise
 // max(m + P + 1, T + 1) + m + P when it enters the box, max(m + P + 1, T + 1) when it does not
 // (a saturated division stops after 2 of its m + P iterations). gen1: T, T + 2m, T + m.
+`include "trirast_ports.svh"
+
 module trirast_improved2_edge_lane #(
   parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
   // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
@@ -62,35 +64,17 @@ module trirast_improved2_edge_lane #(
   output logic                                    step_o,   // ... a traversal row step
   // ---- results (as rtl/improved/trirast_improved_edge_lane.sv) ----
   output logic                                    horiz_o,
-  output logic                                    mirror_o,
-  output logic                                    dir_down_o,
-  output logic [trirast_pkg::StepBits-1:0]        d_o,
-  output logic [trirast_pkg::QuotBits-1:0]        qs_o,
-  output logic [trirast_pkg::RemBits-1:0]         rs_o,
-  output logic                                    ssat_o,
-  output logic                                    enters_o,
-  output logic [trirast_pkg::RowBits-1:0]         j_entry_o,
-  output logic [1:0]                              entry_state_o,
-  output logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_o,  // gen2: q - Xmax (not X')
+  `TRIRAST_IMPROVED_EDGE_RESULT(output, _o),  // entry_x_o: gen2: q - Xmax (not X')
   output logic [trirast_pkg::BoxBits:0]           entry_b_o,  // gen2: the entry row's span bound
                                                               // - 1 (rtl/improved2/trirast_improved2_edge_walker.sv)
   output logic [trirast_pkg::RemBits-1:0]         entry_e_o  // gen2: f, e for dir +, D - 1 - e
                                                              // for dir - (not gen1's e)
 );
-  localparam int F = trirast_pkg::FracBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
-  localparam int BB = trirast_pkg::BoxBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int MB = SB - F;               // significant bits of D and s (|A|, |B| < 2^p)
   localparam int NB = EB - 1;               // numerator bits (a non-negative column value)
   localparam int IB = $clog2(QB + 1);
-  localparam logic [1:0] RowOut = trirast_pkg::RowOut;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
-  localparam logic [1:0] RowClear = trirast_pkg::RowClear;
 
   // Operation states (registered).
   localparam logic [2:0] OpSlopeSet = 3'd0;  // align s for the slope division
@@ -209,12 +193,7 @@ module trirast_improved2_edge_lane #(
     rh_d   = rh_q;
     stk_d  = stk_q;
     sat_d  = first_q ? (Pre ? stk_q || fits : sat_now) : sat_q;
-    qs_d   = qs_q;
-    qe_d   = qe_q;
-    rsh_d  = rsh_q;
-    ssat_d = ssat_q;
-    gt_d   = gt_q;
-    eq_d   = eq_q;
+    {qs_d, qe_d, rsh_d, ssat_d, gt_d, eq_d} = {qs_q, qe_q, rsh_q, ssat_q, gt_q, eq_q};
     last      = (cnt_q == '0) || (!first_q && sat_q);
     set_entry = 1'b0;
     unique case (op_q)
@@ -256,13 +235,7 @@ module trirast_improved2_edge_lane #(
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      op_q <= OpDone;
-    end else begin
-      op_q <= op_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(op_q, op_d, OpDone)
 
   // Datapath registers: no reset (loaded before use).
   always_ff @(posedge clk_i) begin
@@ -281,17 +254,8 @@ module trirast_improved2_edge_lane #(
     end
     if (ld_q) xmn_q <= ~xmax_i;
     ld_q    <= load_i;
-    cnt_q   <= cnt_d;
-    first_q <= first_d;
-    rh_q    <= rh_d;
-    stk_q   <= stk_d;
-    sat_q   <= sat_d;
-    qs_q    <= qs_d;
-    qe_q    <= qe_d;
-    rsh_q   <= rsh_d;
-    ssat_q  <= ssat_d;
-    gt_q    <= gt_d;
-    eq_q    <= eq_d;
+    {cnt_q, first_q, rh_q, stk_q, sat_q, qs_q, qe_q, rsh_q, ssat_q, gt_q, eq_q} <=
+        {cnt_d, first_d, rh_d, stk_d, sat_d, qs_d, qe_d, rsh_d, ssat_d, gt_d, eq_d};
   end
 
   assign busy_o     = op_q != OpDone;

@@ -38,6 +38,7 @@
 // rtl/improved/trirast_improved_edge_walker.sv's chain; the walker presents rows j .. j + N - 1 and advances by the
 // runtime group size adv_rows_i (1..N; N = 1: one row, adv_rows_i unused).
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_improved2_edge_walker #(
   parameter bit CarrySelect = 1'b1,
@@ -46,16 +47,7 @@ module trirast_improved2_edge_walker #(
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
   input  logic                                 load_i,
-  input  logic                                 mirror_i,
-  input  logic                                 dir_down_i,
-  input  logic [trirast_pkg::StepBits-1:0]     d_i,
-  input  logic [trirast_pkg::QuotBits-1:0]     qs_i,
-  input  logic [trirast_pkg::RemBits-1:0]      rs_i,
-  input  logic                                 ssat_i,
-  input  logic                                 enters_i,
-  input  logic [trirast_pkg::RowBits-1:0]      j_entry_i,
-  input  logic [1:0]                           entry_state_i,
-  input  logic signed [trirast_pkg::WalkerXBits-1:0] entry_x_i,   // the leave offset o (below)
+  `TRIRAST_IMPROVED_EDGE_RESULT(input, _i),  // entry_x_i: the leave offset o (below)
   input  logic [trirast_pkg::RemBits-1:0]      entry_e_i,   // f: e (dir +), D - 1 - e (dir -)
   input  logic [trirast_pkg::BoxBits:0]        entry_b_i,   // the entry row's bound - 1
   input  logic                                 adv_i,
@@ -65,15 +57,9 @@ module trirast_improved2_edge_walker #(
   output logic [NumEndpoints*(trirast_pkg::BoxBits+1)-1:0] row_bound_o  // row j + r: the
                                                                          // restored bound - 1
 );
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int F  = trirast_pkg::FracBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int EW = RB - F + 1;   // f >> F, signed (see the header)
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam logic [1:0] RowOut = trirast_pkg::RowOut;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
-  localparam logic [1:0] RowClear = trirast_pkg::RowClear;
 
   logic mirror_q, dir_q, ssat_q, enters_q, ent_q, ent_d;
   logic [WB-1:0] cnt_q, cnt_d;
@@ -210,13 +196,7 @@ module trirast_improved2_edge_walker #(
   assign incb = dir_down_i ? qse + 1'b1 : -qse - 1'b1;
   assign bx_load = entry_b_i;   // the lane's (trirast_improved2_edge_lane's entry_b_o)
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      st_q <= RowOut;
-    end else begin
-      st_q <= st_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(st_q, st_d, RowOut)
   always_ff @(posedge clk_i) begin
     x_q <= x_d;  e_q <= e_d;  bx_q <= bx_d;  cnt_q <= cnt_d;  ent_q <= ent_d;
     if (load_i) begin

@@ -6,6 +6,8 @@
 // and valid = no edge out and every mirrored b < every other b (= begin < end). The outputs are
 // begin - 1 (BoxBits + 1 bits, two's complement: -1 when no mirrored bound) and end - 1: the walk
 // stage adds x0 + 1 with one carry-in, and end needs no incrementer for its default Xmax + 1.
+`include "trirast_ports.svh"
+
 module trirast_improved2_span_generator (
   input  logic [5:0]                          state_i,
   input  logic [3*(trirast_pkg::BoxBits+1)-1:0] bound_i,
@@ -16,8 +18,7 @@ module trirast_improved2_span_generator (
   output logic [trirast_pkg::BoxBits:0]       end_o
 );
   localparam int B1 = trirast_pkg::BoxBits + 1;
-  localparam logic [1:0] RowOut = trirast_pkg::RowOut;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
+  `TRIRAST_PKG_NAMES
 
   // All in one always_comb over packed vectors: the six ordered compares b_i < b_j first (one
   // level), then the selections and the validity from them.

@@ -40,6 +40,7 @@
 // A, B; CRam 1 (CornerForm 1 only), C's register in block RAM but for the vertices and the bias.
 // The defaults are the iCE40 form; scripts/synth.sh builds the xc7 form with CornerForm 0.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_improved2_top #(
   parameter int NumEndpoints = trirast_pkg::DefaultEndpoints,  // rows per cycle (hardware)
@@ -56,27 +57,11 @@ module trirast_improved2_top #(
   parameter int LanePreIter = 0,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
-  input  logic                                  clk_i,
-  input  logic                                  rst_ni,
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,
+  `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   input  logic [2:0]                            cfg_endpoints_i,  // --endpoints (<= NumEndpoints)
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_a_i,
-  input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i,
-  input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i,     // not read (vertex-relative E)
-  input  logic [2:0]                            tri_bias_i,
-  output logic                                  span_valid_o,
-  input  logic                                  span_ready_i,
-  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
-  output logic [trirast_pkg::PixBits:0]         span_x_end_o,
+  `TRIRAST_TRIANGLE_PORT,  // tri_c_i is not read (vertex-relative E)
+  `TRIRAST_SPAN_PORT,
   output logic                                  box_retire_o,      // an empty box retires (B)
   output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
   output logic                                  busy_o,            // a triangle is in the unit
@@ -95,25 +80,10 @@ module trirast_improved2_top #(
   output logic [2:0]                            lane_busy_o,       // lane k works this cycle
   output logic [2:0]                            lane_div_o,        // ... a divider iteration
   output logic [2:0]                            lane_step_o,       // ... a traversal row step
-  output logic                                  walk_busy_o,       // the walk stage holds a job
-  output logic                                  walk_stall_o,      // ... no room for its row
-  output logic                                  walk_last_o,       // its last row goes
-  output logic                                  walk_retire_o,     // ... and it had no span
-  output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o       // occupancy at cycle start
+  `TRIRAST_WALK_OBSERVATION
 );
-  localparam int F  = trirast_pkg::FracBits;
-  localparam int P  = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int TB = trirast_pkg::TagBits;
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
 
   // ---------------------------------------------------------------- B: triangle register, box
   logic b_full_q;
@@ -429,13 +399,8 @@ module trirast_improved2_top #(
     end
   end
 
-  logic [2:0] hand_mirror, hand_dir_down, hand_ssat, hand_enters;
-  logic [3*SB-1:0] hand_d;
-  logic [3*QB-1:0] hand_qs;
-  logic [3*RB-1:0] hand_rs, hand_entry_e;
-  logic [3*WB-1:0] hand_j_entry;
-  logic [5:0] hand_entry_state;
-  logic [3*XB-1:0] hand_entry_x;
+  `TRIRAST_IMPROVED_HANDOFF_EDGES_SIGNALS(hand_)
+  logic [3*RB-1:0] hand_entry_e;
   logic [3*(BB+1)-1:0] hand_entry_b;
   // The three redesigned lanes, side by side on C's corner values; their box: the lanes read
   // Xmax, Ymax from the cycle after the load on, and the job register L holds them (in the load
@@ -510,10 +475,7 @@ module trirast_improved2_top #(
     .hand_tag_i (w_job[JW-1 -: TB]), .hand_x0_i (w_job[2*PB+2*BB-1 -: PB]),
     .hand_y0_i (w_job[PB+2*BB-1 -: PB]), .hand_xmax_i (w_job[2*BB-1 -: BB]),
     .hand_ymax_i (w_job[BB-1:0]),
-    .hand_mirror_i (hand_mirror), .hand_dir_down_i (hand_dir_down),
-    .hand_d_i (hand_d), .hand_qs_i (hand_qs), .hand_rs_i (hand_rs), .hand_ssat_i (hand_ssat),
-    .hand_enters_i (hand_enters), .hand_j_entry_i (hand_j_entry),
-    .hand_entry_state_i (hand_entry_state), .hand_entry_x_i (hand_entry_x),
+    `TRIRAST_CONNECT_IMPROVED_HANDOFF_EDGES(_i),
     .hand_entry_b_i (hand_entry_b),
     .hand_entry_e_i (hand_entry_e),
     .hand_tiny_i (l_tiny_q), .hand_tiny_valid_i (l_tvalid_q),
@@ -532,12 +494,8 @@ module trirast_improved2_top #(
   assign box_tag_o      = b_tag_q;
   assign corner_valid_o = c_full_q;
   assign corner_stall_o = c_full_q && c_ready && !l_free;
-  assign job_valid_o    = l_full_q;
-  assign job_ready_o    = hand_valid;
-  assign job_tag_o      = l_tag_q;
-  assign handoff_o      = hand_valid && hand_ready;
-  assign box_xmax_o     = l_xmax_q;
-  assign box_ymax_o     = l_ymax_q;
+  assign {job_valid_o, job_ready_o, job_tag_o} = {l_full_q, hand_valid, l_tag_q};
+  `TRIRAST_ASSIGN_HANDOFF_OBSERVATION(l_xmax_q, l_ymax_q)
 
   // Protocol assumptions and invariants.
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i >= CountBits'(1) &&

@@ -25,6 +25,8 @@
 // HandHeld 1: the job's tag, x0, y0, Xmax and Ymax (hand_tag_i .. hand_ymax_i) are held outside
 // the stage from the cycle after the load until the next load (trirast_improved2_top's job ring),
 // and read from then on instead of being copied at the load.
+`include "trirast_ports.svh"
+
 module trirast_improved2_walk_stage #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
   parameter bit FifoRam   = 1'b0,
@@ -37,21 +39,8 @@ module trirast_improved2_walk_stage #(
   input  logic                                  rst_ni,
   input  logic                                  hand_valid_i,
   output logic                                  hand_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       hand_tag_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_x0_i,
-  input  logic [trirast_pkg::PixBits-1:0]       hand_y0_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_xmax_i,
-  input  logic [trirast_pkg::BoxBits-1:0]       hand_ymax_i,
-  input  logic [2:0]                            hand_mirror_i,
-  input  logic [2:0]                            hand_dir_down_i,
-  input  logic [3*trirast_pkg::StepBits-1:0]    hand_d_i,
-  input  logic [3*trirast_pkg::QuotBits-1:0]    hand_qs_i,
-  input  logic [3*trirast_pkg::RemBits-1:0]     hand_rs_i,
-  input  logic [2:0]                            hand_ssat_i,
-  input  logic [2:0]                            hand_enters_i,
-  input  logic [3*trirast_pkg::RowBits-1:0]     hand_j_entry_i,
-  input  logic [5:0]                            hand_entry_state_i,
-  input  logic [3*trirast_pkg::WalkerXBits-1:0] hand_entry_x_i,
+  `TRIRAST_HANDOFF_BOX(input, _i),
+  `TRIRAST_IMPROVED_HANDOFF_EDGES(input, _i),
   input  logic [3*(trirast_pkg::BoxBits+1)-1:0] hand_entry_b_i,     // the bounds - 1
   input  logic [3*trirast_pkg::RemBits-1:0]     hand_entry_e_i,
   input  logic                                  hand_tiny_i,        // a tiny job (2x2 test)
@@ -72,14 +61,8 @@ module trirast_improved2_walk_stage #(
   output logic [trirast_pkg::TagBits-1:0]       tag_o,
   output logic [CountBits-1:0]                  fifo_count_o
 );
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int TB = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int EntryBits = TB + 3 * PB + 1;
 
   localparam int NB = NumEndpoints;
@@ -229,15 +212,7 @@ module trirast_improved2_walk_stage #(
     end
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      walk_q <= 1'b0;
-      push_q <= '0;
-    end else begin
-      walk_q <= walk_d;
-      push_q <= push_d;
-    end
-  end
+  `TRIRAST_FLOP_AR({walk_q, push_q}, {walk_d, push_d}, '0)
   always_ff @(posedge clk_i) begin
     row_q  <= row_d;
     if (load) begin

@@ -2,6 +2,8 @@
 // pixel a to pixel b, drawn downward (b.y >= a.y: the vertices are sorted): x step direction,
 // major axis (|dx| >= |dy|: x), the major and minor deltas and the classic initial decision
 // variable D = 2*dmin - dmaj. Used x3 in the setup stage's StLine cycle.
+`include "trirast_ports.svh"
+
 module trirast_trad_line_setup (
   input  logic signed [trirast_pkg::CoordIntBits-1:0]  ax_i,
   input  logic signed [trirast_pkg::CoordIntBits-1:0]  ay_i,
@@ -13,19 +15,19 @@ module trirast_trad_line_setup (
   output logic [trirast_pkg::CoordIntBits-1:0]         dmin_o,
   output logic signed [trirast_pkg::CoordIntBits+2:0]  d0_o        // 2*dmin - dmaj
 );
-  localparam int CBits = trirast_pkg::CoordIntBits;
-  localparam int DiffBits = CBits + 1;
-  localparam int DecBits = CBits + 3;
+  `TRIRAST_PKG_NAMES
+  localparam int DiffBits = CoordIntBits + 1;
+  localparam int DecBits = CoordIntBits + 3;
 
   logic signed [DiffBits-1:0] dx, dy;
-  logic [CBits-1:0] adx, ady;
+  logic [CoordIntBits-1:0] adx, ady;
 
   always_comb begin
     dx = DiffBits'(bx_i) - DiffBits'(ax_i);
     dy = DiffBits'(by_i) - DiffBits'(ay_i);
     // |dx| <= 2^c - 1 fits c bits unsigned; dy >= 0 (the line runs downward).
-    adx = dx[DiffBits-1] ? CBits'(-dx) : CBits'(dx);
-    ady = CBits'(dy);
+    adx = dx[DiffBits-1] ? CoordIntBits'(-dx) : CoordIntBits'(dx);
+    ady = CoordIntBits'(dy);
   end
 
   assign sx_neg_o  = dx[DiffBits-1];

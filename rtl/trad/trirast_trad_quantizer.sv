@@ -3,6 +3,8 @@
 // shift: the fraction is dropped), the integer area tells collinear pixels (the triangle draws
 // nothing), and a three-comparator sorting network orders the pixels by (y, x): p0 top, p2
 // bottom. Two (c+1) x (c+1) multipliers for the area, three comparators for the sort.
+`include "trirast_ports.svh"
+
 module trirast_trad_quantizer (
   input  logic [3*trirast_pkg::VertexBits-1:0]    vx_i,        // vertex k: [k*p +: p] signed
   input  logic [3*trirast_pkg::VertexBits-1:0]    vy_i,
@@ -10,19 +12,17 @@ module trirast_trad_quantizer (
   output logic [3*trirast_pkg::CoordIntBits-1:0]  px_o,        // sorted pixel k: [k*c +: c] signed
   output logic [3*trirast_pkg::CoordIntBits-1:0]  py_o
 );
-  localparam int VertexBits = trirast_pkg::VertexBits;
-  localparam int FracBits = trirast_pkg::FracBits;
-  localparam int CBits = trirast_pkg::CoordIntBits;  // signed bits of an integer pixel
-  localparam int DiffBits = CBits + 1;               // a difference of two pixels
+  `TRIRAST_PKG_NAMES
+  localparam int DiffBits = CoordIntBits + 1;               // a difference of two pixels
   localparam int AreaBits = 2 * DiffBits + 1;        // the cross product
 
-  logic signed [CBits-1:0] qx [3];
-  logic signed [CBits-1:0] qy [3];
+  logic signed [CoordIntBits-1:0] qx [3];
+  logic signed [CoordIntBits-1:0] qy [3];
 
   // floor(v / 2^F): the upper bits of the two's-complement vertex.
   for (genvar k = 0; k < 3; k++) begin : g_quant
-    assign qx[k] = vx_i[k*VertexBits + FracBits +: CBits];
-    assign qy[k] = vy_i[k*VertexBits + FracBits +: CBits];
+    assign qx[k] = vx_i[k*VertexBits + FracBits +: CoordIntBits];
+    assign qy[k] = vy_i[k*VertexBits + FracBits +: CoordIntBits];
   end
 
   // Collinearity: (p1 - p0) x (p2 - p0) == 0 on the unsorted pixels, as the model computes it.
@@ -38,21 +38,21 @@ module trirast_trad_quantizer (
   assign collinear_o = area == '0;
 
   // (y, x) order: b strictly above a (smaller y, or equal y and smaller x).
-  function automatic logic above(input logic signed [CBits-1:0] bx,
-                                 input logic signed [CBits-1:0] by,
-                                 input logic signed [CBits-1:0] ax,
-                                 input logic signed [CBits-1:0] ay);
+  function automatic logic above(input logic signed [CoordIntBits-1:0] bx,
+                                 input logic signed [CoordIntBits-1:0] by,
+                                 input logic signed [CoordIntBits-1:0] ax,
+                                 input logic signed [CoordIntBits-1:0] ay);
     above = (by < ay) || ((by == ay) && (bx < ax));
   endfunction
 
   // The network: (0,1), (1,2), (0,1). Each layer is its own set of wires (no reassignment, so
   // an event-driven simulator never sees a half-sorted intermediate as a final value).
-  logic signed [CBits-1:0] ax [3];
-  logic signed [CBits-1:0] ay [3];
-  logic signed [CBits-1:0] bx [3];
-  logic signed [CBits-1:0] by [3];
-  logic signed [CBits-1:0] cx [3];
-  logic signed [CBits-1:0] cy [3];
+  logic signed [CoordIntBits-1:0] ax [3];
+  logic signed [CoordIntBits-1:0] ay [3];
+  logic signed [CoordIntBits-1:0] bx [3];
+  logic signed [CoordIntBits-1:0] by [3];
+  logic signed [CoordIntBits-1:0] cx [3];
+  logic signed [CoordIntBits-1:0] cy [3];
   logic swap_a, swap_b, swap_c;
 
   assign swap_a = above(qx[1], qy[1], qx[0], qy[0]);

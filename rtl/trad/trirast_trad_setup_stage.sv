@@ -6,37 +6,25 @@
 //   StLine : Bresenham set-up of the lines p0->p2 (long), p0->p1, p1->p2, registered.
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i.
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_trad_setup_stage (
   input  logic                                    clk_i,
   input  logic                                    rst_ni,
   // ---- triangle port ----
-  input  logic                                    tri_valid_i,
-  output logic                                    tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]         tri_tag_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]    tri_vx_i,
-  input  logic [3*trirast_pkg::VertexBits-1:0]    tri_vy_i,
+  `TRIRAST_TRIANGLE_PORT_VERTICES,
   // ---- collinear retirement (StSort) ----
   output logic                                    retire_o,
   output logic [trirast_pkg::TagBits-1:0]         retire_tag_o,
   // ---- hand-off to the walk stage (valid in StHold) ----
   output logic                                    hand_valid_o,
   input  logic                                    hand_ready_i,   // the walk stage is idle
-  output logic [trirast_pkg::TagBits-1:0]         hand_tag_o,
-  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_px_o,      // sorted pixels p0, p1, p2
-  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_py_o,
-  output logic [2:0]                              hand_sx_neg_o,  // line e: 0 long, 1, 2 short
-  output logic [2:0]                              hand_x_major_o,
-  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_dmaj_o,
-  output logic [3*trirast_pkg::CoordIntBits-1:0]  hand_dmin_o,
-  output logic [3*(trirast_pkg::CoordIntBits+3)-1:0] hand_d0_o,
+  `TRIRAST_TRAD_HANDOFF(output, _o),
   // ---- observation ----
   output logic [2:0]                              state_o
 );
-  localparam int VertexBits = trirast_pkg::VertexBits;
-  localparam int TagBits = trirast_pkg::TagBits;
-  localparam int CBits = trirast_pkg::CoordIntBits;
-  localparam int DecBits = CBits + 3;
+  `TRIRAST_PKG_NAMES
+  localparam int DecBits = CoordIntBits + 3;
 
   // Numbered as in the SystemC model's trace (0, 1, 2, 4).
   typedef enum logic [2:0] {
@@ -51,9 +39,9 @@ module trirast_trad_setup_stage (
 
   logic [TagBits-1:0] tag_q, tag_d;
   logic [3*VertexBits-1:0] vx_q, vx_d, vy_q, vy_d;
-  logic [3*CBits-1:0] px_q, px_d, py_q, py_d, sort_px, sort_py;
+  logic [3*CoordIntBits-1:0] px_q, px_d, py_q, py_d, sort_px, sort_py;
   logic [2:0] sx_neg, x_major, sx_neg_q, sx_neg_d, x_major_q, x_major_d;
-  logic [3*CBits-1:0] dmaj, dmin, dmaj_q, dmaj_d, dmin_q, dmin_d;
+  logic [3*CoordIntBits-1:0] dmaj, dmin, dmaj_q, dmaj_d, dmin_q, dmin_d;
   logic [3*DecBits-1:0] d0, d0_q, d0_d;
 
   trirast_trad_quantizer u_quantizer (
@@ -69,14 +57,14 @@ module trirast_trad_setup_stage (
     localparam int A = (e == 2) ? 1 : 0;
     localparam int B = (e == 1) ? 1 : 2;
     trirast_trad_line_setup u_line_setup (
-      .ax_i      (px_q[A*CBits +: CBits]),
-      .ay_i      (py_q[A*CBits +: CBits]),
-      .bx_i      (px_q[B*CBits +: CBits]),
-      .by_i      (py_q[B*CBits +: CBits]),
+      .ax_i      (px_q[A*CoordIntBits +: CoordIntBits]),
+      .ay_i      (py_q[A*CoordIntBits +: CoordIntBits]),
+      .bx_i      (px_q[B*CoordIntBits +: CoordIntBits]),
+      .by_i      (py_q[B*CoordIntBits +: CoordIntBits]),
       .sx_neg_o  (sx_neg[e]),
       .x_major_o (x_major[e]),
-      .dmaj_o    (dmaj[e*CBits +: CBits]),
-      .dmin_o    (dmin[e*CBits +: CBits]),
+      .dmaj_o    (dmaj[e*CoordIntBits +: CoordIntBits]),
+      .dmin_o    (dmin[e*CoordIntBits +: CoordIntBits]),
       .d0_o      (d0[e*DecBits +: DecBits])
     );
   end
@@ -116,36 +104,16 @@ module trirast_trad_setup_stage (
     d0_d      = line_en ? d0 : d0_q;
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      state_q <= StIdle;
-    end else begin
-      state_q <= state_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, StIdle)
 
   // Datapath registers: no reset (written before they are read).
   always_ff @(posedge clk_i) begin
-    tag_q     <= tag_d;
-    vx_q      <= vx_d;
-    vy_q      <= vy_d;
-    px_q      <= px_d;
-    py_q      <= py_d;
-    sx_neg_q  <= sx_neg_d;
-    x_major_q <= x_major_d;
-    dmaj_q    <= dmaj_d;
-    dmin_q    <= dmin_d;
-    d0_q      <= d0_d;
+    {tag_q, vx_q, vy_q, px_q, py_q, sx_neg_q, x_major_q, dmaj_q, dmin_q, d0_q} <=
+        {tag_d, vx_d, vy_d, px_d, py_d, sx_neg_d, x_major_d, dmaj_d, dmin_d, d0_d};
   end
 
-  assign hand_tag_o     = tag_q;
-  assign hand_px_o      = px_q;
-  assign hand_py_o      = py_q;
-  assign hand_sx_neg_o  = sx_neg_q;
-  assign hand_x_major_o = x_major_q;
-  assign hand_dmaj_o    = dmaj_q;
-  assign hand_dmin_o    = dmin_q;
-  assign hand_d0_o      = d0_q;
+  assign {hand_tag_o, hand_px_o, hand_py_o, hand_sx_neg_o, hand_x_major_o, hand_dmaj_o,
+          hand_dmin_o, hand_d0_o} = {tag_q, px_q, py_q, sx_neg_q, x_major_q, dmaj_q, dmin_q, d0_q};
   assign state_o        = state_q;
 
   // The triangle port (an input assumption): a triangle offered and not yet taken stays on the

@@ -2,6 +2,8 @@
 // rightmost pixel the three lines put on the row being walked, accumulated over the row's cycles
 // from the walkers' step pixels (and the start pixel p0 on the first row); at the row's end the
 // span [leftmost, rightmost + 1), clipped to the viewport [0, W) x [0, H), is valid when non-empty.
+`include "trirast_ports.svh"
+
 module trirast_trad_span_filler #(
   parameter int WBits = 18  // signed bits of a pixel coordinate and of the row
 ) (
@@ -21,7 +23,7 @@ module trirast_trad_span_filler #(
   output logic [trirast_pkg::PixBits-1:0]      begin_o,
   output logic [trirast_pkg::PixBits:0]        end_o        // exclusive
 );
-  localparam int PixBits = trirast_pkg::PixBits;
+  `TRIRAST_PKG_NAMES
 
   logic signed [WBits-1:0] lo_q, lo_d, hi_q, hi_d;  // the row's pixels so far
   logic any_q, any_d;                               // ... if any

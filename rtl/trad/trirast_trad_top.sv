@@ -10,57 +10,39 @@
 // divider or endpoints configuration; setup_retire_o (collinear pixels, StSort) stands where
 // trirast_improved_top has box_retire_o (empty box, StBox).
 `include "trirast_assert.svh"
+`include "trirast_ports.svh"
 
 module trirast_trad_top #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
 ) (
-  input  logic                                  clk_i,
-  input  logic                                  rst_ni,
-  // ---- configuration (static) ----
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_xmax_i,    // viewport width - 1
-  input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i,    // viewport height - 1
+  // ---- clock, reset and configuration (static) ----
+  `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   // ---- triangle port: one set-up triangle per handshake ----
-  input  logic                                  tri_valid_i,
-  output logic                                  tri_ready_o,
-  input  logic [trirast_pkg::TagBits-1:0]       tri_tag_i,        // returned with its spans
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vx_i,         // vertex k: [k*p +: p] signed
-  input  logic [3*trirast_pkg::VertexBits-1:0]  tri_vy_i,
+  `TRIRAST_TRIANGLE_PORT_VERTICES,
   // ---- span port ----
-  output logic                                  span_valid_o,
-  input  logic                                  span_ready_i,
-  output logic [trirast_pkg::TagBits-1:0]       span_tag_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_y_o,
-  output logic [trirast_pkg::PixBits-1:0]       span_x_begin_o,
-  output logic [trirast_pkg::PixBits:0]         span_x_end_o,     // exclusive
+  `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
   output logic                                  setup_retire_o,   // collinear retires (StSort)
   output logic [trirast_pkg::TagBits-1:0]       setup_retire_tag_o,
-  output logic                                  walk_busy_o,      // walk stage in StWalk
-  output logic                                  walk_stall_o,     // a stall cycle
-  output logic                                  walk_last_o,      // its last row ends
-  output logic                                  walk_retire_o,    // ... and it has no span
-  output logic [trirast_pkg::TagBits-1:0]       walk_tag_o,
-  output logic [CountBits-1:0]                  fifo_count_o,     // occupancy at cycle start
+  `TRIRAST_WALK_OBSERVATION,
   // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
   output logic [2:0]                            setup_state_o,    // StIdle, StSort, StLine, StHold
   output logic                                  handoff_o,        // the walk stage loads
   output logic [3*trirast_pkg::CoordIntBits-1:0] hand_px_o,       // its sorted pixels p0..p2
   output logic [3*trirast_pkg::CoordIntBits-1:0] hand_py_o        //   (valid with handoff_o)
 );
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int TagBits = trirast_pkg::TagBits;
-  localparam int CBits = trirast_pkg::CoordIntBits;
-  localparam int DecBits = CBits + 3;
+  `TRIRAST_PKG_NAMES
+  localparam int DecBits = CoordIntBits + 3;
   localparam int EntryBits = TagBits + PixBits + PixBits + PixBits + 1;
   // The walk stage's coordinate width (its derived parameter WBits).
-  localparam int WBits = ((CBits > PixBits + 1) ? CBits : PixBits + 1) + 2;
+  localparam int WBits = ((CoordIntBits > PixBits + 1) ? CoordIntBits : PixBits + 1) + 2;
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
   logic [TagBits-1:0] hand_tag;
-  logic [3*CBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
+  logic [3*CoordIntBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
   logic [2:0] hand_sx_neg, hand_x_major;
   logic [2:0] setup_state /* verilator public_flat_rd */;  // observation (trace, busy counts)
   logic [3*DecBits-1:0] hand_d0;
@@ -68,29 +50,20 @@ module trirast_trad_top #(
   trirast_trad_setup_stage u_setup (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .tri_valid_i    (tri_valid_i),
-    .tri_ready_o    (tri_ready_o),
-    .tri_tag_i      (tri_tag_i),
-    .tri_vx_i       (tri_vx_i),
-    .tri_vy_i       (tri_vy_i),
+    `TRIRAST_CONNECT_TRIANGLE_PORT_VERTICES,
     .retire_o       (setup_retire_o),
     .retire_tag_o   (setup_retire_tag_o),
     .hand_valid_o   (hand_valid),
     .hand_ready_i   (hand_ready),
-    .hand_tag_o     (hand_tag),
-    .hand_px_o      (hand_px),
-    .hand_py_o      (hand_py),
-    .hand_sx_neg_o  (hand_sx_neg),
-    .hand_x_major_o (hand_x_major),
-    .hand_dmaj_o    (hand_dmaj),
-    .hand_dmin_o    (hand_dmin),
-    .hand_d0_o      (hand_d0),
+    `TRIRAST_CONNECT_TRAD_HANDOFF(_o),
     .state_o        (setup_state)
   );
 
   logic push;
   logic [EntryBits-1:0] push_data;
   logic [WBits-1:0] walk_row;
+  logic unused_obs;  // walk_row is observed in traces only
+  assign unused_obs = ^walk_row;
 
   trirast_trad_walk_stage #(
     .CountBits (CountBits),
@@ -103,38 +76,17 @@ module trirast_trad_top #(
     .fifo_depth_i   (cfg_fifo_depth_i),
     .hand_valid_i   (hand_valid),
     .hand_ready_o   (hand_ready),
-    .hand_tag_i     (hand_tag),
-    .hand_px_i      (hand_px),
-    .hand_py_i      (hand_py),
-    .hand_sx_neg_i  (hand_sx_neg),
-    .hand_x_major_i (hand_x_major),
-    .hand_dmaj_i    (hand_dmaj),
-    .hand_dmin_i    (hand_dmin),
-    .hand_d0_i      (hand_d0),
-    .fifo_count_i   (fifo_count_o),
-    .push_o         (push),
-    .push_data_o    (push_data),
-    .busy_o         (walk_busy_o),
-    .stall_o        (walk_stall_o),
-    .last_o         (walk_last_o),
-    .retire_o       (walk_retire_o),
-    .tag_o          (walk_tag_o),
-    .row_o          (walk_row)
+    `TRIRAST_CONNECT_TRAD_HANDOFF(_i),
+    `TRIRAST_CONNECT_WALK_STAGE_OUTPUTS
   );
 
   // Observation outputs; the walk row is observed in traces only.
   assign setup_state_o = setup_state;
-  assign handoff_o     = hand_valid && hand_ready;
-  assign hand_px_o     = hand_px;
-  assign hand_py_o     = hand_py;
-  logic unused_obs;
-  assign unused_obs = ^walk_row;
+  assign handoff_o = hand_valid && hand_ready;
+  assign {hand_px_o, hand_py_o} = {hand_px, hand_py};
 
   trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
-    .clk_i (clk_i), .rst_ni (rst_ni),
-    .push_i (push), .push_data_i (push_data), .count_o (fifo_count_o),
-    .span_valid_o (span_valid_o), .span_ready_i (span_ready_i), .span_tag_o (span_tag_o),
-    .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o));
+    `TRIRAST_CONNECT_SPAN_PORT);
 
   // Runtime configuration within the hardware maximum: 1 <= DEPTH <= FifoDepth.
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i != '0 && 32'(cfg_fifo_depth_i) <= FifoDepth,

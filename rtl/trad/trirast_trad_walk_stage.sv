@@ -6,6 +6,8 @@
 // walker takes the step that lands on the row, if it has one; the row ends in the cycle after
 // which neither walker has one (at least one cycle), and its span, if any, is pushed then.
 // So row y takes max(1, s_long(y), s_short(y)) cycles.
+`include "trirast_ports.svh"
+
 module trirast_trad_walk_stage #(
   parameter int CountBits = 4,  // bits of the FIFO occupancy and of the runtime depth
   parameter int EntryBits = 8,  // bits of one FIFO entry {tag, y, x_begin, x_end}
@@ -23,14 +25,7 @@ module trirast_trad_walk_stage #(
   // ---- hand-off from the setup stage ----
   input  logic                                     hand_valid_i,
   output logic                                     hand_ready_o,  // StWalkIdle
-  input  logic [trirast_pkg::TagBits-1:0]          hand_tag_i,
-  input  logic [3*trirast_pkg::CoordIntBits-1:0]   hand_px_i,     // sorted pixels p0, p1, p2
-  input  logic [3*trirast_pkg::CoordIntBits-1:0]   hand_py_i,
-  input  logic [2:0]                               hand_sx_neg_i, // line e: 0 long, 1, 2 short
-  input  logic [2:0]                               hand_x_major_i,
-  input  logic [3*trirast_pkg::CoordIntBits-1:0]   hand_dmaj_i,
-  input  logic [3*trirast_pkg::CoordIntBits-1:0]   hand_dmin_i,
-  input  logic [3*(trirast_pkg::CoordIntBits+3)-1:0] hand_d0_i,
+  `TRIRAST_TRAD_HANDOFF(input, _i),
   // ---- pushes into the span FIFO ----
   input  logic [CountBits-1:0]                     fifo_count_i,  // occupancy at cycle start
   output logic                                     push_o,
@@ -43,10 +38,8 @@ module trirast_trad_walk_stage #(
   output logic [trirast_pkg::TagBits-1:0]          tag_o,         // the walked triangle
   output logic [WBits-1:0]                         row_o          // the row being walked
 );
-  localparam int CBits = trirast_pkg::CoordIntBits;
-  localparam int DecBits = CBits + 3;
-  localparam int PixBits = trirast_pkg::PixBits;
-  localparam int TagBits = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  localparam int DecBits = CoordIntBits + 3;
 
   typedef enum logic {
     StWalkIdle = 1'b0,
@@ -60,9 +53,9 @@ module trirast_trad_walk_stage #(
   logic second_q, second_d;  // the short walker is on p1->p2
   logic any_q, any_d;        // the triangle pushed a span already
   // p1->p2, held for the short walker's switch.
-  logic signed [CBits-1:0] l2_x_q, l2_x_d, l2_y_q, l2_y_d;
+  logic signed [CoordIntBits-1:0] l2_x_q, l2_x_d, l2_y_q, l2_y_d;
   logic l2_sx_neg_q, l2_sx_neg_d, l2_x_major_q, l2_x_major_d;
-  logic [CBits-1:0] l2_dmaj_q, l2_dmaj_d, l2_dmin_q, l2_dmin_d;
+  logic [CoordIntBits-1:0] l2_dmaj_q, l2_dmaj_d, l2_dmin_q, l2_dmin_d;
   logic signed [DecBits-1:0] l2_d0_q, l2_d0_d;
 
   logic load, walking, room, stall, go, row_end;
@@ -73,9 +66,9 @@ module trirast_trad_walk_stage #(
   logic signed [WBits-1:0] long_x, short_x;
 
   // The short walker's load: p0->p1 at the hand-off, p1->p2 at the switch.
-  logic signed [CBits-1:0] sh_x, sh_y;
+  logic signed [CoordIntBits-1:0] sh_x, sh_y;
   logic sh_sx_neg, sh_x_major;
-  logic [CBits-1:0] sh_dmaj, sh_dmin;
+  logic [CoordIntBits-1:0] sh_dmaj, sh_dmin;
   logic signed [DecBits-1:0] sh_d0;
 
   trirast_trad_walker #(
@@ -83,12 +76,12 @@ module trirast_trad_walk_stage #(
   ) u_long_walker (
     .clk_i          (clk_i),
     .load_i         (load),
-    .load_x_i       (hand_px_i[0 +: CBits]),
-    .load_y_i       (hand_py_i[0 +: CBits]),
+    .load_x_i       (hand_px_i[0 +: CoordIntBits]),
+    .load_y_i       (hand_py_i[0 +: CoordIntBits]),
     .load_sx_neg_i  (hand_sx_neg_i[0]),
     .load_x_major_i (hand_x_major_i[0]),
-    .load_dmaj_i    (hand_dmaj_i[0 +: CBits]),
-    .load_dmin_i    (hand_dmin_i[0 +: CBits]),
+    .load_dmaj_i    (hand_dmaj_i[0 +: CoordIntBits]),
+    .load_dmin_i    (hand_dmin_i[0 +: CoordIntBits]),
     .load_d0_i      (hand_d0_i[0 +: DecBits]),
     .row_i          (row_q),
     .step_i         (long_step),
@@ -129,7 +122,7 @@ module trirast_trad_walk_stage #(
     .vp_xmax_i (vp_xmax_i),
     .vp_ymax_i (vp_ymax_i),
     .load_i    (load),
-    .load_x_i  (WBits'($signed(hand_px_i[0 +: CBits]))),
+    .load_x_i  (WBits'($signed(hand_px_i[0 +: CoordIntBits]))),
     .a_step_i  (long_step),
     .a_x_i     (long_x),
     .b_step_i  (short_step),
@@ -158,45 +151,36 @@ module trirast_trad_walk_stage #(
   assign push_data_o  = {tag_q, span_y, span_xb, span_xe};
   assign retire_o     = last_o && !any_q && !span_valid;
 
-  assign sh_x       = load ? hand_px_i[0 +: CBits] : l2_x_q;
-  assign sh_y       = load ? hand_py_i[0 +: CBits] : l2_y_q;
+  assign sh_x       = load ? hand_px_i[0 +: CoordIntBits] : l2_x_q;
+  assign sh_y       = load ? hand_py_i[0 +: CoordIntBits] : l2_y_q;
   assign sh_sx_neg  = load ? hand_sx_neg_i[1] : l2_sx_neg_q;
   assign sh_x_major = load ? hand_x_major_i[1] : l2_x_major_q;
-  assign sh_dmaj    = load ? hand_dmaj_i[CBits +: CBits] : l2_dmaj_q;
-  assign sh_dmin    = load ? hand_dmin_i[CBits +: CBits] : l2_dmin_q;
+  assign sh_dmaj    = load ? hand_dmaj_i[CoordIntBits +: CoordIntBits] : l2_dmaj_q;
+  assign sh_dmin    = load ? hand_dmin_i[CoordIntBits +: CoordIntBits] : l2_dmin_q;
   assign sh_d0      = load ? hand_d0_i[DecBits +: DecBits] : l2_d0_q;
 
   always_comb begin
     state_d      = state_q;
-    tag_d        = tag_q;
-    row_d        = row_q;
-    last_row_d   = last_row_q;
-    first_d      = first_q;
-    second_d     = second_q;
-    any_d        = any_q;
-    l2_x_d       = l2_x_q;
-    l2_y_d       = l2_y_q;
-    l2_sx_neg_d  = l2_sx_neg_q;
-    l2_x_major_d = l2_x_major_q;
-    l2_dmaj_d    = l2_dmaj_q;
-    l2_dmin_d    = l2_dmin_q;
-    l2_d0_d      = l2_d0_q;
+    {tag_d, row_d, last_row_d, first_d, second_d, any_d, l2_x_d, l2_y_d, l2_sx_neg_d, l2_x_major_d,
+     l2_dmaj_d, l2_dmin_d, l2_d0_d} =
+        {tag_q, row_q, last_row_q, first_q, second_q, any_q, l2_x_q, l2_y_q, l2_sx_neg_q,
+         l2_x_major_q, l2_dmaj_q, l2_dmin_q, l2_d0_q};
     unique case (state_q)
       StWalkIdle: begin
         if (load) begin
           state_d      = StWalk;
           tag_d        = hand_tag_i;
-          row_d        = WBits'($signed(hand_py_i[0 +: CBits]));
-          last_row_d   = WBits'($signed(hand_py_i[2*CBits +: CBits]));
+          row_d        = WBits'($signed(hand_py_i[0 +: CoordIntBits]));
+          last_row_d   = WBits'($signed(hand_py_i[2*CoordIntBits +: CoordIntBits]));
           first_d      = 1'b1;
           second_d     = 1'b0;
           any_d        = 1'b0;
-          l2_x_d       = hand_px_i[CBits +: CBits];
-          l2_y_d       = hand_py_i[CBits +: CBits];
+          l2_x_d       = hand_px_i[CoordIntBits +: CoordIntBits];
+          l2_y_d       = hand_py_i[CoordIntBits +: CoordIntBits];
           l2_sx_neg_d  = hand_sx_neg_i[2];
           l2_x_major_d = hand_x_major_i[2];
-          l2_dmaj_d    = hand_dmaj_i[2*CBits +: CBits];
-          l2_dmin_d    = hand_dmin_i[2*CBits +: CBits];
+          l2_dmaj_d    = hand_dmaj_i[2*CoordIntBits +: CoordIntBits];
+          l2_dmin_d    = hand_dmin_i[2*CoordIntBits +: CoordIntBits];
           l2_d0_d      = hand_d0_i[2*DecBits +: DecBits];
         end
       end
@@ -213,29 +197,14 @@ module trirast_trad_walk_stage #(
     endcase
   end
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      state_q <= StWalkIdle;
-    end else begin
-      state_q <= state_d;
-    end
-  end
+  `TRIRAST_FLOP_AR(state_q, state_d, StWalkIdle)
 
   // Datapath registers: no reset (loaded at the hand-off).
   always_ff @(posedge clk_i) begin
-    tag_q        <= tag_d;
-    row_q        <= row_d;
-    last_row_q   <= last_row_d;
-    first_q      <= first_d;
-    second_q     <= second_d;
-    any_q        <= any_d;
-    l2_x_q       <= l2_x_d;
-    l2_y_q       <= l2_y_d;
-    l2_sx_neg_q  <= l2_sx_neg_d;
-    l2_x_major_q <= l2_x_major_d;
-    l2_dmaj_q    <= l2_dmaj_d;
-    l2_dmin_q    <= l2_dmin_d;
-    l2_d0_q      <= l2_d0_d;
+    {tag_q, row_q, last_row_q, first_q, second_q, any_q, l2_x_q, l2_y_q, l2_sx_neg_q, l2_x_major_q,
+     l2_dmaj_q, l2_dmin_q, l2_d0_q} <=
+        {tag_d, row_d, last_row_d, first_d, second_d, any_d, l2_x_d, l2_y_d, l2_sx_neg_d,
+         l2_x_major_d, l2_dmaj_d, l2_dmin_d, l2_d0_d};
   end
 
   assign hand_ready_o = state_q == StWalkIdle;
@@ -247,6 +216,6 @@ module trirast_trad_walk_stage #(
   // p2.x is not needed: the lines' deltas lead the walkers there. (long_last_unused: the long
   // walker's last step needs no action, its line ends with the triangle's last row.)
   logic unused_p2x;
-  assign unused_p2x = ^hand_px_i[2*CBits +: CBits];
+  assign unused_p2x = ^hand_px_i[2*CoordIntBits +: CoordIntBits];
 
 endmodule

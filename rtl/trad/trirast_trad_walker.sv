@@ -8,6 +8,8 @@
 // the stage knows combinationally whether the row ends in this cycle. Used x2: the long-edge
 // walker (p0->p2) and the short-side walker (p0->p1, reloaded with p1->p2 by the walk stage in
 // the cycle of the first line's last step, so no cycle is lost between the two).
+`include "trirast_ports.svh"
+
 module trirast_trad_walker #(
   parameter int WBits = 18  // signed bits of a pixel coordinate and of the row
 ) (
@@ -29,14 +31,14 @@ module trirast_trad_walker #(
   output logic signed [WBits-1:0]                     dest_x_o,     // x of its pixel
   output logic                                        more_o        // after this cycle: another
 );
-  localparam int CBits = trirast_pkg::CoordIntBits;
-  localparam int DecBits = CBits + 3;
+  `TRIRAST_PKG_NAMES
+  localparam int DecBits = CoordIntBits + 3;
 
   logic signed [WBits-1:0] x_q, x_d, y_q, y_d;
   logic signed [DecBits-1:0] d_q, d_d, d_step;
-  logic [CBits-1:0] rem_q, rem_d;  // steps left
+  logic [CoordIntBits-1:0] rem_q, rem_d;  // steps left
   logic sx_neg_q, sx_neg_d, x_major_q, x_major_d;
-  logic [CBits-1:0] dmaj_q, dmaj_d, dmin_q, dmin_d;
+  logic [CoordIntBits-1:0] dmaj_q, dmaj_d, dmin_q, dmin_d;
 
   // The step from the current state.
   logic moves_minor, moves_x, moves_y;
@@ -49,13 +51,13 @@ module trirast_trad_walker #(
   assign d_step      = d_q + DecBits'({dmin_q, 1'b0}) -
                        (moves_minor ? DecBits'({dmaj_q, 1'b0}) : DecBits'(0));
   assign has_step_o  = (rem_q != '0) && (dest_y == row_i);
-  assign last_step_o = rem_q == CBits'(1);
+  assign last_step_o = rem_q == CoordIntBits'(1);
 
   // Next state: a load wins over a step (the short walker's switch to its second line).
   assign x_d       = load_i ? WBits'(load_x_i) : (step_i ? dest_x_o : x_q);
   assign y_d       = load_i ? WBits'(load_y_i) : (step_i ? dest_y : y_q);
   assign d_d       = load_i ? load_d0_i : (step_i ? d_step : d_q);
-  assign rem_d     = load_i ? load_dmaj_i : (step_i ? rem_q - CBits'(1) : rem_q);
+  assign rem_d     = load_i ? load_dmaj_i : (step_i ? rem_q - CoordIntBits'(1) : rem_q);
   assign sx_neg_d  = load_i ? load_sx_neg_i : sx_neg_q;
   assign x_major_d = load_i ? load_x_major_i : x_major_q;
   assign dmaj_d    = load_i ? load_dmaj_i : dmaj_q;
@@ -68,14 +70,8 @@ module trirast_trad_walker #(
 
   // Datapath registers: no reset (loaded at the hand-off before they are read).
   always_ff @(posedge clk_i) begin
-    x_q       <= x_d;
-    y_q       <= y_d;
-    d_q       <= d_d;
-    rem_q     <= rem_d;
-    sx_neg_q  <= sx_neg_d;
-    x_major_q <= x_major_d;
-    dmaj_q    <= dmaj_d;
-    dmin_q    <= dmin_d;
+    {x_q, y_q, d_q, rem_q, sx_neg_q, x_major_q, dmaj_q, dmin_q} <=
+        {x_d, y_d, d_d, rem_d, sx_neg_d, x_major_d, dmaj_d, dmin_d};
   end
 
 endmodule

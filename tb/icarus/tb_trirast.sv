@@ -5,6 +5,8 @@
 // checks every span (in pop order), every accept cycle and every triangle's first_span_cycle and
 // done_cycle against the Verilated model's, with a periodic sink (+ready=R +stall=S).
 `timescale 1ns / 1ps
+`include "trirast_ports.svh"
+
 module tb_trirast #(
   // The half-space unit's build parameters (TRIRAST_TB_HALFSPACE; run.sh sets them with -P).
   parameter int HalfspaceStamp = 2,
@@ -13,11 +15,8 @@ module tb_trirast #(
   // The second-generation unit's corner form (TRIRAST_TB_IMPROVED2): 1 radix 16, 0 products.
   parameter int I2CornerForm = 1
 );
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int TB = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int TriBits = TB + 6 * P + 6 * CB + 3 * EB + 3;
   localparam int SpanBits = TB + 3 * PB + 1;
   localparam int MaxTris = 8192;

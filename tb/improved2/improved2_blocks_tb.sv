@@ -10,18 +10,11 @@
 //   the direct 2x2 test: trirast_improved2_direct_test_2x2 at 50 bits and in the unit's split form
 //     (TestHi) against the 12 sign tests written out.
 // Prints "improved2_blocks_tb: N errors (...)" and stops with $fatal on a difference.
+`include "trirast_ports.svh"
+
 module improved2_blocks_tb;
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int F = trirast_pkg::FracBits;
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int Trials = 3000;
 
   logic clk = 0, rst_n = 0;

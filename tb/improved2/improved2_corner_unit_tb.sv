@@ -10,12 +10,11 @@
 // digits of 4 bits in which v0's and v1's operands fit as two's complement numbers) and its
 // far-from-0 flags (the direct 2x2 test's far_i, fneg_i). Prints "improved2_corner_unit_tb: N
 // errors (...)" and stops with $fatal on a difference.
+`include "trirast_ports.svh"
+
 module improved2_corner_unit_tb;
-  localparam int P = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int F = trirast_pkg::FracBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int Trials = 20000;
 
   logic clk = 0, rst_n = 0;

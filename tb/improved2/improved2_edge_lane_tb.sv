@@ -19,22 +19,16 @@
 // Cycles per edge: from the cycle after the load to the first cycle whose registers hold the
 // results (improved: !busy_o, improved2: done_o); both must be what the lanes' headers state.
 // Prints "improved2_edge_lane_tb: N errors".
+`include "trirast_ports.svh"
+
 module improved2_edge_lane_tb #(
   parameter int PreIter = 0  // trirast_improved2_edge_lane's PreIter
 );
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int F = trirast_pkg::FracBits;
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int IB = $clog2(QB + 1);
   localparam int Random = 40000;
   localparam int WalkRows = 300;
-  localparam logic [1:0] RowBound = trirast_pkg::RowBound;
 
   logic clk = 0, rst_n = 0;
   int errors = 0;

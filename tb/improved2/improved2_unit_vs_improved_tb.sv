@@ -28,12 +28,11 @@
 `ifndef IMPROVED2_LANE_PREITER
 `define IMPROVED2_LANE_PREITER 0
 `endif
+`include "trirast_ports.svh"
+
 module improved2_unit_vs_improved_tb;
-  localparam int P  = trirast_pkg::VertexBits;
-  localparam int CB = trirast_pkg::CoefBits;
-  localparam int EB = trirast_pkg::EdgeBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int TB = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int TriBits = 6 * P + 6 * CB + 3 * EB + 3;
   localparam int SpanBits = TB + 3 * PB + 1;
   localparam int MaxTris = 400000;

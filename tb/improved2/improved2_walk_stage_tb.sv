@@ -11,18 +11,14 @@
 // mean), not required: the credit test is stricter than the improved unit's room test.
 // Parameters FifoRam, WalkerCs: the walk stage's build choices (defaults: FIFO in flip-flops,
 // carry-select walkers; 1, 0: the iCE40 fit's, the same spans and cycles).
+`include "trirast_ports.svh"
+
 module improved2_walk_stage_tb #(
   parameter bit FifoRam  = 1'b0,
   parameter bit WalkerCs = 1'b1
 );
-  localparam int SB = trirast_pkg::StepBits;
-  localparam int QB = trirast_pkg::QuotBits;
-  localparam int RB = trirast_pkg::RemBits;
-  localparam int WB = trirast_pkg::RowBits;
-  localparam int XB = trirast_pkg::WalkerXBits;
-  localparam int BB = trirast_pkg::BoxBits;
-  localparam int PB = trirast_pkg::PixBits;
-  localparam int TB = trirast_pkg::TagBits;
+  `TRIRAST_PKG_NAMES
+  `TRIRAST_PKG_SHORT_NAMES
   localparam int Depth = 8;
   localparam int CountBits = $clog2(Depth + 1);
   localparam int EntryBits = TB + 3 * PB + 1;
@@ -30,16 +26,9 @@ module improved2_walk_stage_tb #(
 
   // One hand-off bundle (the setup stage's outputs to the walk stage).
   typedef struct packed {
-    logic [TB-1:0] tag;
-    logic [PB-1:0] x0, y0;
-    logic [BB-1:0] xmax, ymax;
-    logic [2:0] mirror, dir_down, ssat, enters;
-    logic [3*SB-1:0] d;
-    logic [3*QB-1:0] qs;
-    logic [3*RB-1:0] rs, entry_e;
-    logic [3*WB-1:0] j_entry;
-    logic [5:0] entry_state;
-    logic [3*XB-1:0] entry_x;
+    `TRIRAST_HANDOFF_BOX_SIGNALS()
+    `TRIRAST_IMPROVED_HANDOFF_EDGES_SIGNALS()
+    logic [3*RB-1:0] entry_e;
   } bundle_t;
 
   logic clk = 0, rst_n = 0;
