@@ -10,18 +10,14 @@
 #include "common/reference_raster.hpp"
 #include "scene/scene.hpp"
 #include "common/watertight.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
+using test::golden_spans;
+using test::tri;
 using test::TestRng;
-
-SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
-  SpanList spans;
-  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, spans);
-  sort_spans(spans);
-  return spans;
-}
 
 // Golden spans must equal the reference's, span for span.
 void expect_matches_reference(const std::vector<InputTriangle>& tris, const RasterConfig& cfg,
@@ -64,25 +60,27 @@ TEST(GoldenVsReference, LargeViewport4096) {
   expect_matches_reference(tris, cfg);
 }
 
+// Arbitrary doubles (not on any grid) within the 256 x 192 viewport and around it.
+std::vector<InputTriangle> arbitrary_triangles(TestRng& rng, int count) {
+  std::vector<InputTriangle> tris;
+  for (int n = 0; n < count; ++n) {
+    InputTriangle t;
+    for (int i = 0; i < 3; ++i) {
+      t.x[i] = double(rng.range(-2000, 27600)) / 100.0 + double(rng.next() % 1000) * 1e-6;
+      t.y[i] = double(rng.range(-2000, 21200)) / 100.0 + double(rng.next() % 1000) * 1e-6;
+    }
+    tris.push_back(t);
+  }
+  return tris;
+}
+
 TEST(GoldenVsReference, EverySubpixelPrecision) {
   for (int s = 0; s <= 8; ++s) {
     SCOPED_TRACE("subpixel bits " + std::to_string(s));
     TestRng rng(10 + s);
-    RasterConfig cfg;
-    cfg.width = 256;
-    cfg.height = 192;
-    cfg.subpixel_bits = s;
-    // Arbitrary doubles (not on any grid): snapping itself is under test.
-    std::vector<InputTriangle> tris;
-    for (int n = 0; n < 5000; ++n) {
-      InputTriangle t;
-      for (int i = 0; i < 3; ++i) {
-        t.x[i] = double(rng.range(-2000, 27600)) / 100.0 + double(rng.next() % 1000) * 1e-6;
-        t.y[i] = double(rng.range(-2000, 21200)) / 100.0 + double(rng.next() % 1000) * 1e-6;
-      }
-      tris.push_back(t);
-    }
-    expect_matches_reference(tris, cfg);
+    const RasterConfig cfg = test::config_at(s, 256, 192);
+    // Arbitrary doubles: snapping itself is under test.
+    expect_matches_reference(arbitrary_triangles(rng, 5000), cfg);
   }
 }
 
@@ -109,28 +107,11 @@ TEST(GoldenVsReference, CullModes) {
 TEST(GoldenVsReference, LargeCoordinatesAndNegative) {
   TestRng rng(5);
   RasterConfig cfg;
-  std::vector<InputTriangle> tris;
-  for (int n = 0; n < 2000; ++n) {
-    InputTriangle t;
-    // One vertex near the viewport, two far away near the +-32768 limit.
-    t.x[0] = double(rng.range(-256 * 50, 256 * 1070)) / 256;
-    t.y[0] = double(rng.range(-256 * 50, 256 * 810)) / 256;
-    for (int i = 1; i < 3; ++i) {
-      t.x[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-      t.y[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-    }
-    tris.push_back(t);
-  }
-  expect_matches_reference(tris, cfg);
+  // One vertex near the viewport, two far away near the +-32768 limit.
+  expect_matches_reference(test::far_vertex_triangles(rng, 2000, 1070, 810), cfg);
 }
 
 // ---- watertightness ----------------------------------------------------------------------------
-
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t;
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
-}
 
 double snap256(double v) { return std::nearbyint(v * 256) / 256; }
 
@@ -334,10 +315,7 @@ TEST(GoldenHardCases, EveryHardCaseMatchesReference) {
 
 TEST(GoldenHardCases, OtherPrecisionsAndViewports) {
   for (int s : {0, 4}) {
-    RasterConfig cfg;
-    cfg.subpixel_bits = s;
-    cfg.width = 640;
-    cfg.height = 480;
+    const RasterConfig cfg = test::config_at(s, 640, 480);
     SCOPED_TRACE("S=" + std::to_string(s));
     expect_matches_reference(make_builtin("hard-all", cfg, CameraOptions{}).tris, cfg);
   }

@@ -13,10 +13,12 @@
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
 #include "common/reference_raster.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
+using test::tri;
 using test::TestRng;
 
 std::vector<Traversal> traversals() {
@@ -59,10 +61,49 @@ void expect_all_match_reference(const std::vector<InputTriangle>& tris, const Ra
   EXPECT_EQ(plain, reference);
 }
 
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t;
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
+// Random triangles on a grid: test::random_grid_triangles' arguments after the generator.
+struct Grid {
+  int count;
+  double lo_x, hi_x, lo_y, hi_y;
+  int grid_bits;
+  double max_size;
+};
+
+// The triangles of each grid in turn, all drawn from `rng`.
+std::vector<InputTriangle> grid_triangles(TestRng& rng, const std::vector<Grid>& grids) {
+  std::vector<InputTriangle> tris;
+  for (const Grid& g : grids) {
+    const auto more = test::random_grid_triangles(rng, g.count, g.lo_x, g.hi_x, g.lo_y, g.hi_y,
+                                                  g.grid_bits, g.max_size);
+    tris.insert(tris.end(), more.begin(), more.end());
+  }
+  return tris;
+}
+
+// expect_all_match_reference on the triangles of `grids` drawn from a generator seeded `seed`.
+void expect_grids_match_reference(uint64_t seed, const RasterConfig& cfg,
+                                  const std::vector<Grid>& grids) {
+  TestRng rng(seed);
+  expect_all_match_reference(grid_triangles(rng, grids), cfg);
+}
+
+// Arbitrary doubles (not on any grid) within the 256 x 192 viewport and around it, clustered:
+// every tenth triangle spans up to 200 pixels, the others up to 30.
+std::vector<InputTriangle> clustered_arbitrary_triangles(TestRng& rng, int count) {
+  std::vector<InputTriangle> tris;
+  for (int n = 0; n < count; ++n) {
+    InputTriangle t;
+    const double size = n % 10 == 0 ? 20000 : 3000;  // every tenth one large
+    const double bx = double(rng.range(-2000, 27600)), by = double(rng.range(-2000, 21200));
+    for (int i = 0; i < 3; ++i) {
+      t.x[i] = (bx + double(rng.range(-int64_t(size), int64_t(size)))) / 100.0 +
+               double(rng.next() % 1000) * 1e-6;
+      t.y[i] = (by + double(rng.range(-int64_t(size), int64_t(size)))) / 100.0 +
+               double(rng.next() % 1000) * 1e-6;
+    }
+    tris.push_back(t);
+  }
+  return tris;
 }
 
 // ---- names -------------------------------------------------------------------------------------
@@ -85,29 +126,20 @@ TEST(Traversal, NamesRoundTripAndUnknownIsRejected) {
 // ---- every traversal against the reference -----------------------------------------------------
 
 TEST(GoldenVariants, RandomOnSubpixelGrid) {
-  TestRng rng(101);
-  RasterConfig cfg;  // 1024x768, S = 8
-  auto tris = test::random_grid_triangles(rng, 20000, -40, 1064, -40, 808, 8, 24);
-  auto big = test::random_grid_triangles(rng, 600, -200, 1224, -200, 968, 8, 300);
-  tris.insert(tris.end(), big.begin(), big.end());
-  expect_all_match_reference(tris, cfg);
+  // The default configuration: 1024x768, S = 8.
+  expect_grids_match_reference(101, RasterConfig{}, {{20000, -40, 1064, -40, 808, 8, 24},
+                                                     {600, -200, 1224, -200, 968, 8, 300}});
 }
 
 TEST(GoldenVariants, RandomOnHalfPixelLattice) {
-  TestRng rng(102);
-  RasterConfig cfg;
   // Vertices on the half-pixel lattice: pixel centres fall exactly on edges and vertices.
-  auto tris = test::random_grid_triangles(rng, 20000, -8, 1032, -8, 776, 1, 12);
-  auto big = test::random_grid_triangles(rng, 600, -64, 1088, -64, 832, 1, 200);
-  tris.insert(tris.end(), big.begin(), big.end());
-  expect_all_match_reference(tris, cfg);
+  expect_grids_match_reference(102, RasterConfig{}, {{20000, -8, 1032, -8, 776, 1, 12},
+                                                     {600, -64, 1088, -64, 832, 1, 200}});
 }
 
 TEST(GoldenVariants, WholePixelLatticeAndAxisAligned) {
   TestRng rng(103);
-  RasterConfig cfg;
-  cfg.width = 300;
-  cfg.height = 200;
+  const RasterConfig cfg = test::config_at(8, 300, 200);
   // Integer vertices: every horizontal and vertical edge and many diagonals hit centres' rows
   // and columns exactly half a pixel away; axis-aligned right triangles of all sizes.
   auto tris = test::random_grid_triangles(rng, 5000, -4, 304, -4, 204, 0, 40);
@@ -121,32 +153,16 @@ TEST(GoldenVariants, WholePixelLatticeAndAxisAligned) {
 }
 
 TEST(GoldenVariants, LargeViewport4096) {
-  TestRng rng(104);
-  RasterConfig cfg;
-  cfg.width = cfg.height = 4096;
-  auto tris = test::random_grid_triangles(rng, 3000, -100, 4196, -100, 4196, 8, 160);
-  auto big = test::random_grid_triangles(rng, 30, -2000, 6000, -2000, 6000, 8, 4000);
-  tris.insert(tris.end(), big.begin(), big.end());
-  expect_all_match_reference(tris, cfg);
+  expect_grids_match_reference(104, test::config_at(8, 4096, 4096),
+                               {{3000, -100, 4196, -100, 4196, 8, 160},
+                                {30, -2000, 6000, -2000, 6000, 8, 4000}});
 }
 
 TEST(GoldenVariants, LargeCoordinatesAndNegative) {
   TestRng rng(105);
-  RasterConfig cfg;
-  cfg.width = 640;
-  cfg.height = 480;
-  std::vector<InputTriangle> tris;
-  for (int n = 0; n < 400; ++n) {
-    InputTriangle t;
-    // One vertex near the viewport, two far away near the +-32768 limit.
-    t.x[0] = double(rng.range(-256 * 50, 256 * 690)) / 256;
-    t.y[0] = double(rng.range(-256 * 50, 256 * 530)) / 256;
-    for (int i = 1; i < 3; ++i) {
-      t.x[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-      t.y[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-    }
-    tris.push_back(t);
-  }
+  const RasterConfig cfg = test::config_at(8, 640, 480);
+  // One vertex near the viewport, two far away near the +-32768 limit.
+  std::vector<InputTriangle> tris = test::far_vertex_triangles(rng, 400, 690, 530);
   // Slivers from far outside across the screen.
   for (int n = 0; n < 200; ++n) {
     const double x = double(rng.range(-32768 * 256, -32000 * 256)) / 256;
@@ -161,45 +177,21 @@ TEST(GoldenVariants, EverySubpixelPrecision) {
   for (int s = 0; s <= 8; ++s) {
     SCOPED_TRACE("subpixel bits " + std::to_string(s));
     TestRng rng(110 + s);
-    RasterConfig cfg;
-    cfg.width = 256;
-    cfg.height = 192;
-    cfg.subpixel_bits = s;
-    // Arbitrary doubles (not on any grid): snapping and S = 0 doubling are exercised too.
-    std::vector<InputTriangle> tris;
-    for (int n = 0; n < 2000; ++n) {
-      InputTriangle t;
-      const double size = n % 10 == 0 ? 20000 : 3000;  // every tenth one large
-      const double bx = double(rng.range(-2000, 27600)), by = double(rng.range(-2000, 21200));
-      for (int i = 0; i < 3; ++i) {
-        t.x[i] = (bx + double(rng.range(-int64_t(size), int64_t(size)))) / 100.0 +
-                 double(rng.next() % 1000) * 1e-6;
-        t.y[i] = (by + double(rng.range(-int64_t(size), int64_t(size)))) / 100.0 +
-                 double(rng.next() % 1000) * 1e-6;
-      }
-      tris.push_back(t);
-    }
-    expect_all_match_reference(tris, cfg);
+    const RasterConfig cfg = test::config_at(s, 256, 192);
+    // Arbitrary doubles: snapping and S = 0 doubling are exercised too.
+    expect_all_match_reference(clustered_arbitrary_triangles(rng, 2000), cfg);
   }
 }
 
 TEST(GoldenVariants, TinyTriangles) {
-  TestRng rng(106);
-  RasterConfig cfg;
-  cfg.width = 512;
-  cfg.height = 512;
   // Under two pixels across: most cover zero, one or two pixel centres.
-  auto tris = test::random_grid_triangles(rng, 40000, 0, 512, 0, 512, 8, 1.5);
-  auto lattice = test::random_grid_triangles(rng, 20000, 0, 512, 0, 512, 2, 1);
-  tris.insert(tris.end(), lattice.begin(), lattice.end());
-  expect_all_match_reference(tris, cfg);
+  expect_grids_match_reference(106, test::config_at(8, 512, 512),
+                               {{40000, 0, 512, 0, 512, 8, 1.5}, {20000, 0, 512, 0, 512, 2, 1}});
 }
 
 TEST(GoldenVariants, Slivers) {
   TestRng rng(107);
-  RasterConfig cfg;
-  cfg.width = 800;
-  cfg.height = 600;
+  const RasterConfig cfg = test::config_at(8, 800, 600);
   std::vector<InputTriangle> tris;
   for (int n = 0; n < 4000; ++n) {
     // A long edge at any angle and a third vertex a fraction of a pixel off it.
@@ -231,10 +223,7 @@ TEST(GoldenVariants, HardCasesAndMeshes) {
     expect_all_match_reference(make_builtin(name, cfg, CameraOptions{}).tris, cfg);
   }
   for (int s : {0, 4}) {
-    RasterConfig c2;
-    c2.subpixel_bits = s;
-    c2.width = 640;
-    c2.height = 480;
+    const RasterConfig c2 = test::config_at(s, 640, 480);
     SCOPED_TRACE("hard-all S=" + std::to_string(s));
     expect_all_match_reference(make_builtin("hard-all", c2, CameraOptions{}).tris, c2);
   }
@@ -245,9 +234,8 @@ TEST(GoldenVariants, HardCasesAndMeshes) {
 TEST(GoldenParallel, SameSpansInSameOrderForAnyThreadCount) {
   TestRng rng(201);
   RasterConfig cfg;
-  auto tris = test::random_grid_triangles(rng, 30000, -40, 1064, -40, 808, 8, 30);
-  auto big = test::random_grid_triangles(rng, 300, -200, 1224, -200, 968, 8, 600);
-  tris.insert(tris.end(), big.begin(), big.end());
+  auto tris = grid_triangles(rng, {{30000, -40, 1064, -40, 808, 8, 30},
+                                   {300, -200, 1224, -200, 968, 8, 600}});
   const auto mesh = make_builtin("highpoly-near", cfg, CameraOptions{}).tris;
   tris.insert(tris.end(), mesh.begin(), mesh.end());
   const SetupResult setup = setup_scene(tris, cfg);
@@ -423,18 +411,7 @@ TEST(FloatScanline, ErrorMeasuredOnRandomAndLargeCoordinates) {
   report("random, half-pixel lattice", lattice);
   EXPECT_GT(lattice.missing + lattice.extra, 0);  // ties on right edges at least
   // Far vertices: the float crossings are rounded at 1/256 pixel or worse.
-  std::vector<InputTriangle> far;
-  for (int n = 0; n < 3000; ++n) {
-    InputTriangle t;
-    t.x[0] = double(rng.range(-256 * 50, 256 * 1070)) / 256;
-    t.y[0] = double(rng.range(-256 * 50, 256 * 810)) / 256;
-    for (int i = 1; i < 3; ++i) {
-      t.x[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-      t.y[i] = double(rng.range(-32768 * 256, 32767 * 256)) / 256;
-    }
-    far.push_back(t);
-  }
-  const FloatError large = float_error(far, cfg);
+  const FloatError large = float_error(test::far_vertex_triangles(rng, 3000, 1070, 810), cfg);
   report("large coordinates", large);
   // Never more than a sliver of error: the baseline is close, just not exact.
   EXPECT_LT(double(grid.missing + grid.extra), 0.02 * double(grid.pixels));

@@ -12,43 +12,19 @@
 #include "golden/golden.hpp"
 #include "scene/scene.hpp"
 #include "halfspace/halfspace_unit.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-struct Hs {
-  int stamp, tile;
-  HalfspaceWalk walk;
-};
-
-std::vector<Hs> all_configs() {
-  std::vector<Hs> v;
-  for (int s : {1, 2, 4})
-    for (int t : {0, 8, 16})
-      for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) v.push_back({s, t, w});
-  return v;
-}
-
-std::string name(const Hs& h) {
-  return "stamp " + std::to_string(h.stamp) + " tile " + std::to_string(h.tile) + " " +
-         halfspace_walk_name(h.walk);
-}
-
-SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
-  SpanList g;
-  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
-  sort_spans(g);
-  return g;
-}
+using test::HalfspaceShape;
 
 // Runs every configuration on one set-up scene; returns the work of the last one's row and
 // zig-zag walks through `units` (indexed [stamp][tile][walk]) for the walker checks.
 void expect_all_equal(const SetupResult& setup, RasterConfig cfg, const std::string& what) {
-  const SpanList g = golden_spans(setup, cfg);
-  for (const Hs& h : all_configs()) {
-    cfg.halfspace.stamp = h.stamp;
-    cfg.halfspace.tile = h.tile;
-    cfg.halfspace.walk = h.walk;
+  const SpanList g = test::golden_spans(setup, cfg);
+  for (const HalfspaceShape& h : test::every_halfspace_shape()) {
+    cfg = test::with_halfspace_shape(cfg, h);
     EngineResult r;
     make_halfspace_datapath_engine()->run(setup, cfg, r);
     EXPECT_EQ(r.work["spans"], r.spans.size());
@@ -56,9 +32,9 @@ void expect_all_equal(const SetupResult& setup, RasterConfig cfg, const std::str
     sort_spans(r.spans);
     if (r.spans == g) continue;
     const SpanDiff d = diff_spans(g, r.spans);
-    ADD_FAILURE() << what << ", " << name(h) << ": " << g.size() << " golden spans, "
-                  << r.spans.size() << " unit spans; " << d.missing_pixels << " missing, "
-                  << d.extra_pixels << " extra pixels";
+    ADD_FAILURE() << what << ", " << test::halfspace_shape_name(h) << ": " << g.size()
+                  << " golden spans, " << r.spans.size() << " unit spans; " << d.missing_pixels
+                  << " missing, " << d.extra_pixels << " extra pixels";
   }
 }
 
@@ -88,10 +64,7 @@ TEST(HalfspaceDatapath, EqualsGoldenOnAcceptanceScenesAtEveryStampTileAndWalk) {
 TEST(HalfspaceDatapath, EqualsGoldenAtOtherPrecisions) {
   // S = 8 is the acceptance scenes' precision.
   for (int s : {0, 3}) {
-    RasterConfig cfg;
-    cfg.subpixel_bits = s;
-    cfg.width = 800;
-    cfg.height = 600;
+    const RasterConfig cfg = test::config_at(s, 800, 600);
     const Scene sc = make_builtin("hard-all", cfg, CameraOptions{});
     expect_all_equal(setup_scene(sc.tris, cfg), cfg, "hard-all S=" + std::to_string(s));
   }

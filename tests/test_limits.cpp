@@ -18,22 +18,21 @@
 #include "common/reference_raster.hpp"
 #include "support/run_command.hpp"
 #include "improved/improved_unit.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
 using test::CommandResult;
-using test::count_lines;
-using test::exact_engines;
 using test::kBin;
 using test::run_command;
-using test::TempDir;
+using test::tri;
 using test::write_file;
 
 // Engines that model the unit's datapath and therefore its widths (all exact ones but the golden).
 std::vector<const EngineInfo*> unit_engines() {
   std::vector<const EngineInfo*> out;
-  for (const EngineInfo* e : exact_engines())
+  for (const EngineInfo* e : test::exact_engines())
     if (e->name != "golden") out.push_back(e);
   return out;
 }
@@ -42,7 +41,7 @@ std::vector<const EngineInfo*> unit_engines() {
 // with std::invalid_argument before it runs), as a --engines list.
 std::string covering_engines(const RasterConfig& cfg) {
   std::string list;
-  for (const EngineInfo* e : exact_engines()) {
+  for (const EngineInfo* e : test::exact_engines()) {
     try {
       EngineResult r;
       e->make()->run(SetupResult{}, cfg, r);
@@ -54,17 +53,11 @@ std::string covering_engines(const RasterConfig& cfg) {
   return list;
 }
 
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t;
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
-}
-
 // Every exact engine gives the golden's pixels, and the golden the reference's (independent
 // per-pixel rasterizer).
 void expect_all_agree(const std::vector<InputTriangle>& tris, const RasterConfig& cfg) {
   std::string found;
-  for (const FuzzDisagreement& f : check_engines(tris, cfg, exact_engines()))
+  for (const FuzzDisagreement& f : check_engines(tris, cfg, test::exact_engines()))
     found += f.engine + ": " + f.what + "\n";
   EXPECT_EQ(found, "") << format_reproducer(tris, cfg, {"golden"}, "");
   // The per-pixel reference tests every pixel of every box: only for moderate viewports.
@@ -91,14 +84,7 @@ const Limits kConfigs[] = {
 };
 
 RasterConfig config_of(const Limits& l) {
-  RasterConfig cfg;
-  cfg.subpixel_bits = l.S;
-  cfg.coord_int_bits = l.coord_bits;
-  cfg.box_bits = l.box_bits;
-  cfg.width = l.width;
-  cfg.height = l.height;
-  cfg.validate();
-  return cfg;
+  return test::config_with_widths(l.S, l.coord_bits, l.box_bits, l.width, l.height);
 }
 
 std::string name_of(const RasterConfig& cfg) { return config_options(cfg); }
@@ -166,7 +152,7 @@ TEST(Limits, CoordinatesOnePastTheLimitAreRefused) {
 }
 
 TEST(Limits, CoordinateLimitsThroughTheCli) {
-  TempDir dir;
+  test::TempDir dir;
   for (const Limits& l : kConfigs) {
     const RasterConfig cfg = config_of(l);
     SCOPED_TRACE(name_of(cfg));
@@ -187,7 +173,7 @@ TEST(Limits, CoordinateLimitsThroughTheCli) {
                                           dir.file("past.tri") + opts + " --spans " +
                                           dir.file("s") + " --image " + dir.file("i.png"));
     EXPECT_EQ(bad.status, 2) << bad.out << bad.err;
-    EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+    EXPECT_EQ(test::count_lines(bad.err), 1) << bad.err;
     EXPECT_NE(bad.err.find("past.tri:3: triangle 1 (line 3): coordinate"), std::string::npos) << bad.err;
     EXPECT_NE(bad.err.find("outside the representable range"), std::string::npos) << bad.err;
     EXPECT_FALSE(test::file_exists(dir.file("s")));
@@ -250,7 +236,7 @@ TEST(Limits, BoxAtTheLimitRunsOnePastIsRefusedByEveryUnitEngine) {
 }
 
 TEST(Limits, BoxLimitThroughTheCli) {
-  TempDir dir;
+  test::TempDir dir;
   write_file(dir.file("at.tri"), "10.5 10.5 73.5 10.5 10.5 73.5\n");
   write_file(dir.file("past.tri"), "10.5 10.5 73.5 10.5 10.5 73.5\n10.5 10.5 74.5 10.5 10.5 20.5\n");
   RasterConfig box6;
@@ -265,7 +251,7 @@ TEST(Limits, BoxLimitThroughTheCli) {
                                           " --scene " + dir.file("past.tri") + " --spans " +
                                           dir.file("s") + " --report " + dir.file("r.json"));
     EXPECT_EQ(bad.status, 2);
-    EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+    EXPECT_EQ(test::count_lines(bad.err), 1) << bad.err;
     EXPECT_NE(bad.err.find("triangle 1: Xmax = 64 does not fit 6-bit"), std::string::npos) << bad.err;
     EXPECT_FALSE(test::file_exists(dir.file("s")));
     EXPECT_FALSE(test::file_exists(dir.file("r.json")));
@@ -356,7 +342,7 @@ TEST(Limits, EdgeValuesAtTheWidestRange) {
 // ---- configuration options -----------------------------------------------------------------------
 
 TEST(Limits, OptionsAtTheirBoundsAndOnePast) {
-  TempDir dir;
+  test::TempDir dir;
   write_file(dir.file("t.tri"), "0.5 0.5 1.5 0.5 0.5 1.75\n");
   const std::string scene = " --scene " + dir.file("t.tri");
   struct Case {
@@ -415,7 +401,7 @@ TEST(Limits, OptionsAtTheirBoundsAndOnePast) {
       std::remove(dir.file("r.json").c_str());
     } else {
       EXPECT_EQ(r.status, 2) << r.out << r.err;
-      EXPECT_EQ(count_lines(r.err), 1) << r.err;
+      EXPECT_EQ(test::count_lines(r.err), 1) << r.err;
       EXPECT_NE(r.err.find(c.needle), std::string::npos) << r.err;
       EXPECT_EQ(r.out, "");
       EXPECT_FALSE(test::file_exists(dir.file("r.json")));

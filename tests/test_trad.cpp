@@ -15,22 +15,13 @@
 #include "golden/golden.hpp"
 #include "common/reference_raster.hpp"
 #include "trad/trad_bresenham.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
+using test::tri;
 using test::TestRng;
-
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t{};
-  t.x[0] = x0;
-  t.y[0] = y0;
-  t.x[1] = x1;
-  t.y[1] = y1;
-  t.x[2] = x2;
-  t.y[2] = y2;
-  return t;
-}
 
 struct Raster {
   SpanList spans;
@@ -45,13 +36,6 @@ Raster run_trad(const SetupResult& setup, const RasterConfig& cfg) {
   return r;
 }
 
-SpanList run_golden(const SetupResult& setup, const RasterConfig& cfg) {
-  SpanList spans;
-  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, spans);
-  sort_spans(spans);
-  return spans;
-}
-
 // ---------------------------------------------------------------------------------------------
 // Figure 2.4: three vertices in one pixel whose centre is inside. Golden covers the pixel; the
 // traditional rasterizer makes no Bresenham step and draws nothing.
@@ -60,7 +44,7 @@ TEST(TradBresenham, Figure24OnePixelTriangleIsLost) {
   const SetupResult setup = setup_scene({tri(10.3, 10.3, 10.8, 10.4, 10.4, 10.8)}, cfg);
   ASSERT_EQ(setup.tris.size(), 1u);  // setup accepts it: it has area
 
-  const SpanList golden = run_golden(setup, cfg);
+  const SpanList golden = test::golden_spans(setup, cfg);
   ASSERT_EQ(golden.size(), 1u);
   EXPECT_EQ(golden[0], (Span{0, 10, 10, 11}));
   EXPECT_EQ(count_pixels(golden), 1);
@@ -98,7 +82,7 @@ TEST(TradBresenham, HandDerivedRightTriangle) {
     const SetupResult setup = setup_scene({tri(2, 2, 8, 2, 2, 8)}, cfg);
     ASSERT_EQ(setup.tris.size(), 1u);
 
-    const SpanList golden = run_golden(setup, cfg);
+    const SpanList golden = test::golden_spans(setup, cfg);
     const SpanList golden_expected = {
         {0, 2, 2, 7}, {0, 3, 2, 6}, {0, 4, 2, 5}, {0, 5, 2, 4}, {0, 6, 2, 3}};
     EXPECT_EQ(golden, golden_expected);
@@ -127,7 +111,7 @@ TEST(TradBresenham, LargeRightTriangleDiffersOnlyAtHypotenuse) {
   const int64_t a = 100, n = 300;
   const SetupResult setup = setup_scene(
       {tri(double(a), double(a), double(a + n), double(a), double(a), double(a + n))}, cfg);
-  const SpanList golden = run_golden(setup, cfg);
+  const SpanList golden = test::golden_spans(setup, cfg);
   const Raster trad = run_trad(setup, cfg);
   ASSERT_EQ(int64_t(golden.size()), n - 1);
   ASSERT_EQ(int64_t(trad.spans.size()), n + 1);
@@ -456,7 +440,7 @@ TEST(TradBresenham, DiffersFromGoldenOnlyNearEdges) {
   RasterConfig cfg;
   const std::vector<InputTriangle> tris = random_triangles(rng, 5000, -20, 1050, 30);
   const SetupResult setup = setup_scene(tris, cfg);
-  const SpanList golden = run_golden(setup, cfg);
+  const SpanList golden = test::golden_spans(setup, cfg);
   const Raster trad = run_trad(setup, cfg);
   const SpanDiff d = diff_spans(golden, trad.spans);
   EXPECT_GT(d.missing_pixels, 0);

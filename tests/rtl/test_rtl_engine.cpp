@@ -25,9 +25,13 @@
 #include "common/trirast_rtl_params.hpp"
 #include "improved/improved_unit.hpp"
 #include "common/unit_widths.hpp"
+#include "support/scene_helpers.hpp"
+#include "support/rtl_helpers.hpp"
 
 namespace trirast {
 namespace {
+
+using test::tri;
 
 RasterConfig default_cfg() {
   RasterConfig cfg;
@@ -36,11 +40,7 @@ RasterConfig default_cfg() {
 }
 
 EngineResult run_rtl(const SetupResult& setup, const RasterConfig& cfg, uint32_t seed = 1) {
-  EngineResult r;
-  rtl::RtlRunOptions opt;
-  opt.x_seed = seed;
-  rtl::run_rtl(setup, cfg, opt, r);
-  return r;
+  return test::run_verilated(rtl::run_rtl, setup, cfg, seed);
 }
 
 SpanList golden_spans(const SetupResult& setup, const RasterConfig& cfg) {
@@ -196,12 +196,6 @@ void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std:
   std::string rows;
   EXPECT_EQ(test::cycle_rows_mismatch(r.cycles, "rtl", sc.cycles, "model", what, rows), 0u)
       << rows;
-}
-
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t{};
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
 }
 
 std::vector<InputTriangle> random_tris(uint64_t seed, int count, double max_size) {

@@ -22,33 +22,36 @@
 #include "common/unit_widths.hpp"
 #include "common/rtl_builds.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-struct Built {
-  int stamp, tile;
-  HalfspaceWalk walk;
-};
-// The stamp/tile/walk configurations Verilated at the default widths (rtl_builds.hpp).
-std::vector<Built> built_at_default_widths() {
-  std::vector<Built> out;
+using test::HalfspaceShape;
+using test::tri;
+
+// The stamp / tile / walk a Verilated build of the unit was made for.
+HalfspaceShape shape_of(const rtl::RtlBuild& b) {
+  return {b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row};
+}
+
+// The shapes Verilated at the default widths (rtl_builds.hpp).
+std::vector<HalfspaceShape> built_at_default_widths() {
+  std::vector<HalfspaceShape> out;
   const RasterConfig d;
   for (const rtl::RtlBuild& b : rtl::halfspace_builds())
     if (b.subpixel_bits == d.subpixel_bits && b.coord_int_bits == d.coord_int_bits &&
         b.box_bits == d.box_bits)
-      out.push_back({b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row});
+      out.push_back(shape_of(b));
   return out;
 }
-const std::vector<Built> kBuilt = built_at_default_widths();
+const std::vector<HalfspaceShape> kBuilt = built_at_default_widths();
 
 size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
   EngineResult rtl, sc;
   make_halfspace_rtl_engine()->run(setup, cfg, rtl);
   make_halfspace_sc_engine()->run(setup, cfg, sc);
-  SpanList g;
-  for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
-  sort_spans(g);
+  const SpanList g = test::golden_spans(setup, cfg);
   sort_spans(rtl.spans);
   EXPECT_TRUE(rtl.spans == g) << what << ": " << rtl.spans.size() << " rtl spans, " << g.size()
                               << " golden";
@@ -77,17 +80,10 @@ size_t expect_equal(const SetupResult& setup, const RasterConfig& cfg, const std
   return rtl.cycles.size();
 }
 
-RasterConfig config(const Built& b) {
-  RasterConfig cfg;
-  cfg.halfspace.stamp = b.stamp;
-  cfg.halfspace.tile = b.tile;
-  cfg.halfspace.walk = b.walk;
-  return cfg;
-}
+RasterConfig config(const HalfspaceShape& b) { return test::with_halfspace_shape({}, b); }
 
-std::string name(const Built& b, const std::string& sink, int depth) {
-  return "stamp " + std::to_string(b.stamp) + " tile " + std::to_string(b.tile) + " " +
-         halfspace_walk_name(b.walk) + " sink " + sink + " depth " + std::to_string(depth);
+std::string name(const HalfspaceShape& b, const std::string& sink, int depth) {
+  return test::halfspace_shape_name(b) + " sink " + sink + " depth " + std::to_string(depth);
 }
 
 TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
@@ -97,7 +93,7 @@ TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
   tris.insert(tris.end(), big.begin(), big.end());
   ASSERT_GE(kBuilt.size(), 3u);
   size_t n = 0;
-  for (const Built& b : kBuilt)
+  for (const HalfspaceShape& b : kBuilt)
     for (const char* sink : {"none", "periodic:1:3", "random:5:70"})
       for (int depth : {1, 2, 8}) {
         RasterConfig cfg = config(b);
@@ -111,7 +107,7 @@ TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
 }
 
 TEST(RtlHalfspace, HardCasesAndMeshes) {
-  for (const Built& b : kBuilt)
+  for (const HalfspaceShape& b : kBuilt)
     for (const char* spec : {"builtin:hard-all", "builtin:sphere"})
       for (const char* sink : {"none", "random:9:40"}) {
         if (std::string(spec) == "builtin:sphere" && std::string(sink) != "none") continue;
@@ -130,12 +126,6 @@ TEST(RtlHalfspace, HardCasesAndMeshes) {
 }
 
 // ---- the coordinate limits ----------------------------------------------------------------------
-
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t;
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
-}
 
 // Triangles with vertices on the corners and edges of the coordinate range [-L, L) and on the
 // viewport's far edge (the box reaches the viewport's last pixel, its units past it), and random
@@ -202,41 +192,31 @@ TEST(HalfspaceLimits, CoordinateLimitsAtEveryStampTileAndWalk) {
                       {8, 16, 14, 256, 192}, {0, 24, 14, 128, 128}, {8, 22, 14, 256, 192}};
   int needed_more = 0;
   for (const W& w : widths)
-    for (int stamp : {1, 2, 4})
-      for (int tile : {0, 8, 16})
-        for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) {
-          RasterConfig cfg;
-          cfg.subpixel_bits = w.S;
-          cfg.coord_int_bits = w.coord;
-          cfg.box_bits = w.box;
-          cfg.width = w.width;
-          cfg.height = w.height;
-          cfg.halfspace.stamp = stamp;
-          cfg.halfspace.tile = tile;
-          cfg.halfspace.walk = walk;
-          cfg.validate();
-          const std::string what = "S " + std::to_string(w.S) + " coord " +
-                                   std::to_string(w.coord) + " box " + std::to_string(w.box) +
-                                   " " + name(Built{stamp, tile, walk}, "none", cfg.fifo_depth);
-          const SetupResult setup = setup_scene(limit_triangles(cfg, 77), cfg);
-          SpanList g;
-          for (const TriangleSetup& t : setup.tris) golden_triangle(t, cfg, g);
-          sort_spans(g);
-          EngineResult dp, sc;
-          ASSERT_NO_THROW(make_halfspace_datapath_engine()->run(setup, cfg, dp)) << what;
-          ASSERT_NO_THROW(make_halfspace_sc_engine()->run(setup, cfg, sc)) << what;
-          sort_spans(dp.spans);
-          sort_spans(sc.spans);
-          EXPECT_TRUE(dp.spans == g) << what << ": halfspace-datapath";
-          EXPECT_TRUE(sc.spans == g) << what << ": halfspace-sc";
-          const UnitWidths uw = unit_widths(cfg);
-          const int64_t most = largest_corner_value(setup, cfg);
-          EXPECT_TRUE(fits_signed(most, uw.hs_edge_value)) << what << ": " << most;
-          if (!fits_signed(most, uw.edge_value)) ++needed_more;
-          // The bound is 2p + 2 bits exactly when the units stay inside the largest viewport.
-          EXPECT_EQ(uw.hs_edge_value > uw.edge_value, (tile ? tile : stamp) > cfg.coord_limit_px())
-              << what;
-        }
+    for (const HalfspaceShape& shape : test::every_halfspace_shape()) {
+      RasterConfig cfg = test::with_halfspace_shape(
+          test::config_with_widths(w.S, w.coord, w.box, w.width, w.height), shape);
+      cfg.validate();
+      const std::string what = "S " + std::to_string(w.S) + " coord " +
+                               std::to_string(w.coord) + " box " + std::to_string(w.box) +
+                               " " + name(shape, "none", cfg.fifo_depth);
+      const SetupResult setup = setup_scene(limit_triangles(cfg, 77), cfg);
+      const SpanList g = test::golden_spans(setup, cfg);
+      EngineResult dp, sc;
+      ASSERT_NO_THROW(make_halfspace_datapath_engine()->run(setup, cfg, dp)) << what;
+      ASSERT_NO_THROW(make_halfspace_sc_engine()->run(setup, cfg, sc)) << what;
+      sort_spans(dp.spans);
+      sort_spans(sc.spans);
+      EXPECT_TRUE(dp.spans == g) << what << ": halfspace-datapath";
+      EXPECT_TRUE(sc.spans == g) << what << ": halfspace-sc";
+      const UnitWidths uw = unit_widths(cfg);
+      const int64_t most = largest_corner_value(setup, cfg);
+      EXPECT_TRUE(fits_signed(most, uw.hs_edge_value)) << what << ": " << most;
+      if (!fits_signed(most, uw.edge_value)) ++needed_more;
+      // The bound is 2p + 2 bits exactly when the units stay inside the largest viewport.
+      EXPECT_EQ(uw.hs_edge_value > uw.edge_value,
+                (shape.tile ? shape.tile : shape.stamp) > cfg.coord_limit_px())
+          << what;
+    }
   EXPECT_GT(needed_more, 10) << "no scene needs corner values wider than 2p + 2 bits";
 }
 
@@ -247,14 +227,11 @@ TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
   int narrow = 0;
   for (const rtl::RtlBuild& b : rtl::halfspace_builds())
     for (const char* sink : {"none", "random:3:50"}) {
-      RasterConfig cfg;
+      RasterConfig cfg = test::with_halfspace_shape({}, shape_of(b));
       cfg.subpixel_bits = b.subpixel_bits;
       cfg.coord_int_bits = b.coord_int_bits;
       cfg.box_bits = b.box_bits;
       cfg.width = cfg.height = int(std::min<int64_t>(cfg.coord_limit_px(), 128));
-      cfg.halfspace.stamp = b.stamp;
-      cfg.halfspace.tile = b.tile;
-      cfg.halfspace.walk = b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row;
       cfg.sink_stall = sink;
       cfg.fifo_depth = 2;
       cfg.validate();
@@ -263,7 +240,7 @@ TEST(RtlHalfspace, CoordinateLimitsEveryBuild) {
       narrow += !fits_signed(largest_corner_value(setup, cfg), uw.edge_value);
       expect_equal(setup, cfg,
                    std::string(b.prefix) + " " +
-                       name(Built{b.stamp, b.tile, cfg.halfspace.walk}, sink, cfg.fifo_depth));
+                       name(shape_of(b), sink, cfg.fifo_depth));
     }
   EXPECT_GT(narrow, 0) << "no build sees corner values wider than 2p + 2 bits";
 }

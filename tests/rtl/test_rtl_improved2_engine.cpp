@@ -19,20 +19,15 @@
 #include "improved2/improved2_sc.hpp"
 #include "scene/scene.hpp"
 #include "improved2/improved2_rtl_engine.hpp"
+#include "support/rtl_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-SetupResult scene(const std::string& spec, const RasterConfig& cfg) {
-  return setup_scene(load_scene(spec, cfg, CameraOptions{}).tris, cfg);
-}
+using test::scene;
 
 EngineResult run_rtl(const SetupResult& setup, const RasterConfig& cfg, uint32_t seed = 1) {
-  EngineResult r;
-  rtl::RtlRunOptions opt;
-  opt.x_seed = seed;
-  rtl::run_rtl_improved2(setup, cfg, opt, r);
-  return r;
+  return test::run_verilated(rtl::run_rtl_improved2, setup, cfg, seed);
 }
 
 RasterConfig cfg_with(int form, const std::string& sink, int depth, int endpoints = 1) {

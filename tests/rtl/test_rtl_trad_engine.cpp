@@ -16,20 +16,15 @@
 #include "scene/scene.hpp"
 #include "trad/trad_sc.hpp"
 #include "trad/trad_bresenham.hpp"
+#include "support/rtl_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-SetupResult scene(const std::string& spec, const RasterConfig& cfg) {
-  return setup_scene(load_scene(spec, cfg, CameraOptions{}).tris, cfg);
-}
+using test::scene;
 
 EngineResult run_rtl_trad(const SetupResult& setup, const RasterConfig& cfg, uint32_t seed = 1) {
-  EngineResult r;
-  rtl::RtlRunOptions opt;
-  opt.x_seed = seed;
-  rtl::run_rtl_trad(setup, cfg, opt, r);
-  return r;
+  return test::run_verilated(rtl::run_rtl_trad, setup, cfg, seed);
 }
 
 // Spans of the C++ model, cycles of the SystemC model, against one RTL run. Returns the number

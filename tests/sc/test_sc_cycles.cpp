@@ -15,15 +15,12 @@
 #include "common/reference_raster.hpp"
 #include "improved/improved_unit.hpp"
 #include "trad/trad_timing.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t{};
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
-}
+using test::tri;
 
 // The right triangle of the hand derivations: box 8 x 8 (x, y = 1..8), row j covers x = 1..8-j,
 // 8 spans, 36 pixels. Edges: the top one (y = 1) is horizontal (no division, in at row 0: L = 0);
@@ -215,15 +212,28 @@ TEST(ScCyclesHand, TradRowStepsSumToLineSteps) {
 
 // ---- against the cycle-by-cycle reading of docs/timing.md ----
 
-std::vector<test::RefTriangle> improved_reference_input(const SetupResult& setup,
-                                                        const RasterConfig& cfg) {
+// One reference triangle per set-up triangle: `Unit` (the unit's C++ model) runs it, and
+// `describe` fills in the reference's inputs from its result and spans.
+template <typename Unit, typename Describe>
+std::vector<test::RefTriangle> reference_input(const SetupResult& setup, const RasterConfig& cfg,
+                                               Describe describe) {
   std::vector<test::RefTriangle> out;
-  ImprovedUnit unit(cfg);
+  Unit unit(cfg);
   for (const TriangleSetup& t : setup.tris) {
     test::RefTriangle r;
     r.tri = t.index;
     SpanList spans;
-    const UnitTriangleResult u = unit.run_triangle(t, spans);
+    describe(unit.run_triangle(t, spans), spans, r);
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::vector<test::RefTriangle> improved_reference_input(const SetupResult& setup,
+                                                        const RasterConfig& cfg) {
+  return reference_input<ImprovedUnit>(setup, cfg, [](const UnitTriangleResult& u,
+                                                      const SpanList& spans,
+                                                      test::RefTriangle& r) {
     r.retire_in_setup = u.iface.empty;
     if (!u.iface.empty) {
       uint64_t L = 0;
@@ -240,20 +250,14 @@ std::vector<test::RefTriangle> improved_reference_input(const SetupResult& setup
       r.row_pixels.assign(size_t(u.iface.Ymax + 1), 0);
       for (const Span& s : spans) r.row_pixels[size_t(s.y - u.iface.y0)] = uint64_t(s.pixels());
     }
-    out.push_back(r);
-  }
-  return out;
+  });
 }
 
 std::vector<test::RefTriangle> trad_reference_input(const SetupResult& setup,
                                                     const RasterConfig& cfg) {
-  std::vector<test::RefTriangle> out;
-  TradSpanFiller filler(cfg);
-  for (const TriangleSetup& t : setup.tris) {
-    test::RefTriangle r;
-    r.tri = t.index;
-    SpanList spans;
-    const TradTriangleResult f = filler.run_triangle(t, spans);
+  return reference_input<TradSpanFiller>(setup, cfg, [](const TradTriangleResult& f,
+                                                        const SpanList& spans,
+                                                        test::RefTriangle& r) {
     r.retire_in_setup = f.verts.empty;
     if (!f.verts.empty) {
       r.setup_cycles = 3;
@@ -267,9 +271,7 @@ std::vector<test::RefTriangle> trad_reference_input(const SetupResult& setup,
       }
       for (const Span& s : spans) r.row_pixels[size_t(s.y - w.first_row())] = uint64_t(s.pixels());
     }
-    out.push_back(r);
-  }
-  return out;
+  });
 }
 
 void compare_with_reference(bool trad, const std::vector<InputTriangle>& tris, RasterConfig cfg,

@@ -11,15 +11,12 @@
 #include "golden/golden.hpp"
 #include "common/reference_raster.hpp"
 #include "halfspace/halfspace_sc.hpp"
+#include "support/scene_helpers.hpp"
 
 namespace trirast {
 namespace {
 
-InputTriangle tri(double x0, double y0, double x1, double y1, double x2, double y2) {
-  InputTriangle t{};
-  t.x[0] = x0, t.y[0] = y0, t.x[1] = x1, t.y[1] = y1, t.x[2] = x2, t.y[2] = y2;
-  return t;
-}
+using test::tri;
 
 EngineResult run_hs(const std::vector<InputTriangle>& tris, const RasterConfig& cfg) {
   const SetupResult setup = setup_scene(tris, cfg);
@@ -82,43 +79,33 @@ TEST(ScHalfspace, GoldenSpansAndSaneCyclesEverywhere) {
   auto tris = test::random_grid_triangles(rng, 150, -20, 140, -20, 100, 2, 12);
   auto big = test::random_grid_triangles(rng, 150, -20, 140, -20, 100, 8, 60);
   tris.insert(tris.end(), big.begin(), big.end());
-  for (int s : {1, 2, 4})
-    for (int t : {0, 8, 16})
-      for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag})
-        for (const char* sink : {"none", "periodic:1:3", "random:3:60"})
-          for (int depth : {1, 4}) {
-            RasterConfig cfg;
-            cfg.width = 128;
-            cfg.height = 96;
-            cfg.halfspace.stamp = s;
-            cfg.halfspace.tile = t;
-            cfg.halfspace.walk = w;
-            cfg.sink_stall = sink;
-            cfg.fifo_depth = depth;
-            const std::string what = "stamp " + std::to_string(s) + " tile " + std::to_string(t) +
-                                     " " + halfspace_walk_name(w) + " " + sink + " depth " +
-                                     std::to_string(depth);
-            const SetupResult setup = setup_scene(tris, cfg);
-            EngineResult r;
-            make_halfspace_sc_engine()->run(setup, cfg, r);
-            SpanList g;
-            for (const TriangleSetup& tr : setup.tris) golden_triangle(tr, cfg, g);
-            sort_spans(g);
-            sort_spans(r.spans);
-            EXPECT_TRUE(r.spans == g) << what;
-            uint64_t prev_accept = 0;
-            for (const TriangleCycles& c : r.cycles) {
-              EXPECT_LE(c.accept_cycle, c.first_span_cycle) << what;
-              EXPECT_LE(c.first_span_cycle, c.done_cycle) << what;
-              if (&c != &r.cycles[0]) {
-                EXPECT_GT(c.accept_cycle, prev_accept) << what;
-              }
-              prev_accept = c.accept_cycle;
-            }
-            if (std::string(sink) != "none" && depth == 1) {
-              EXPECT_GT(r.work.at("stall_cycles.walk"), 0u) << what;
-            }
+  for (const test::HalfspaceShape& shape : test::every_halfspace_shape())
+    for (const char* sink : {"none", "periodic:1:3", "random:3:60"})
+      for (int depth : {1, 4}) {
+        RasterConfig cfg = test::with_halfspace_shape(test::config_at(8, 128, 96), shape);
+        cfg.sink_stall = sink;
+        cfg.fifo_depth = depth;
+        const std::string what = test::halfspace_shape_name(shape) + " " + sink + " depth " +
+                                 std::to_string(depth);
+        const SetupResult setup = setup_scene(tris, cfg);
+        EngineResult r;
+        make_halfspace_sc_engine()->run(setup, cfg, r);
+        const SpanList g = test::golden_spans(setup, cfg);
+        sort_spans(r.spans);
+        EXPECT_TRUE(r.spans == g) << what;
+        uint64_t prev_accept = 0;
+        for (const TriangleCycles& c : r.cycles) {
+          EXPECT_LE(c.accept_cycle, c.first_span_cycle) << what;
+          EXPECT_LE(c.first_span_cycle, c.done_cycle) << what;
+          if (&c != &r.cycles[0]) {
+            EXPECT_GT(c.accept_cycle, prev_accept) << what;
           }
+          prev_accept = c.accept_cycle;
+        }
+        if (std::string(sink) != "none" && depth == 1) {
+          EXPECT_GT(r.work.at("stall_cycles.walk"), 0u) << what;
+        }
+      }
 }
 
 }  // namespace
