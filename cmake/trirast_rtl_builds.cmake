@@ -165,7 +165,8 @@ function(trirast_add_rtl_builds)
       message(FATAL_ERROR "scripts/gen_sim_top.py failed for ${_unit_top}")
     endif()
     configure_file(${_gen}/scratch/${_unit_top}_sim.sv ${_gen}/${_unit_top}_sim.sv COPYONLY)
-    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_dut})
+    set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_dut}
+                 ${A_ROOT}/rtl/common/trirast_ports.svh)
   endforeach()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${A_ROOT}/scripts/gen_sim_top.py)
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The Verilator harness's top around a unit (cmake/trirast_rtl_builds.cmake; not part of a unit).
 
-Reads the ANSI module header of DUT (its parameters and ports, as written in rtl/) and writes
+Reads the ANSI module header of DUT (its parameters and ports, as written in rtl/, with the port
+bundle macros of rtl/common/trirast_ports.svh expanded by Verilator's preprocessor) and writes
 module NAME with the same parameters and ports around one instance u_dut, with two differences,
 both of the simulation's surroundings, not of the unit:
   * the configuration register: every cfg_* input reaches u_dut through a flip-flop loaded every
@@ -14,11 +15,15 @@ both of the simulation's surroundings, not of the unit:
     names. WIDTH is a number or an expression over the unit's parameters.
 
   scripts/gen_sim_top.py --dut rtl/improved/trirast_improved_top.sv --top trirast_improved_top --name trirast_improved_top_sim \
-      --out DIR/trirast_improved_top_sim.sv [--probe PORT WIDTH EXPR ...]
+      --out DIR/trirast_improved_top_sim.sv [--include DIR] [--probe PORT WIDTH EXPR ...]
 """
 import argparse
+import os
 import re
+import subprocess
 import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def main():
@@ -28,27 +33,41 @@ def main():
     ap.add_argument("--name", required=True, help="the generated module")
     ap.add_argument("--out", required=True)
     ap.add_argument("--clock", default="clk_i")
+    ap.add_argument("--include", default=os.path.join(ROOT, "rtl", "common"),
+                    help="the include folder of the unit's macros (default rtl/common)")
+    ap.add_argument("--verilator", default="verilator", help="the Verilator to preprocess with")
     ap.add_argument("--probe", nargs=3, action="append", default=[],
                     metavar=("PORT", "WIDTH", "EXPR"))
     a = ap.parse_args()
-    text = open(a.dut).read()
+    try:
+        pre = subprocess.run([a.verilator, "-E", "-P", "-I" + a.include, a.dut],
+                             capture_output=True, text=True)
+    except OSError as e:
+        sys.exit(f"gen_sim_top.py: {a.verilator}: {e.strerror}")
+    if pre.returncode != 0:
+        sys.exit(f"gen_sim_top.py: {a.dut}: Verilator's preprocessor failed: "
+                 f"{pre.stderr.strip().splitlines()[0] if pre.stderr.strip() else pre.returncode}")
+    text = pre.stdout
     m = re.search(r"^module\s+" + re.escape(a.top) + r"\s*(#\s*\((.*?)\))?\s*\((.*?)\);",
                   text, re.S | re.M)
     if not m:
         sys.exit(f"gen_sim_top.py: {a.dut}: no ANSI header of module {a.top}")
     params_text, ports_text = m.group(2) or "", m.group(3)
+    params_text = "\n".join(line.rstrip() for line in params_text.splitlines())
     # parameter [type] [range] NAME = ...
     params = re.findall(r"parameter\s+(?:\w+\s+)?(?:\[[^\]]*\]\s*)?(\w+)\s*=", params_text)
     if len(params) != len(re.findall(r"\bparameter\b", params_text)):
         sys.exit(f"gen_sim_top.py: {a.dut}: cannot read every parameter of {a.top}")
     ports = []  # (direction, range, name)
-    for line in ports_text.splitlines():
-        line = line.split("//")[0].strip()
-        pm = re.match(r"(input|output)\s+logic\s*(\[[^\]]*\])?\s*(\w+)\s*,?$", line)
+    # One port per comma-separated item (a range holds no comma; the preprocessor has removed
+    # the comments and put a macro's ports on one line).
+    for item in re.sub(r"\s+", " ", ports_text).split(","):
+        item = item.strip()
+        pm = re.fullmatch(r"(input|output) logic ?(\[[^\]]*\])? ?(\w+)", item)
         if pm:
             ports.append((pm.group(1), pm.group(2) or "", pm.group(3)))
-        elif line:
-            sys.exit(f"gen_sim_top.py: {a.dut}: cannot read the port line '{line}'")
+        elif item:
+            sys.exit(f"gen_sim_top.py: {a.dut}: cannot read the port '{item}'")
     names = {p[2] for p in ports}
     cfg = [p for p in ports if p[0] == "input" and p[2].startswith("cfg_")]
     if a.clock not in names:

@@ -98,13 +98,7 @@ module trirast_box_stage (
     {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d, x0_d, y0_d, xmax_d, ymax_d} =
         {tag_q, vx_q, vy_q, a_q, b_q, c_q, bias_q, x0_q, y0_q, xmax_q, ymax_q};
     if (accept_i) begin
-      tag_d  = tag_i;
-      vx_d   = vx_i;
-      vy_d   = vy_i;
-      a_d    = a_i;
-      b_d    = b_i;
-      c_d    = c_i;
-      bias_d = bias_i;
+      {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d} = {tag_i, vx_i, vy_i, a_i, b_i, c_i, bias_i};
     end
     if (box_i) begin
       // The box fits BoxBits (the harness rejects larger ones, as the model does).
