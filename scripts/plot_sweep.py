@@ -65,6 +65,27 @@ def fmt_area(s, key, merged=False):
     return v
 
 
+def fmt_cracks(s):
+    """A configuration's (or a scene's) cracks and double hits, blank where not counted."""
+    return f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}"
+
+
+def fmt_cycles(s, key, digits):
+    """Cycles per triangle or per pixel, "-" for an untimed engine."""
+    return f"{s[key]:.{digits}f}" if key in s else "-"
+
+
+def error_cells(s):
+    """A configuration's error columns: mean and max ppm, rejected triangles, cracks / doubles."""
+    return [fmt_ppm(s["error_ppm"]), fmt_ppm(s["max_error_ppm"]), fmt_int(s["rejected"]),
+            fmt_cracks(s)]
+
+
+def area_cells(s, merged):
+    """A configuration's LUTs and FFs, marked where estimated or read from docs/synth.csv."""
+    return [fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged)]
+
+
 def rel(path):
     """A path of this machine as the report names it: relative to the repository."""
     return path.replace(ROOT + "/", "") if isinstance(path, str) else path
@@ -413,12 +434,8 @@ def main():
         rows = []
         for i, p in enumerate(front):
             s = p["summary"]
-            rows.append([str(i + 1), p["engine"], f"`{p['config']}`",
-                         fmt_ppm(s["error_ppm"]), fmt_ppm(s["max_error_ppm"]),
-                         fmt_int(s["rejected"]),
-                         f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
-                         f"{s['cycles_per_triangle']:.2f}" if "cycles_per_triangle" in s else "-",
-                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged)])
+            rows.append([str(i + 1), p["engine"], f"`{p['config']}`", *error_cells(s),
+                         fmt_cycles(s, "cycles_per_triangle", 2), *area_cells(s, merged)])
         L.append(f"The {what} front of buildable hardware (error, "
                  f"{'cycles per triangle' if what == 'cycles' else 'LUTs'}):\n")
         L.append(table(["#", "engine", "configuration", "error ppm (mean)", "max ppm", "rejected",
@@ -435,11 +452,8 @@ def main():
         rows = []
         for p in whatif:
             s = p["summary"]
-            rows.append([p["engine"], f"`{p['config']}`", fmt_ppm(s["error_ppm"]),
-                         fmt_ppm(s["max_error_ppm"]), fmt_int(s["rejected"]),
-                         f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
-                         f"{s['cycles_per_triangle']:.2f}" if "cycles_per_triangle" in s else "-",
-                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
+            rows.append([p["engine"], f"`{p['config']}`", *error_cells(s),
+                         fmt_cycles(s, "cycles_per_triangle", 2), *area_cells(s, merged),
                          ", ".join(w for w, f in (("cycles", "whatif_cycles"),
                                                   ("area", "whatif_area")) if s.get(f))])
         L.append(f"{len(whatif)} configurations with quotient truncation `K` (C++ model only: no "
@@ -638,7 +652,7 @@ def main():
             s = p["summary"]
             row += [fmt_ppm(s["error_ppm"]) + f" ({fmt_ppm(s['missing_ppm'])} / "
                     f"{fmt_ppm(s['extra_ppm'])})",
-                    f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}"]
+                    fmt_cracks(s)]
         rows.append(row)
     L.append("Error ppm (missing / extra) and cracks / double hits on the closed meshes. The "
              "improved unit at S < 8 follows the exact rule on vertices snapped to S bits: it has "
@@ -661,12 +675,9 @@ def main():
         rows = []
         for p in sel:
             s = p["summary"]
-            rows.append([p["engine"], f"`{p['config']}`", fmt_ppm(s["error_ppm"]),
-                         fmt_ppm(s["max_error_ppm"]), fmt_int(s["rejected"]),
-                         f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
-                         f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
-                         f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                         fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged),
+            rows.append([p["engine"], f"`{p['config']}`", *error_cells(s),
+                         fmt_cycles(s, "cycles_per_triangle", 3),
+                         fmt_cycles(s, "cycles_per_pixel", 4), *area_cells(s, merged),
                          f"{s['wall_ratio']:.2f}"])
         L.append(table(["engine", "configuration", "error ppm", "max ppm", "rejected",
                         "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",
@@ -723,8 +734,7 @@ def main():
             row = [engine, f"`{cfg}`"]
             for i in closed:
                 r = p["scenes"][i]
-                row.append(f"{fmt_int(r.get('cracks'))} / {fmt_int(r.get('doubles'))}"
-                           if "cracks" in r else "-")
+                row.append(fmt_cracks(r) if "cracks" in r else "-")
             rows.append(row)
         L.append("Truncated quotients (K) make double hits: a saturated bound is read as \"beyond "
                  "the box\", so an edge stops bounding its span and the triangle spills over its "
@@ -799,10 +809,9 @@ def main():
         s = p["summary"]
         rows.append([p["engine"], p["group"], f"`{p['config']}`", fmt_ppm(s["error_ppm"]),
                      fmt_ppm(s["missing_ppm"]), fmt_ppm(s["extra_ppm"]), fmt_int(s["rejected"]),
-                     f"{fmt_int(s.get('cracks'))} / {fmt_int(s.get('doubles'))}",
-                     f"{s['cycles_per_triangle']:.3f}" if "cycles_per_triangle" in s else "-",
-                     f"{s['cycles_per_pixel']:.4f}" if "cycles_per_pixel" in s else "-",
-                     fmt_area(s, "luts", merged), fmt_area(s, "ffs", merged), f"{s['wall_ratio']:.2f}",
+                     fmt_cracks(s), fmt_cycles(s, "cycles_per_triangle", 3),
+                     fmt_cycles(s, "cycles_per_pixel", 4), *area_cells(s, merged),
+                     f"{s['wall_ratio']:.2f}",
                      str(s["failures"]) if s["failures"] else ""])
     L.append(table(["engine", "group", "configuration", "error ppm", "missing ppm", "extra ppm",
                     "rejected", "cracks / doubles", "cycles/tri", "cycles/pixel", "LUTs", "FFs",

@@ -318,13 +318,19 @@ fi
 
 # Longest jobs first (the default unit's place and route and the big syntheses).
 SHELL_SV="$ROOT/rtl/common/trirast_synth_shell.sv"
+# pnr_wrapper JOB UNIT CONFIG WRAPPER [bram]: job pnr.JOB places and routes the wrapper gen_wrapper
+# wrote ($WORK/CONFIG/WRAPPER.sv) in the synthesis shell, when it was generated.
+pnr_wrapper() {
+  local job="$1" unit="$2" cfg="$3" wrapper="$4"
+  if [ -f "$WORK/$cfg/$wrapper.sv" ]; then
+    run_job "pnr.$job" pnr "$job" "$unit" "$cfg" "$wrapper" "" "$SHELL_SV $WORK/$cfg/$wrapper.sv" \
+      ${5:+"$5"}
+  fi
+}
 run_job pnr.improved.setup pnr improved.setup improved default trirast_synth_setup "" \
   "$SHELL_SV $WORK/default/trirast_synth_setup.sv"
 for unit in $HS_UNITS; do
-  s="${unit#halfspace-s}"
-  [ -f "$WORK/default/trirast_synth_hs_s$s.sv" ] &&
-    run_job "pnr.$unit.default" pnr "$unit.default" "$unit" default "trirast_synth_hs_s$s" "" \
-      "$SHELL_SV $WORK/default/trirast_synth_hs_s$s.sv"
+  pnr_wrapper "$unit.default" "$unit" default "trirast_synth_hs_s${unit#halfspace-s}"
 done
 for cfg in $CONFIGS; do
   name="${cfg%%:*}"
@@ -340,25 +346,15 @@ for unit in $HS_UNITS $I2_UNITS; do
   done
 done
 for cfg in default "$FIT_CONFIG"; do
-  [ -f "$WORK/$cfg/trirast_synth_improved2.sv" ] &&
-    run_job "pnr.improved2.$cfg" pnr "improved2.$cfg" improved2 "$cfg" trirast_synth_improved2 "" \
-      "$SHELL_SV $WORK/$cfg/trirast_synth_improved2.sv" bram
+  pnr_wrapper "improved2.$cfg" improved2 "$cfg" trirast_synth_improved2 bram
 done
 for unit in $HS_UNITS; do
-  s="${unit#halfspace-s}"
-  [ -f "$WORK/default/trirast_synth_hs_walker_s$s.sv" ] &&
-    run_job "pnr.$unit.walker" pnr "$unit.walker" "$unit" default "trirast_synth_hs_walker_s$s" "" \
-      "$SHELL_SV $WORK/default/trirast_synth_hs_walker_s$s.sv"
+  pnr_wrapper "$unit.walker" "$unit" default "trirast_synth_hs_walker_s${unit#halfspace-s}"
 done
 for unit in $HS_UNITS; do
-  s="${unit#halfspace-s}"
-  [ -f "$WORK/$FIT_CONFIG/trirast_synth_hs_s$s.sv" ] &&
-    run_job "pnr.$unit.$FIT_CONFIG" pnr "$unit.$FIT_CONFIG" "$unit" "$FIT_CONFIG" "trirast_synth_hs_s$s" "" \
-      "$SHELL_SV $WORK/$FIT_CONFIG/trirast_synth_hs_s$s.sv"
+  pnr_wrapper "$unit.$FIT_CONFIG" "$unit" "$FIT_CONFIG" "trirast_synth_hs_s${unit#halfspace-s}"
 done
-[ -f "$WORK/default/trirast_synth_hs_setup.sv" ] &&
-  run_job pnr.halfspace.setup pnr halfspace.setup "${HS_UNITS%% *}" default trirast_synth_hs_setup "" \
-    "$SHELL_SV $WORK/default/trirast_synth_hs_setup.sv"
+pnr_wrapper halfspace.setup "${HS_UNITS%% *}" default trirast_synth_hs_setup
 run_job pnr.improved.walk pnr improved.walk improved default trirast_improved_synth_walk "" \
   "$SHELL_SV $ROOT/rtl/improved/trirast_improved_synth_walk.sv"
 run_job pnr.improved.walk_fifo pnr improved.walk_fifo improved default trirast_improved_synth_walk \
@@ -370,9 +366,7 @@ run_job "pnr.improved.$FIT_CONFIG" pnr "improved.$FIT_CONFIG" improved "$FIT_CON
 if [[ " $UNITS " == *" trad "* ]]; then
   for cfg in $CONFIGS; do
     name="${cfg%%:*}"
-    [ -f "$WORK/$name/trirast_synth_trad.sv" ] &&
-      run_job "pnr.trad.$name" pnr "trad.$name" trad "$name" trirast_synth_trad "" \
-        "$SHELL_SV $WORK/$name/trirast_synth_trad.sv"
+    pnr_wrapper "trad.$name" trad "$name" trirast_synth_trad
   done
 fi
 wait

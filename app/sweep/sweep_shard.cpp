@@ -123,6 +123,11 @@ class Fields {
     if (!v.is_string()) throw malformed(key);
     return v.get<std::string>();
   }
+  // The member `key` into v, by v's type (point_result_fields).
+  void read(const char* key, uint64_t& v) const { v = u64(key); }
+  void read(const char* key, int64_t& v) const { v = i64(key); }
+  void read(const char* key, double& v) const { v = dbl(key); }
+  void read(const char* key, std::string& v) const { v = str(key); }
   Fields object(const char* key) const {
     const nlohmann::json& v = at(key);
     if (!v.is_object()) throw malformed(key);
@@ -187,45 +192,38 @@ nlohmann::json read_result_file(const std::string& path, const char* kind) {
   return j;
 }
 
+// A point's result record, member by member in file order with its key: the one list the writer
+// (point_result_record) and the reader (point_result_from) go through. Result is PointResult,
+// const or not.
+template <class Result, class Visit>
+void point_result_fields(Result& r, Visit visit) {
+  visit("read", r.read);
+  visit("offered", r.offered);
+  visit("degenerate", r.degenerate);
+  visit("culled", r.culled);
+  visit("rejected_range", r.rejected_range);
+  visit("rejected_width", r.rejected_width);
+  visit("spans", r.spans);
+  visit("pixels", r.pixels);
+  visit("missing", r.missing);
+  visit("extra", r.extra);
+  visit("cracks", r.cracks);
+  visit("doubles", r.doubles);
+  visit("total_cycles", r.total_cycles);
+  visit("divider_iterations", r.divider_iterations);
+  visit("wall_seconds", r.wall_seconds);
+  visit("error", r.error);
+}
+
 ordered_json point_result_record(const PointResult& r) {
   ordered_json j = ordered_json::object();
-  j["read"] = r.read;
-  j["offered"] = r.offered;
-  j["degenerate"] = r.degenerate;
-  j["culled"] = r.culled;
-  j["rejected_range"] = r.rejected_range;
-  j["rejected_width"] = r.rejected_width;
-  j["spans"] = r.spans;
-  j["pixels"] = r.pixels;
-  j["missing"] = r.missing;
-  j["extra"] = r.extra;
-  j["cracks"] = r.cracks;
-  j["doubles"] = r.doubles;
-  j["total_cycles"] = r.total_cycles;
-  j["divider_iterations"] = r.divider_iterations;
-  j["wall_seconds"] = r.wall_seconds;
-  j["error"] = r.error;
+  point_result_fields(r, [&](const char* key, const auto& v) { j[key] = v; });
   return j;
 }
 
 PointResult point_result_from(const Fields& f) {
   PointResult r;
-  r.read = f.u64("read");
-  r.offered = f.u64("offered");
-  r.degenerate = f.u64("degenerate");
-  r.culled = f.u64("culled");
-  r.rejected_range = f.u64("rejected_range");
-  r.rejected_width = f.u64("rejected_width");
-  r.spans = f.u64("spans");
-  r.pixels = f.i64("pixels");
-  r.missing = f.i64("missing");
-  r.extra = f.i64("extra");
-  r.cracks = f.i64("cracks");
-  r.doubles = f.i64("doubles");
-  r.total_cycles = f.u64("total_cycles");
-  r.divider_iterations = f.u64("divider_iterations");
-  r.wall_seconds = f.dbl("wall_seconds");
-  r.error = f.str("error");
+  point_result_fields(r, [&](const char* key, auto& v) { f.read(key, v); });
   return r;
 }
 

@@ -50,6 +50,31 @@ class Engine {
   virtual void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) = 0;
 };
 
+// The untimed engine of a datapath model whose triangles are independent: a fresh Unit for the
+// run's configuration takes every set-up triangle in order, appending its spans, and add_work
+// adds what Unit::run_triangle returned into the work counters (the improved, trad and halfspace
+// units; improved2 counts its triangles by kind and keeps its own engine).
+template <class Unit, class AddWork>
+class DatapathEngine : public Engine {
+ public:
+  explicit DatapathEngine(AddWork add_work) : add_work_(add_work) {}
+  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
+    Unit unit(cfg);
+    for (const TriangleSetup& t : setup.tris) {
+      add_work_(unit.run_triangle(t, out.spans), out.work);
+      ++out.work["triangles"];
+    }
+  }
+
+ private:
+  AddWork add_work_;
+};
+
+template <class Unit, class AddWork>
+std::unique_ptr<Engine> make_datapath_engine(AddWork add_work) {
+  return std::make_unique<DatapathEngine<Unit, AddWork>>(add_work);
+}
+
 struct EngineInfo {
   std::string name;         // the --engine value
   std::string description;  // one line for --help

@@ -16,6 +16,7 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
+#include <exception>
 #include <map>
 #include <string>
 #include <systemc>
@@ -40,6 +41,25 @@ enum WalkState : uint64_t { StWalkIdle = 0, StWalk = 1 };
 // Adds `v` to the work counter `key` of a run's result.
 inline void add_counter(std::map<std::string, uint64_t>& work, const std::string& key, uint64_t v) {
   work[key] += v;
+}
+
+// The body of a unit's one SC_THREAD: waits for each run its begin_run releases (pending set,
+// start_ev notified) and runs it (process_run); an exception of the datapath ends the run and is
+// kept for the engine's run() to rethrow (the process itself must survive for the next run).
+// `run` is read after each run, as begin_run points it at the run under way.
+template <class ProcessRun>
+void serve_runs(bool& pending, const sc_core::sc_event& start_ev, RunState* const& run,
+                ProcessRun process_run) {
+  for (;;) {
+    while (!pending) sc_core::wait(start_ev);
+    pending = false;
+    try {
+      process_run();
+    } catch (...) {
+      if (!run->error) run->error = std::current_exception();
+    }
+    run->finished = true;
+  }
 }
 
 // ---- setup stage -------------------------------------------------------------------------------
@@ -110,19 +130,8 @@ class SetupStageBase : public sc_core::sc_module {
   Txn txn_[2];  // double-buffered hand-off registers: the walk stage holds the other one
 
  private:
-  // Waits for begin_run; an exception of the datapath ends the run and is kept for the engine's
-  // run() to rethrow (the process itself must survive for the next run).
   void thread() {
-    for (;;) {
-      while (!pending_) wait(start_ev_);
-      pending_ = false;
-      try {
-        process_run();
-      } catch (...) {
-        if (!run_->error) run_->error = std::current_exception();
-      }
-      run_->finished = true;
-    }
+    serve_runs(pending_, start_ev_, run_, [this] { process_run(); });
   }
 
   void process_run() {

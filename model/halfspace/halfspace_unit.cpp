@@ -92,21 +92,11 @@ void add_hs_work(const HalfspaceWork& w, std::map<std::string, uint64_t>& work) 
   work["pixels"] += w.pixels;
 }
 
-namespace {
-
-class HalfspaceEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    HalfspaceUnit unit(cfg);
-    for (const TriangleSetup& t : setup.tris) {
-      add_hs_work(unit.run_triangle(t, out.spans).work, out.work);
-      ++out.work["triangles"];
-    }
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_halfspace_datapath_engine() { return std::make_unique<HalfspaceEngine>(); }
+std::unique_ptr<Engine> make_halfspace_datapath_engine() {
+  return make_datapath_engine<HalfspaceUnit>(
+      [](const HalfspaceTriangleResult& r, std::map<std::string, uint64_t>& work) {
+        add_hs_work(r.work, work);
+      });
+}
 
 }  // namespace trirast

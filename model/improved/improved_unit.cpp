@@ -78,22 +78,11 @@ void add_work(const TriangleWork& w, std::map<std::string, uint64_t>& work) {
   work["pixels"] += w.pixels;
 }
 
-namespace {
-
-class UnitEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    ImprovedUnit unit(cfg);
-    for (const TriangleSetup& t : setup.tris) {
-      const UnitTriangleResult r = unit.run_triangle(t, out.spans);
-      add_work(r.work, out.work);
-      ++out.work["triangles"];
-    }
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_improved_datapath_engine() { return std::make_unique<UnitEngine>(); }
+std::unique_ptr<Engine> make_improved_datapath_engine() {
+  return make_datapath_engine<ImprovedUnit>(
+      [](const UnitTriangleResult& r, std::map<std::string, uint64_t>& work) {
+        add_work(r.work, work);
+      });
+}
 
 }  // namespace trirast

@@ -38,16 +38,7 @@ void Improved2UnitSc::run(RunState& r) {
 }
 
 void Improved2UnitSc::thread() {
-  for (;;) {
-    while (!pending_) wait(start_ev_);
-    pending_ = false;
-    try {
-      process_run();
-    } catch (...) {
-      if (!run_->error) run_->error = std::current_exception();
-    }
-    run_->finished = true;
-  }
+  serve_runs(pending_, start_ev_, run_, [this] { process_run(); });
 }
 
 SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {

@@ -163,22 +163,8 @@ void add_trad_work(const TradTriangleResult& r, std::map<std::string, uint64_t>&
   work["trad_collinear"] += r.verts.empty ? 1 : 0;
 }
 
-namespace {
-
-class TradEngine : public Engine {
- public:
-  void run(const SetupResult& setup, const RasterConfig& cfg, EngineResult& out) override {
-    TradSpanFiller filler(cfg);
-    for (const TriangleSetup& t : setup.tris) {
-      const TradTriangleResult r = filler.run_triangle(t, out.spans);
-      add_trad_work(r, out.work);
-      ++out.work["triangles"];
-    }
-  }
-};
-
-}  // namespace
-
-std::unique_ptr<Engine> make_trad_datapath_engine() { return std::make_unique<TradEngine>(); }
+std::unique_ptr<Engine> make_trad_datapath_engine() {
+  return make_datapath_engine<TradSpanFiller>(add_trad_work);
+}
 
 }  // namespace trirast

@@ -10,6 +10,7 @@
 #include <string>
 #include <type_traits>
 
+#include "common/engine.hpp"
 #include "common/setup.hpp"
 #include "common/span.hpp"
 #include "common/unit_widths.hpp"
@@ -77,6 +78,24 @@ void drive_edge_triangle(Top& top, const TriangleSetup& t) {
   drive(top.tri_c_i, c, words(3 * P::kEdgeBits));
   top.tri_bias_i = bias;
 }
+
+// The ports of a unit whose box stage comes first and may retire a triangle (trirast_improved_top,
+// trirast_halfspace_top), as the cycle loop (cycle_loop.hpp) reads them: the triangle port at
+// the widths P, the box the walk stage takes at the hand-off, and a box that clips to nothing
+// retiring in the box stage.
+template <class Top, class P>
+struct BoxStagePorts {
+  void offer(Top& top, const TriangleSetup& t) const { drive_edge_triangle<P>(top, t); }
+  void observe_handoff(const Top& top, TriangleCycles& tc) const {
+    tc.box_width = uint64_t(top.box_xmax_o) + 1;
+    tc.box_height = uint64_t(top.box_ymax_o) + 1;
+  }
+  bool early_retire(const Top& top, size_t& tag) const {
+    if (!top.box_retire_o) return false;
+    tag = top.box_retire_tag_o;
+    return true;
+  }
+};
 
 // Before a run of a unit with edge-function ports: runs its bit-accurate model Unit on every
 // triangle, so that one the widths P do not hold raises the model's WidthError naming it (the RTL

@@ -16,7 +16,7 @@
 namespace trirast::rtl {
 
 template <class Top, class P>
-struct HalfspacePorts {
+struct HalfspacePorts : BoxStagePorts<Top, P> {  // offer, observe_handoff, early_retire
   // rtl/halfspace/trirast_halfspace_setup_stage.sv; the tile walker (rtl/halfspace/trirast_halfspace_tile_walker.sv) is the walk
   // stage's state machine.
   static inline const UnitStates kStates = {
@@ -24,19 +24,7 @@ struct HalfspacePorts {
       {{0, "WIdle"}, {1, "WUnit"}, {2, "WStamp"}, {3, "WWait"}, {4, "WDrain"}}};
 
   void configure(Top&, const RasterConfig&) const {}  // viewport and FIFO only
-  void offer(Top& top, const TriangleSetup& t) const {
-    drive_edge_triangle<P>(top, t);
-  }
   void observe_setup(const Top&, TriangleCycles&) const {}
-  void observe_handoff(const Top& top, TriangleCycles& tc) const {
-    tc.box_width = uint64_t(top.box_xmax_o) + 1;
-    tc.box_height = uint64_t(top.box_ymax_o) + 1;
-  }
-  bool early_retire(const Top& top, size_t& tag) const {
-    if (!top.box_retire_o) return false;
-    tag = top.box_retire_tag_o;
-    return true;
-  }
   // The modules as the model counts them (model/halfspace/halfspace_sc.cpp, stage_skeleton.hpp): the
   // setup stage is busy in StBox and StEdge and stalled in StHold while the walk stage is busy;
   // the tile walker (and the walk stage) works on a band in WUnit and WStamp and waits in WWait

@@ -26,7 +26,7 @@ enum ImprovedModule : int {
 enum : unsigned { kRtlStIdle = 0, kRtlStBox = 1, kRtlStEdge = 2, kRtlStLanes = 3, kRtlStHold = 4 };
 
 template <class Top, class P, int kBuildEndpoints>
-struct ImprovedPorts {
+struct ImprovedPorts : BoxStagePorts<Top, P> {  // offer, observe_handoff, early_retire
   // rtl/improved/trirast_improved_setup_stage.sv, trirast_improved_walk_stage.sv.
   static inline const UnitStates kStates = {
       {{0, "StIdle"}, {1, "StBox"}, {2, "StEdge"}, {3, "StLanes"}, {4, "StHold"}}, kWalkStageStates};
@@ -38,9 +38,6 @@ struct ImprovedPorts {
     endpoints = unsigned(cfg.endpoints);
   }
   unsigned endpoints = 1;  // rows per group (cfg_endpoints_i)
-  void offer(Top& top, const TriangleSetup& t) const {
-    drive_edge_triangle<P>(top, t);
-  }
   // The lanes' work while the triangle is set up: a busy lane does a divider iteration or a
   // boundary column step.
   // Lanes work only while a triangle is in the setup stage, so these are also the run's totals.
@@ -51,16 +48,6 @@ struct ImprovedPorts {
     tc.boundary_steps += steps;
     work_.divider_iterations += iterations;
     work_.boundary_steps += steps;
-  }
-  void observe_handoff(const Top& top, TriangleCycles& tc) const {
-    tc.box_width = uint64_t(top.box_xmax_o) + 1;
-    tc.box_height = uint64_t(top.box_ymax_o) + 1;
-  }
-  // A box that clips to nothing retires in the box stage.
-  bool early_retire(const Top& top, size_t& tag) const {
-    if (!top.box_retire_o) return false;
-    tag = top.box_retire_tag_o;
-    return true;
   }
   // The model's definitions (model/improved/improved_sc.cpp, stage_skeleton.hpp): the setup stage is
   // busy in StBox..StLanes and stalls in StHold while the walk stage is busy; the interface works
