@@ -1,24 +1,21 @@
 // The port bundles the units share, spelled once: the triangle port, the span port, the timing
-// observation, the hand-off's box and the improved units' edge hand-off, each as a declaration
-// macro and a connection macro; and the two register forms every stage uses.
+// observation, the hand-offs and the improved units' lane results, each as a declaration macro
+// and a connection macro; the control register with its reset; the package's names.
 // Macros, not packed structs: Icarus 11 aborts on a package-scoped struct type and Yosys 0.23
-// refuses `import` (docs/rtl.md, "Port bundles"). A macro expands to the same declarations in
+// refuses `import` (docs/rtl.md, "Port bundles and register macros"). A macro expands to the same declarations in
 // every tool, so the synthesized netlists do not depend on it.
 // Widths are trirast_pkg's (rtl/common/trirast_pkg.sv); a macro that names CountBits needs the
 // including module's parameter of that name.
 `ifndef TRIRAST_PORTS_SVH
 `define TRIRAST_PORTS_SVH
 
-// ---- registers (clock clk_i, active-low asynchronous reset rst_ni) ----
-// A control register with its reset value; a datapath register without reset (written before it
-// is read).
+// ---- a control register with its reset value (clock clk_i, active-low asynchronous reset
+// rst_ni; datapath registers have no reset: they are written before they are read) ----
 `define TRIRAST_FLOP_AR(q, d, reset_value) \
   always_ff @(posedge clk_i or negedge rst_ni) begin \
     if (!rst_ni) q <= reset_value; \
     else q <= d; \
   end
-`define TRIRAST_FLOP(q, d) \
-  always_ff @(posedge clk_i) q <= d;
 
 // ---- every top's clock, reset and viewport (static configuration: the viewport's width - 1 and
 // height - 1, the last pixel's index) ----
@@ -30,7 +27,8 @@
 
 // ---- the triangle port: one set-up triangle per valid/ready handshake ----
 //   tri_tag_i : returned with the triangle's spans
-//   tri_vx_i, tri_vy_i : vertex k at [k*VertexBits +: VertexBits], signed, 1/256 pixel
+//   tri_vx_i, tri_vy_i : vertex k at [k*VertexBits +: VertexBits], signed, in 1/2^SubpixelBits
+//                        pixel (1/256 at the default S = 8)
 //   tri_a_i, tri_b_i : edge k's A and B at [k*CoefBits +: CoefBits], signed
 //   tri_c_i : edge k's C at [k*EdgeBits +: EdgeBits], signed
 //   tri_bias_i : bit k = 1: edge k's bias is -1 (the coverage rule's tie-break)
