@@ -98,9 +98,19 @@ module trirast_improved_edge_walker #(
         {mirror_q, dir_q, ssat_q, enters_q, d_q, qs_q, rs_q, ee_q, je_q, est_q, ex_q, st_q, x_q,
          e_q};
     if (load_i) begin
-      {mirror_d, dir_d, ssat_d, enters_d, d_d, qs_d, rs_d, ee_d, je_d, est_d, ex_d} =
-          {mirror_i, dir_down_i, ssat_i, enters_i, d_i, qs_i, rs_i, entry_e_i, j_entry_i,
-           entry_state_i, entry_x_i};
+      // One assignment each: as a single concatenation this load maps to 93 more xc7 LUTs at the
+      // small widths (ABC; the same logic).
+      mirror_d = mirror_i;
+      dir_d    = dir_down_i;
+      ssat_d   = ssat_i;
+      enters_d = enters_i;
+      d_d      = d_i;
+      qs_d     = qs_i;
+      rs_d     = rs_i;
+      ee_d     = entry_e_i;
+      je_d     = j_entry_i;
+      est_d    = entry_state_i;
+      ex_d     = entry_x_i;
       // Row 0: before the entry the edge is out (dir +) or clear (dir -).
       if (enters_i && j_entry_i == '0) begin
         st_d = entry_state_i;
