@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 
 namespace trirast {
 
@@ -87,7 +87,7 @@ void RasterConfig::validate() const {
   if (fifo_depth < endpoints || fifo_depth > 1024)
     throw std::invalid_argument("--fifo-depth: " + std::to_string(fifo_depth) + " is outside " +
                                 std::to_string(endpoints) + "..1024 (at least --endpoints)");
-  SinkPattern::parse(sink_stall);  // throws with a message naming --sink-stall
+  make_span_downstream(sink_stall);  // throws with a message naming --sink-stall
   if (improved2.corner_form != 0 && improved2.corner_form != 1)
     throw std::invalid_argument("--corner-form: " + std::to_string(improved2.corner_form) +
                                 " is not 0 (dsp) or 1 (radix16)");

@@ -2,9 +2,13 @@
 // culling, and the unit's hardware parameters.
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <memory>
 #include <string>
 
 namespace trirast {
+
+class SpanDownstream;
 
 enum class CullMode { None, Back, Front };
 
@@ -79,7 +83,10 @@ struct RasterConfig {
   // ---- timing (docs/timing.md): used by the cycle-level engines (model, rtl, trad) ----
   int endpoints = 1;                // N: rows the walk stage processes per cycle (1, 2, 4)
   int fifo_depth = 8;               // span FIFO entries (>= endpoints)
-  std::string sink_stall = "none";  // sink ready pattern (core/sink_pattern.hpp)
+  std::string sink_stall = "none";  // the downstream's ready (common/span_downstream.hpp)
+  // A program's own downstream (docs/embedding.md): when set, every run of a cycle-level engine
+  // gets a fresh one from it in place of the one sink_stall names.
+  std::function<std::unique_ptr<SpanDownstream>()> downstream;
 
   // ---- traces of the cycle-level engines ----
   std::string trace_path;           // empty: no trace

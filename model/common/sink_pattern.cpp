@@ -55,7 +55,7 @@ SinkPattern SinkPattern::parse(const std::string& text) {
     return p;
   }
   throw std::invalid_argument("--sink-stall: '" + text +
-                              "': expected none, periodic:READY:STALL or random:SEED:PERCENT");
+                              "': expected none, periodic:READY:STALL, random:SEED:PERCENT or queue:RATE:CAPACITY");
 }
 
 uint64_t SinkPattern::next_ready(uint64_t c) const {
