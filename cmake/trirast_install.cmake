@@ -1,35 +1,37 @@
 # `cmake --install BUILD --prefix P`: the C++ model library as a CMake package and a pkg-config
 # file, so that another project uses it with find_package(trirast) (docs/embedding.md):
 #   P/lib/libtrirast_model.a                 trirast_model (model/, without the SystemC models)
+#   P/lib/libtrirast_sc.a                    trirast_sc (the units' SystemC models, components of a
+#                                            user's platform: trirast::systemc)
 #   P/include/trirast/{common,scene,golden,improved,improved2,trad,halfspace}/*.hpp
 #                                            its headers, laid out as under model/
 #   P/lib/cmake/trirast/                     trirastConfig.cmake, trirastConfigVersion.cmake and
-#                                            the exported target trirast::model
+#                                            the exported targets trirast::model, trirast::systemc
 #   P/lib/pkgconfig/trirast.pc               the same library for pkg-config
 #   P/share/trirast/rtl/{common,UNIT}/       the SystemVerilog (*.sv, *.svh) and the units' file
 #                                            lists (*.f), in rtl/'s layout so the lists' relative
 #                                            paths still resolve
-# Nothing of tb/, app/ or tools/ is installed, and neither are the SystemC models (trirast_sc):
-# the library holds no CLI and no output formats. The folders are GNUInstallDirs' (included by the
+# Nothing of tb/, app/ or tools/ is installed: the libraries hold no CLI and no output formats. The folders are GNUInstallDirs' (included by the
 # top-level CMakeLists.txt, before model/ names them).
 include(CMakePackageConfigHelpers)
 
 set(TRIRAST_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/trirast)
 set(TRIRAST_INSTALL_RTLDIR ${CMAKE_INSTALL_DATADIR}/trirast/rtl)
 
-# The installed target is trirast::model; the same name works inside this build.
+# The installed targets are trirast::model and trirast::systemc; the same names work inside this
+# build.
 set_target_properties(trirast_model PROPERTIES EXPORT_NAME model)
 add_library(trirast::model ALIAS trirast_model)
+set_target_properties(trirast_sc PROPERTIES EXPORT_NAME systemc)
+add_library(trirast::systemc ALIAS trirast_sc)
 
-install(TARGETS trirast_model EXPORT trirastTargets
+install(TARGETS trirast_model trirast_sc EXPORT trirastTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-# The headers of trirast_model: every model/ header but the SystemC models' (UNIT_sc.hpp and
-# common/sc_*.hpp, which belong to trirast_sc).
+# The headers of both: every model/ header, in model/'s layout (the SystemC models' are
+# UNIT/UNIT_sc.hpp and common/sc_*.hpp).
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/model/
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/trirast
-  FILES_MATCHING PATTERN "*.hpp"
-  PATTERN "sc_*.hpp" EXCLUDE
-  PATTERN "*_sc.hpp" EXCLUDE)
+  FILES_MATCHING PATTERN "*.hpp")
 install(EXPORT trirastTargets
   NAMESPACE trirast::
   FILE trirastTargets.cmake

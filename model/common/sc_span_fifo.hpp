@@ -1,9 +1,10 @@
-// The span FIFO and the span sink (docs/timing.md, "Span FIFO and sink"), shared by the improved
-// and the traditional unit's SystemC models.
+// The span FIFO and the span sink (docs/timing.md, "Span FIFO and sink"), shared by every unit's
+// SystemC model.
 //
-// Both are exact without an event per cycle: the sink's ready is a function of the cycle alone, so
-// the cycle a span leaves is known when it is pushed: span i is on the output from
-// avail_i = max(push_i + 1, pop_(i-1) + 1) and popped in the first ready cycle >= avail_i. The FIFO
+// Both are exact without an event per cycle: the downstream's ready is a function of the cycle and
+// of the spans it took before (span_downstream.hpp), so the cycle a span leaves is known when it is
+// pushed: span i is on the output from avail_i = max(push_i + 1, pop_(i-1) + 1) and popped in the
+// first cycle >= avail_i in which the downstream is ready, where it hands the span over. The FIFO
 // keeps the pop cycles of the spans still inside it; the walk stage asks it for the occupancy at
 // the start of a cycle and for the first cycle with room for N more spans.
 #pragma once
@@ -19,8 +20,7 @@
 #include "common/config.hpp"
 #include "common/engine.hpp"
 #include "common/setup.hpp"
-#include "common/sink_pattern.hpp"
-#include "common/sc_cycles.hpp"
+#include "common/span_downstream.hpp"
 #include "common/sc_vcd_trace.hpp"
 
 namespace trirast::sc {
@@ -32,19 +32,17 @@ struct SpanTraceSignals {
   int take = -1;  // scope "span_sink": the sink takes a span in this cycle
 };
 
-// What one run shares between the modules: configuration, results, trace, first error.
+// What one stream shares between a unit's modules: configuration, the downstream, the
+// per-triangle records and work counters, the trace, the first error.
 struct RunState {
   RasterConfig cfg;
-  SinkPattern sink;
-  uint64_t base = 0;  // absolute cycle of the run's cycle 0
-  const SetupResult* setup = nullptr;
-  EngineResult* out = nullptr;   // spans, work, cycles (one entry per set-up triangle)
-  VcdRecorder* trace = nullptr;  // null: no trace
-  std::exception_ptr error;      // first exception thrown inside a process
-  bool finished = false;         // the setup stage offered every triangle
+  SpanDownstream* downstream = nullptr;  // the unit's span port's downstream
+  std::vector<TriangleCycles> records;   // one per accepted triangle, in acceptance order
+  std::map<std::string, uint64_t> work;  // the datapath's counters (the modules' are their own)
+  VcdRecorder* trace = nullptr;          // null: no trace
+  std::exception_ptr error;              // the first triangle the unit could not take
 
-  uint64_t now() const { return now_cycles() - base; }  // the run's current cycle
-  TriangleCycles& tri(size_t pos) { return out->cycles[pos]; }
+  TriangleCycles& tri(size_t pos) { return records[pos]; }
 };
 
 // Per-module statistics of one run, added into EngineResult::work at the end.
@@ -53,7 +51,8 @@ struct StageCounters {
   uint64_t stall = 0;  // cycles it held work but could not advance
 };
 
-// The span sink: takes each span in its pop cycle, records the triangle's first and last pop.
+// The span sink: the unit's end of the span port. Records each span's triangle's first and last
+// pop and hands the span to the downstream in its pop cycle.
 class SpanSink : public sc_core::sc_module {
  public:
   SC_HAS_PROCESS(SpanSink);
@@ -71,7 +70,7 @@ class SpanSink : public sc_core::sc_module {
     t.done_cycle = pop;
     ++t.spans;
     t.pixels += uint64_t(s.pixels());
-    run_->out->spans.push_back(s);
+    run_->downstream->take(s, pop);
     ++counters_.busy;
     counters_.stall += waited;
   }
@@ -123,7 +122,7 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
   // Pushes a span at the end of cycle t (t >= every earlier push's cycle).
   void push(const Span& s, size_t pos, uint64_t t) override {
     const uint64_t avail = any_pop_ ? std::max(t + 1, last_pop_ + 1) : t + 1;
-    const uint64_t pop = run_->sink.next_ready(avail);
+    const uint64_t pop = run_->downstream->next_ready(avail);
     last_pop_ = pop;
     any_pop_ = true;
     pops_.push_back(pop);

@@ -1,18 +1,18 @@
-// The pipeline both SystemC units are built on (docs/sc-model.md):
+// The pipeline the improved, traditional and half-space units' SystemC models are built on
+// (docs/sc-model.md):
 //
-//   source -> setup stage -> hand-off -> walk stage -> span_fifo -> span_sink
+//   triangle port -> setup stage -> hand-off -> walk stage -> span_fifo -> span_sink -> span port
 //
-// What the two units share lives here once: the setup stage's process (accept, StHold, hand-off,
-// temporal decoupling, error capture), the walk stage's frame (load, FIFO stalls, retire), their
-// trace signals and counters, and the unit that wires the modules and runs a scene. A unit
-// supplies only what its hardware does differently: the setup stage's datapath and cycles
-// (SetupStageBase::set_up), the walk stage's rows (WalkStageBase::walk), and its own counters.
+// What the units share lives here once: the setup stage's acceptance (StHold, hand-off), the walk
+// stage's frame (load, FIFO stalls, retire), their trace signals and counters, and the unit that
+// wires the modules as a component (sc_raster_unit.hpp). A unit supplies only what its hardware
+// does differently: the setup stage's datapath and cycles (SetupStageBase::set_up), the walk
+// stage's rows (WalkStageBase::walk), and its own counters.
 //
-// Time: the setup stage's process is the only process. It keeps its own cycle ahead of SystemC
-// time and stamps every event with its cycle; the hand-off calls the walk stage in the same
-// process (handoff.hpp), and the FIFO knows each span's pop cycle when it is pushed
-// (span_fifo.hpp). The process synchronizes with SystemC time through a TLM-2.0 quantum keeper
-// (loosely timed temporal decoupling, global quantum kQuantumCycles) and at the end of the run.
+// Time: nothing ticks. The unit takes a triangle in the producer's transport call and computes
+// its way through at once: the setup stage stamps every event with its cycle, the hand-off calls
+// the walk stage (handoff.hpp), and the FIFO knows each span's pop cycle when it is pushed
+// (span_fifo.hpp). SystemC time is the producer's to keep (a loosely-timed initiator's quantum).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -20,18 +20,14 @@
 #include <map>
 #include <string>
 #include <systemc>
-#include <tlm_utils/tlm_quantumkeeper.h>
 #include <vector>
 
 #include "common/sc_handoff.hpp"
-#include "common/sc_cycles.hpp"
+#include "common/sc_raster_unit.hpp"
 #include "common/sc_span_fifo.hpp"
 #include "common/sc_vcd_trace.hpp"
 
 namespace trirast::sc {
-
-// The setup stage synchronizes with SystemC time at least once per this many cycles.
-constexpr uint64_t kQuantumCycles = uint64_t(1) << 16;
 
 // Setup-stage states of both units (the trace shows these numbers); a unit's own states are
 // 1..3 (improved: StBox, StEdge, StLanes; trad: StSort, StLine).
@@ -43,25 +39,6 @@ inline void add_counter(std::map<std::string, uint64_t>& work, const std::string
   work[key] += v;
 }
 
-// The body of a unit's one SC_THREAD: waits for each run its begin_run releases (pending set,
-// start_ev notified) and runs it (process_run); an exception of the datapath ends the run and is
-// kept for the engine's run() to rethrow (the process itself must survive for the next run).
-// `run` is read after each run, as begin_run points it at the run under way.
-template <class ProcessRun>
-void serve_runs(bool& pending, const sc_core::sc_event& start_ev, RunState* const& run,
-                ProcessRun process_run) {
-  for (;;) {
-    while (!pending) sc_core::wait(start_ev);
-    pending = false;
-    try {
-      process_run();
-    } catch (...) {
-      if (!run->error) run->error = std::current_exception();
-    }
-    run->finished = true;
-  }
-}
-
 // ---- setup stage -------------------------------------------------------------------------------
 
 // The setup stage: accepts a triangle in cycle a, runs the unit's datapath (set_up), holds the
@@ -71,11 +48,7 @@ void serve_runs(bool& pending, const sc_core::sc_event& start_ev, RunState* cons
 template <class Txn>
 class SetupStageBase : public sc_core::sc_module {
  public:
-  SC_HAS_PROCESS(SetupStageBase);
-  explicit SetupStageBase(sc_core::sc_module_name name) : sc_core::sc_module(name), out("out") {
-    tlm_utils::tlm_quantumkeeper::set_global_quantum(cycles_time(kQuantumCycles));
-    SC_THREAD(thread);
-  }
+  explicit SetupStageBase(sc_core::sc_module_name name) : sc_core::sc_module(name), out("out") {}
 
   sc_core::sc_port<HandoffIf<Txn>> out;
   StageCounters counters;
@@ -92,15 +65,12 @@ class SetupStageBase : public sc_core::sc_module {
     sig_accept_ = tr.add("setup", "tri_accept", 1, 0);
     add_unit_trace(tr);
   }
-  // Prepares a run (the unit's datapath for its configuration, counters cleared) and releases
-  // the process; sc_start() then runs the scene.
+  // Prepares a stream (the unit's datapath for its configuration, counters cleared).
   void begin_run(RunState* run) {
     run_ = run;
     counters = {};
     configure(run->cfg);
     cur_ = 0;
-    pending_ = true;
-    start_ev_.notify(sc_core::SC_ZERO_TIME);
   }
   // The run's work counters: the stage's, then the unit's own.
   virtual void add_counters(std::map<std::string, uint64_t>& work) const {
@@ -129,66 +99,52 @@ class SetupStageBase : public sc_core::sc_module {
   RunState* run_ = nullptr;
   Txn txn_[2];  // double-buffered hand-off registers: the walk stage holds the other one
 
- private:
-  void thread() {
-    serve_runs(pending_, start_ev_, run_, [this] { process_run(); });
-  }
-
-  void process_run() {
+ public:
+  // Triangle t, at position pos of the stream, accepted in cycle a: through the stage and, at its
+  // hand-off, the walk stage. Returns the first cycle the stage is idle again (the port's next
+  // accept).
+  uint64_t accept(const TriangleSetup& t, size_t pos, uint64_t a) {
     RunState& r = *run_;
     VcdRecorder* tr = r.trace;
-    const std::vector<TriangleSetup>& tris = r.setup->tris;
-    quantum_.reset();
-    uint64_t a = r.now();  // the cycle the next triangle is accepted in
-    for (size_t pos = 0; pos < tris.size(); ++pos) {
-      const TriangleSetup& t = tris[pos];
-      TriangleCycles& rec = r.tri(pos);
-      rec = TriangleCycles{t.index, a, 0, 0, 0, 0, 0};
-      rec.setup_start_cycle = a + 1;
-      if (tr) {
-        tr->value(sig_accept_, a, 1);
-        tr->value(sig_accept_, a + 1, 0);
-        tr->value(sig_tri_, a + 1, t.index);
-      }
-      Txn& x = txn_[cur_];
-      x.pos = pos;
-      const uint64_t hold = set_up(t, a, x);
-      uint64_t idle;  // the first cycle the stage is idle again
-      if (hold == kRetired) {
-        // The triangle retires in a + 1 (no spans, no hand-off).
-        ++counters.busy;
-        rec.first_span_cycle = rec.done_cycle = a + 1;
-        rec.setup_done_cycle = rec.handoff_cycle = a + 1;
-        rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
-        idle = a + 2;
-      } else {
-        // Busy from a + 1 until StHold; hand the triangle over in the first cycle the walk stage
-        // is idle (the walk stage runs it inside this call).
-        counters.busy += hold - (a + 1);
-        if (tr) tr->value(sig_state_, hold, StHold);
-        rec.setup_done_cycle = hold;
-        const uint64_t h = out->put(&x, hold);
-        counters.stall += h - hold;
-        cur_ ^= 1;
-        idle = h + 1;
-      }
-      if (tr) {
-        tr->value(sig_state_, idle, StIdle);
-        tr->value(sig_tri_, idle, VcdRecorder::kX);
-      }
-      a = idle;
-      // Temporal decoupling: SystemC time catches up with the stage's cycle once per quantum.
-      quantum_.set_and_sync(cycles_time(a - r.now()));
+    r.records.push_back(TriangleCycles{t.index, a, 0, 0, 0, 0, 0});
+    TriangleCycles& rec = r.tri(pos);
+    rec.setup_start_cycle = a + 1;
+    if (tr) {
+      tr->value(sig_accept_, a, 1);
+      tr->value(sig_accept_, a + 1, 0);
+      tr->value(sig_tri_, a + 1, t.index);
     }
-    // The run ends in SystemC time when the unit's last stage is idle.
-    quantum_.set(cycles_time(std::max(a, out->walk_idle_from()) - r.now()));
-    quantum_.sync();
+    Txn& x = txn_[cur_];
+    x.pos = pos;
+    const uint64_t hold = set_up(t, a, x);
+    uint64_t idle;  // the first cycle the stage is idle again
+    if (hold == kRetired) {
+      // The triangle retires in a + 1 (no spans, no hand-off).
+      ++counters.busy;
+      rec.first_span_cycle = rec.done_cycle = a + 1;
+      rec.setup_done_cycle = rec.handoff_cycle = a + 1;
+      rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
+      idle = a + 2;
+    } else {
+      // Busy from a + 1 until StHold; hand the triangle over in the first cycle the walk stage
+      // is idle (the walk stage runs it inside this call).
+      counters.busy += hold - (a + 1);
+      if (tr) tr->value(sig_state_, hold, StHold);
+      rec.setup_done_cycle = hold;
+      const uint64_t h = out->put(&x, hold);
+      counters.stall += h - hold;
+      cur_ ^= 1;
+      idle = h + 1;
+    }
+    if (tr) {
+      tr->value(sig_state_, idle, StIdle);
+      tr->value(sig_tri_, idle, VcdRecorder::kX);
+    }
+    return idle;
   }
 
+ private:
   int sig_tri_ = -1, sig_state_ = -1, sig_accept_ = -1;
-  tlm_utils::tlm_quantumkeeper quantum_;
-  bool pending_ = false;
-  sc_core::sc_event start_ev_;
   int cur_ = 0;
 };
 
@@ -221,8 +177,6 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
     idle_from_ = 0;
     configure(run->cfg);
   }
-  // After sc_start(): adds what the unit sums over the run into the run's work map.
-  virtual void end_run() {}
   virtual void add_counters(std::map<std::string, uint64_t>& work) const {
     add_counter(work, "busy_cycles.walk", counters.busy);
     add_counter(work, "stall_cycles.walk", counters.stall);
@@ -290,24 +244,15 @@ class WalkStageBase : public sc_core::sc_module, public WalkLoadIf<Txn> {
 
 // ---- the unit ----------------------------------------------------------------------------------
 
-// What the engine sees of a unit.
-class UnitScIf {
- public:
-  virtual ~UnitScIf() = default;
-  // Runs one scene from the current SystemC time; fills run.out (spans, cycles, work).
-  virtual void run(RunState& run) = 0;
-  // The run's per-module counters (busy_cycles.*, stall_cycles.*) into work.
-  virtual void add_counters(std::map<std::string, uint64_t>& work) const = 0;
-};
-
 // A unit: its setup and walk stages (Setup derives from SetupStageBase, Walk from
-// WalkStageBase, over one Txn), the hand-off between them, the span FIFO and the sink.
-// Elaborated once per process; every run goes through the same modules.
+// WalkStageBase, over one Txn), the hand-off between them, the span FIFO and the sink, as a
+// component (sc_raster_unit.hpp).
 template <class Setup, class Walk, class Txn>
-class PipelineUnitSc : public sc_core::sc_module, public UnitScIf {
+class PipelineUnitSc : public RasterUnitSc {
  public:
-  explicit PipelineUnitSc(sc_core::sc_module_name name)
-      : sc_core::sc_module(name),
+  PipelineUnitSc(sc_core::sc_module_name name, const RasterConfig& cfg,
+                 const sc_core::sc_time& period)
+      : RasterUnitSc(name, cfg, period),
         sink("span_sink"),
         fifo("span_fifo", sink),
         handoff("handoff"),
@@ -316,9 +261,18 @@ class PipelineUnitSc : public sc_core::sc_module, public UnitScIf {
     setup.out(handoff);
     handoff.walk(walk);
     walk.spans(fifo);
+    start(cfg);
   }
 
-  void run(RunState& r) override {
+  SpanSink sink;
+  SpanFifo fifo;
+  Handoff<Txn> handoff;
+  Setup setup;
+  Walk walk;
+
+ protected:
+  void begin_stream() override {
+    RunState& r = state_;
     SpanTraceSignals span;
     if (VcdRecorder* tr = r.trace) {
       // Declaration order is the VCD's order: setup (and the unit's setup-side modules), walk (and
@@ -338,10 +292,11 @@ class PipelineUnitSc : public sc_core::sc_module, public UnitScIf {
     fifo.begin_run(&r, span);
     walk.begin_run(&r);
     setup.begin_run(&r);
-    sc_core::sc_start();
-    walk.end_run();
   }
-
+  uint64_t accept(const TriangleSetup& t, size_t pos, uint64_t a) override {
+    return setup.accept(t, pos, a);
+  }
+  uint64_t unit_idle_from() const override { return walk.idle_from(); }
   void add_counters(std::map<std::string, uint64_t>& work) const override {
     setup.add_counters(work);
     walk.add_counters(work);
@@ -349,12 +304,6 @@ class PipelineUnitSc : public sc_core::sc_module, public UnitScIf {
     add_counter(work, "busy_cycles.span_sink", sink.counters().busy);
     add_counter(work, "stall_cycles.span_sink", sink.counters().stall);
   }
-
-  SpanSink sink;
-  SpanFifo fifo;
-  Handoff<Txn> handoff;
-  Setup setup;
-  Walk walk;
 };
 
 }  // namespace trirast::sc

@@ -40,7 +40,7 @@ uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
   res.setup = x.setup;
   spans_.clear();
   unit_->walk(res, spans_);
-  add_hs_work(res.work, r.out->work);
+  add_hs_work(res.work, r.work);
   uint64_t t = h + 1;        // the walker's first cycle of the next band
   uint64_t last_push = 0;    // the emitter's last push so far (0: none; every push is > h)
   uint64_t w = h;            // the cycle the last band went to the emitter
@@ -69,7 +69,10 @@ uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
 namespace trirast {
 namespace {
 const int kUnit = sc::register_sc_unit(
-    {"halfspace", [] { return std::unique_ptr<sc::UnitScIf>(new sc::HalfspaceUnitSc("halfspace")); },
+    {"halfspace",
+     [](const char* name, const RasterConfig& cfg, const sc_core::sc_time& period) {
+       return std::unique_ptr<sc::RasterUnitSc>(new sc::HalfspaceUnitSc(name, cfg, period));
+     },
      [](const RasterConfig& cfg) { HalfspaceUnit check(cfg); }});
 }  // namespace
 

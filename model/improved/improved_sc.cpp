@@ -111,15 +111,12 @@ void ImprovedWalkStageSc::add_unit_trace(VcdRecorder& tr) {
   sig_gen_busy_ = tr.add("span_generator", "busy", 1, 0);
 }
 
-void ImprovedWalkStageSc::end_run() {
-  if (any_work_) add_work(work_sum_, run_->out->work);
-}
-
 void ImprovedWalkStageSc::add_counters(std::map<std::string, uint64_t>& work) const {
   WalkStageBase<EdgeSetupTxn>::add_counters(work);
   for (int k = 0; k < 3; ++k)
     add_counter(work, "busy_cycles.edge_walker" + std::to_string(k), rows_stepped[k]);
   add_counter(work, "busy_cycles.span_generator", span_generator.counters.busy);
+  if (any_work_) add_work(work_sum_, work);
 }
 
 uint64_t ImprovedWalkStageSc::walk(EdgeSetupTxn& x, uint64_t h) {
@@ -166,7 +163,7 @@ uint64_t ImprovedWalkStageSc::walk(EdgeSetupTxn& x, uint64_t h) {
     work.edge[k] = x.walker[k].work();
     rows_stepped[k] += work.edge[k].rows_stepped;
   }
-  // add_work() goes through a string-keyed map: once per run (end_run), not per triangle.
+  // add_work() goes through a string-keyed map: once per read of the statistics (add_counters), not per triangle.
   for (int k = 0; k < 3; ++k) {
     work_sum_.edge[k].divisions += work.edge[k].divisions;
     work_sum_.edge[k].divider_iterations += work.edge[k].divider_iterations;
@@ -185,7 +182,10 @@ uint64_t ImprovedWalkStageSc::walk(EdgeSetupTxn& x, uint64_t h) {
 namespace trirast {
 namespace {
 const int kUnit = sc::register_sc_unit(
-    {"improved", [] { return std::unique_ptr<sc::UnitScIf>(new sc::ImprovedUnitSc("improved")); },
+    {"improved",
+     [](const char* name, const RasterConfig& cfg, const sc_core::sc_time& period) {
+       return std::unique_ptr<sc::RasterUnitSc>(new sc::ImprovedUnitSc(name, cfg, period));
+     },
      [](const RasterConfig& cfg) { ImprovedUnit check(cfg); }});
 }  // namespace
 

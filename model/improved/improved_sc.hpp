@@ -118,7 +118,6 @@ class ImprovedWalkStageSc : public WalkStageBase<EdgeSetupTxn> {
  public:
   explicit ImprovedWalkStageSc(sc_core::sc_module_name name);
   // Adds the run's datapath work (summed over its triangles) into the run's work map.
-  void end_run() override;
   void add_counters(std::map<std::string, uint64_t>& work) const override;
   ImprovedSpanGeneratorSc span_generator;
   uint64_t rows_stepped[3] = {0, 0, 0};

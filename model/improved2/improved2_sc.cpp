@@ -9,20 +9,20 @@ namespace trirast::sc {
 
 using sc_core::sc_module_name;
 
-Improved2UnitSc::Improved2UnitSc(sc_module_name name)
-    : sc_core::sc_module(name),
+Improved2UnitSc::Improved2UnitSc(sc_module_name name, const RasterConfig& cfg,
+                                 const sc_core::sc_time& period)
+    : RasterUnitSc(name, cfg, period),
       sink("span_sink"),
       fifo("span_fifo", sink),
       box_stage("box_stage"),
       corner_stage("corner_stage"),
       job_stage("job_stage"),
       walk_stage("walk_stage") {
-  tlm_utils::tlm_quantumkeeper::set_global_quantum(cycles_time(kQuantumCycles));
-  SC_THREAD(thread);
+  start(cfg);
 }
 
-void Improved2UnitSc::run(RunState& r) {
-  run_ = &r;
+void Improved2UnitSc::begin_stream() {
+  RunState& r = state_;
   sink.begin_run(&r);
   fifo.begin_run(&r, r.trace ? add_trace(*r.trace) : SpanTraceSignals{});
   unit_ = std::make_unique<Improved2Unit>(r.cfg);
@@ -32,13 +32,7 @@ void Improved2UnitSc::run(RunState& r) {
   for (auto& b : job_stage.lane_busy) b = 0;
   walk_stage.counters = {};
   tiny_ = lanes_ = empty_ = iterations_ = steps_ = rows_ = 0;
-  pending_ = true;
-  start_ev_.notify(sc_core::SC_ZERO_TIME);
-  sc_core::sc_start();
-}
-
-void Improved2UnitSc::thread() {
-  serve_runs(pending_, start_ev_, run_, [this] { process_run(); });
+  c_free_ = l_free_ = w_free_ = 0;
 }
 
 SpanTraceSignals Improved2UnitSc::add_trace(VcdRecorder& tr) {
@@ -175,7 +169,7 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
   }
   // Groups of N rows (--endpoints): rows g*N .. g*N + N - 1 of x.rows (a prefix of rows 0, 1, ...)
   // go in one cycle and their spans are pushed together.
-  const int64_t N = int64_t(run_->cfg.endpoints);
+  const int64_t N = int64_t(state_.cfg.endpoints);
   uint64_t t = h + 1, last = h, groups = 0;
   for (size_t i = 0; i < x.rows.size();) {
     // The admission test: the FIFO's entries plus the spans in flight (pushed in cycle t, which
@@ -215,82 +209,72 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
   return last;
 }
 
-void Improved2UnitSc::process_run() {
-  RunState& r = *run_;
-  const std::vector<TriangleSetup>& tris = r.setup->tris;
-  quantum_.reset();
-  uint64_t a = r.now();  // the cycle the next triangle is accepted in
-  uint64_t c_free = 0;   // C is free from this cycle (its last triangle's move to L)
-  uint64_t l_free = 0;   // L is free from this cycle (its last job's hand-off)
-  uint64_t w_free = 0;   // the walk stage is idle from this cycle
-  for (size_t pos = 0; pos < tris.size(); ++pos) {
-    const TriangleSetup& t = tris[pos];
-    TriangleCycles& rec = r.tri(pos);
-    rec = TriangleCycles{t.index, a, 0, 0, 0, 0, 0};
-    rec.setup_start_cycle = a + 1;
-    unit_->run_triangle(t, x_);
-    // The trace: past the window's last cycle every report would be dropped (the recorder keeps
-    // the window), so the process stops reporting there.
-    VcdRecorder* tr = r.trace && a <= r.trace->window_last() ? r.trace : nullptr;
-    if (tr) {
-      tr->value(sig_.accept, a, 1);
-      tr->value(sig_.accept, a + 1, 0);  // overridden by the next accept in a + 1
-    }
-    if (x_.box.empty) {
-      if (tr) {
-        tr->value(sig_.b_busy, a + 1, 1);
-        tr->value(sig_.b_tri, a + 1, t.index);
-        tr->value(sig_.b_retire, a + 1, 1);
-        tr->value(sig_.b_busy, a + 2, 0);
-        tr->value(sig_.b_tri, a + 2, VcdRecorder::kX);
-        tr->value(sig_.b_retire, a + 2, 0);
-      }
-      // B: retires in a + 1; the port takes the next triangle in the same cycle.
-      ++empty_;
-      ++box_stage.counters.busy;
-      rec.first_span_cycle = rec.done_cycle = a + 1;
-      rec.setup_done_cycle = rec.handoff_cycle = a + 1;
-      rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
-      a = a + 1;
-    } else {
-      const uint64_t k = Improved2BoxStageSc::take(a, c_free);  // B -> C
-      const uint64_t cr = corner_stage.ready(k, x_);
-      const uint64_t m = std::max(cr, l_free);  // C -> L
-      const uint64_t ready = Improved2JobStageSc::ready(m, x_);
-      const uint64_t h = std::max(ready, w_free);  // L -> W (hand-off)
-      if (tr) trace_job(*tr, t.index, a, k, cr, m, ready, h);
-      box_stage.counters.busy += k - a;
-      box_stage.counters.stall += k - (a + 1);
-      corner_stage.counters.busy += m - k;
-      corner_stage.counters.stall += m - cr;
-      job_stage.counters.busy += h - m;
-      job_stage.counters.stall += h - ready;
-      ++(x_.tiny ? tiny_ : lanes_);
-      for (int e = 0; e < 3; ++e) {
-        job_stage.lane_busy[e] += x_.lane[e].cycles;
-        rec.divider_iterations += x_.lane[e].iterations;
-        rec.boundary_steps += uint64_t(x_.lane[e].steps);
-      }
-      iterations_ += rec.divider_iterations;
-      steps_ += rec.boundary_steps;
-      rec.box_width = uint64_t(x_.box.Xmax) + 1;
-      rec.box_height = uint64_t(x_.box.Ymax) + 1;
-      rec.setup_done_cycle = ready;
-      rec.handoff_cycle = h;
-      rec.walk_start_cycle = h + 1;
-      const uint64_t last = walk(x_, pos, h, rec, tr);
-      rec.walk_end_cycle = last;
-      // A job without spans retires in its last walk cycle.
-      if (rec.spans == 0) rec.first_span_cycle = rec.done_cycle = last;
-      c_free = m;
-      l_free = h;
-      w_free = last + 1;
-      a = k;
-    }
-    quantum_.set_and_sync(cycles_time(a - std::min(a, r.now())));
+// Triangle t accepted in a through the stages; the port takes the next one in the cycle B's
+// triangle leaves (a + 1 for an empty box, else the cycle it moves to C).
+uint64_t Improved2UnitSc::accept(const TriangleSetup& t, size_t pos, uint64_t a) {
+  RunState& r = state_;
+  r.records.push_back(TriangleCycles{t.index, a, 0, 0, 0, 0, 0});
+  TriangleCycles& rec = r.tri(pos);
+  rec.setup_start_cycle = a + 1;
+  unit_->run_triangle(t, x_);
+  // The trace: past the window's last cycle every report would be dropped (the recorder keeps
+  // the window), so the process stops reporting there.
+  VcdRecorder* tr = r.trace && a <= r.trace->window_last() ? r.trace : nullptr;
+  if (tr) {
+    tr->value(sig_.accept, a, 1);
+    tr->value(sig_.accept, a + 1, 0);  // overridden by the next accept in a + 1
   }
-  quantum_.set(cycles_time(std::max(a, w_free) - std::min(std::max(a, w_free), r.now())));
-  quantum_.sync();
+  if (x_.box.empty) {
+    if (tr) {
+      tr->value(sig_.b_busy, a + 1, 1);
+      tr->value(sig_.b_tri, a + 1, t.index);
+      tr->value(sig_.b_retire, a + 1, 1);
+      tr->value(sig_.b_busy, a + 2, 0);
+      tr->value(sig_.b_tri, a + 2, VcdRecorder::kX);
+      tr->value(sig_.b_retire, a + 2, 0);
+    }
+    // B: retires in a + 1; the port takes the next triangle in the same cycle.
+    ++empty_;
+    ++box_stage.counters.busy;
+    rec.first_span_cycle = rec.done_cycle = a + 1;
+    rec.setup_done_cycle = rec.handoff_cycle = a + 1;
+    rec.walk_start_cycle = rec.walk_end_cycle = a + 1;
+    return a + 1;
+  } else {
+    const uint64_t k = Improved2BoxStageSc::take(a, c_free_);  // B -> C
+    const uint64_t cr = corner_stage.ready(k, x_);
+    const uint64_t m = std::max(cr, l_free_);  // C -> L
+    const uint64_t ready = Improved2JobStageSc::ready(m, x_);
+    const uint64_t h = std::max(ready, w_free_);  // L -> W (hand-off)
+    if (tr) trace_job(*tr, t.index, a, k, cr, m, ready, h);
+    box_stage.counters.busy += k - a;
+    box_stage.counters.stall += k - (a + 1);
+    corner_stage.counters.busy += m - k;
+    corner_stage.counters.stall += m - cr;
+    job_stage.counters.busy += h - m;
+    job_stage.counters.stall += h - ready;
+    ++(x_.tiny ? tiny_ : lanes_);
+    for (int e = 0; e < 3; ++e) {
+      job_stage.lane_busy[e] += x_.lane[e].cycles;
+      rec.divider_iterations += x_.lane[e].iterations;
+      rec.boundary_steps += uint64_t(x_.lane[e].steps);
+    }
+    iterations_ += rec.divider_iterations;
+    steps_ += rec.boundary_steps;
+    rec.box_width = uint64_t(x_.box.Xmax) + 1;
+    rec.box_height = uint64_t(x_.box.Ymax) + 1;
+    rec.setup_done_cycle = ready;
+    rec.handoff_cycle = h;
+    rec.walk_start_cycle = h + 1;
+    const uint64_t last = walk(x_, pos, h, rec, tr);
+    rec.walk_end_cycle = last;
+    // A job without spans retires in its last walk cycle.
+    if (rec.spans == 0) rec.first_span_cycle = rec.done_cycle = last;
+    c_free_ = m;
+    l_free_ = h;
+    w_free_ = last + 1;
+    return k;
+  }
 }
 
 void Improved2UnitSc::add_counters(std::map<std::string, uint64_t>& work) const {
@@ -320,7 +304,10 @@ void Improved2UnitSc::add_counters(std::map<std::string, uint64_t>& work) const 
 namespace trirast {
 namespace {
 const int kUnit = sc::register_sc_unit(
-    {"improved2", [] { return std::unique_ptr<sc::UnitScIf>(new sc::Improved2UnitSc("improved2")); },
+    {"improved2",
+     [](const char* name, const RasterConfig& cfg, const sc_core::sc_time& period) {
+       return std::unique_ptr<sc::RasterUnitSc>(new sc::Improved2UnitSc(name, cfg, period));
+     },
      [](const RasterConfig& cfg) { Improved2Unit check(cfg); }});
 }  // namespace
 

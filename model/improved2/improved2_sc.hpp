@@ -10,8 +10,8 @@
 // the next one is free or frees itself in that cycle, so the stages' cycles follow from one
 // another in acceptance order; one process (the unit's) computes them triangle by triangle with
 // the datapath of model/improved2/improved2_unit.hpp, stamps the spans with their push cycles into the
-// shared span FIFO (span_fifo.hpp, which knows each pop cycle), and keeps SystemC time through a
-// quantum keeper as the first generation's setup stage does (stage_skeleton.hpp).
+// shared span FIFO (span_fifo.hpp, which knows each pop cycle). The unit is a component
+// (sc_raster_unit.hpp): it takes each triangle in the producer's transport call.
 //
 // The trace (--trace, docs/improved2.md, "Trace"): the same process reports each
 // stage's signal changes, stamped with their cycles, to the run's VcdRecorder (vcd_trace.hpp): per
@@ -28,7 +28,7 @@
 #include <systemc>
 
 #include "common/sc_span_fifo.hpp"
-#include "common/sc_stage_skeleton.hpp"  // and the quantum keeper (tlm_utils/tlm_quantumkeeper.h)
+#include "common/sc_stage_skeleton.hpp"
 #include "improved2/improved2_unit.hpp"
 
 namespace trirast::sc {
@@ -98,10 +98,11 @@ class Improved2WalkStageSc : public sc_core::sc_module {
   StageCounters counters;
 };
 
-class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
+// The unit as a component (sc_raster_unit.hpp).
+class Improved2UnitSc : public RasterUnitSc {
  public:
-  SC_HAS_PROCESS(Improved2UnitSc);
-  explicit Improved2UnitSc(sc_core::sc_module_name name);
+  Improved2UnitSc(sc_core::sc_module_name name, const RasterConfig& cfg,
+                  const sc_core::sc_time& period);
 
   // The walk stage's trace states (walk_stage.state): idle, a lane job's rows, a tiny job's rows.
   enum WalkTraceState : uint64_t { kWalkIdle = 0, kWalkLanes = 1, kWalkTiny = 2 };
@@ -111,9 +112,6 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   enum LanePhase : uint64_t { kLaneIdle = 0, kLaneSlope = 1, kLaneEntry = 2, kLaneTraverse = 3 };
   enum CornerRun : uint64_t { kCornerIdle = 0, kRunL = 1, kRunR = 2, kProducts = 3 };
 
-  void run(RunState& r) override;
-  void add_counters(std::map<std::string, uint64_t>& work) const override;
-
   SpanSink sink;
   SpanFifo fifo;
   Improved2BoxStageSc box_stage;
@@ -121,9 +119,13 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   Improved2JobStageSc job_stage;
   Improved2WalkStageSc walk_stage;
 
+ protected:
+  void begin_stream() override;
+  uint64_t accept(const TriangleSetup& t, size_t pos, uint64_t a) override;
+  uint64_t unit_idle_from() const override { return w_free_; }
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
+
  private:
-  void thread();
-  void process_run();
   // Walks job x (setup position pos) loaded in h; returns its last row's cycle. Reports the walk
   // stage's signals to tr when not null.
   uint64_t walk(const Improved2Triangle& x, size_t pos, uint64_t h, TriangleCycles& rec,
@@ -146,12 +148,11 @@ class Improved2UnitSc : public sc_core::sc_module, public UnitScIf {
   };
   TraceSignals sig_;
 
-  RunState* run_ = nullptr;
   std::unique_ptr<Improved2Unit> unit_;
   Improved2Triangle x_;
-  tlm_utils::tlm_quantumkeeper quantum_;
-  bool pending_ = false;
-  sc_core::sc_event start_ev_;
+  uint64_t c_free_ = 0;  // C is free from this cycle (its last triangle's move to L)
+  uint64_t l_free_ = 0;  // L is free from this cycle (its last job's hand-off)
+  uint64_t w_free_ = 0;  // the walk stage is idle from this cycle
   uint64_t tiny_ = 0, lanes_ = 0, empty_ = 0, iterations_ = 0, steps_ = 0, rows_ = 0;
 };
 

@@ -16,9 +16,10 @@ void TradSetupStage::configure(const RasterConfig& cfg) {
 uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) {
   // a + 1, StSort: quantize and sort the vertices; collinear integer vertices retire here.
   trace_state(a + 1, StSort);
+  x.tri = &t;
   x.verts = quantizer_->run(t);
   if (x.verts.empty) {
-    ++run_->out->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
+    ++run_->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
     return kRetired;
   }
   // The box the walk stage covers: the integer vertices' bounding box (rows p0.y .. p2.y).
@@ -48,8 +49,8 @@ uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
   RunState& r = *run_;
   // The datapath: the spans of the rows inside the viewport, in row order.
   row_spans_.clear();
-  const TradTriangleResult res = filler_->run_triangle(r.setup->tris[x.pos], row_spans_);
-  add_trad_work(res, r.out->work);
+  const TradTriangleResult res = filler_->run_triangle(*x.tri, row_spans_);
+  add_trad_work(res, r.work);
   const TradWalkTiming timing(x.verts);
   uint64_t t = h + 1;
   size_t next_span = 0;
@@ -75,7 +76,10 @@ uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
 namespace trirast {
 namespace {
 const int kUnit = sc::register_sc_unit(
-    {"trad", [] { return std::unique_ptr<sc::UnitScIf>(new sc::TradUnitSc("trad")); },
+    {"trad",
+     [](const char* name, const RasterConfig& cfg, const sc_core::sc_time& period) {
+       return std::unique_ptr<sc::RasterUnitSc>(new sc::TradUnitSc(name, cfg, period));
+     },
      nullptr});
 }  // namespace
 

@@ -22,7 +22,8 @@ namespace trirast::sc {
 
 // A set-up triangle of the traditional unit: its sorted integer vertices.
 struct TradSetupTxn {
-  size_t pos = 0;  // position in SetupResult::tris
+  size_t pos = 0;  // position in the stream
+  const TriangleSetup* tri = nullptr;  // the triangle (its walk runs inside its transport call)
   TradVertices verts{};
 };
 

@@ -5,7 +5,12 @@
 # then builds examples/stream_golden, copied out of the tree, against that prefix with
 # -DCMAKE_PREFIX_PATH alone, and runs it: it must find the golden's spans equal to the improved2
 # datapath's on its stream and on tests/data/two_tris.tri. The same program built with the flags
-# of pkg-config's trirast.pc must agree too. Any step failing fails the test, naming the step.
+# of pkg-config's trirast.pc must agree too. Then examples/sc_platform, a SystemC platform of its
+# own with the improved2 and half-space units as components, built the same way and run on a
+# mesh: each unit's spans equal the golden's; with fragment stages always ready its per-triangle
+# cycles equal `trirast raster --cycles` of the unit's SystemC engine; two instances of each unit
+# give the same records as one, with a stalling downstream. Any step failing fails the test,
+# naming the step.
 #   tests/install/check_installed_package.sh BUILD SOURCE [CMAKE]
 set -euo pipefail
 build=$(cd "$1" && pwd)
@@ -73,4 +78,41 @@ flags=$(pkg-config --cflags --libs trirast) || fail "pkg-config does not read tr
 step pkgconfig_build ${CXX:-c++} -std=c++17 -O1 -o "$tmp/stream_golden_pc" \
   "$tmp/example/stream_golden.cpp" $flags
 expect pkgconfig 'improved2-datapath equals the golden on 7 of them' "$tmp/stream_golden_pc"
+# The SystemC platform, as a project of its own outside the tree.
+cp -r "$src/examples/sc_platform" "$tmp/platform"
+step platform_configure "$cmake" -S "$tmp/platform" -B "$tmp/platform-build" \
+  -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
+step platform_build "$cmake" --build "$tmp/platform-build" -j2
+platform=$tmp/platform-build/sc_platform
+spans_sorted() { sort -n -k1,1 -k2,2 -k3,3 "$1"; }
+for scene in "$src/tests/data/cube.obj" builtin:lowpoly-near; do
+  out=$tmp/vp-ready
+  rm -rf "$out" && mkdir -p "$out"
+  step platform_ready "$platform" "$scene" --always-ready --cycles-out "$out" --spans-out "$out"
+  for unit in improved2 halfspace; do
+    cmp -s <(spans_sorted "$out/golden.spans") <(spans_sorted "$out/${unit}_0.spans") ||
+      fail "sc_platform on $scene: the $unit unit's spans differ from the golden's"
+    step "cli_$unit" "$build/trirast" raster --engine "$unit-sc" --scene "$scene" \
+      --cycles "$out/$unit.cli.csv"
+    cmp -s "$out/$unit.cli.csv" "$out/${unit}_0.csv" ||
+      fail "sc_platform on $scene: the $unit unit's cycles differ from trirast raster --cycles"
+  done
+  one=$tmp/vp-one two=$tmp/vp-two
+  rm -rf "$one" "$two" && mkdir -p "$one" "$two"
+  step platform_one "$platform" "$scene" --rate 2 --capacity 16 --cycles-out "$one" --spans-out "$one"
+  step platform_two "$platform" "$scene" --rate 2 --capacity 16 --instances 2 \
+    --cycles-out "$two" --spans-out "$two"
+  for unit in improved2 halfspace; do
+    for f in "$two/${unit}_0" "$two/${unit}_1"; do
+      cmp -s "$one/${unit}_0.csv" "$f.csv" && cmp -s "$one/${unit}_0.spans" "$f.spans" ||
+        fail "sc_platform on $scene: ${f##*/} of two instances differs from the one instance's"
+    done
+    cmp -s <(spans_sorted "$one/golden.spans") <(spans_sorted "$one/${unit}_0.spans") ||
+      fail "sc_platform on $scene: the $unit unit's spans behind a stalling stage differ"
+    # The stage stalled the unit: its records differ from the always-ready run's.
+    ! cmp -s "$one/${unit}_0.csv" "$out/${unit}_0.csv" ||
+      fail "sc_platform on $scene: a stage of 2 pixels per cycle never stalled the $unit unit"
+  done
+  tail -n 2 "$tmp/platform_two.log"
+done
 echo "install_find_package: passed"
