@@ -20,7 +20,6 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <systemc>
 #include <tlm_utils/simple_initiator_socket.h>
@@ -29,6 +28,7 @@
 #include "common/sc_raster_unit.hpp"
 #include "common/setup.hpp"
 #include "golden/golden.hpp"
+#include "io/cycles_file.hpp"
 #include "halfspace/halfspace_sc.hpp"
 #include "improved2/improved2_sc.hpp"
 #include "scene/scene.hpp"
@@ -49,17 +49,9 @@ void check(bool ok, const std::string& what) {
 
 // The per-triangle cycles as `trirast raster --cycles` writes them.
 std::string cycles_csv(const std::vector<trirast::TriangleCycles>& records) {
-  std::ostringstream f;
-  f << "tri,accept_cycle,first_span_cycle,done_cycle,spans,pixels,stall_cycles,setup_start_cycle,"
-       "setup_done_cycle,handoff_cycle,walk_start_cycle,walk_end_cycle,divider_iterations,"
-       "boundary_steps,box_width,box_height\n";
-  for (const trirast::TriangleCycles& c : records)
-    f << c.tri << ',' << c.accept_cycle << ',' << c.first_span_cycle << ',' << c.done_cycle << ','
-      << c.spans << ',' << c.pixels << ',' << c.stall_cycles << ',' << c.setup_start_cycle << ','
-      << c.setup_done_cycle << ',' << c.handoff_cycle << ',' << c.walk_start_cycle << ','
-      << c.walk_end_cycle << ',' << c.divider_iterations << ',' << c.boundary_steps << ','
-      << c.box_width << ',' << c.box_height << '\n';
-  return f.str();
+  trirast::test::TempDir d;
+  trirast::write_cycles_file(records, d.file("cycles.csv"), "records");
+  return trirast::test::slurp(d.file("cycles.csv"));
 }
 
 // The CLI's per-triangle cycles of engine UNIT-sc on the scene (another process: this one's
