@@ -144,6 +144,7 @@ double simulate(int unit, const SetupResult& setup, const RasterConfig& cfg, Eng
   if (takes) d = std::make_unique<TakeRecorder>(std::move(d), *takes);
   s.downstream->reset(std::move(d), &out.spans);
   s.unit->restart(cfg, trace);
+  s.unit->reserve_records(setup.tris.size());
   s.producer->begin(&setup.tris);
   const auto t0 = std::chrono::steady_clock::now();
   sc_core::sc_start();
@@ -151,7 +152,7 @@ double simulate(int unit, const SetupResult& setup, const RasterConfig& cfg, Eng
   if (s.unit->error()) std::rethrow_exception(s.unit->error());
   if (!s.producer->finished() || s.unit->records().size() != setup.tris.size())
     throw std::runtime_error("SystemC model: the run stopped before its end");
-  out.cycles = s.unit->records();
+  out.cycles = s.unit->take_records();
   uint64_t total = 0;
   for (const TriangleCycles& c : out.cycles) total = std::max(total, c.done_cycle + 1);
   out.total_cycles = total;

@@ -92,6 +92,10 @@ class RasterUnitSc : public sc_core::sc_module {
   // Per accepted triangle, in acceptance order: its cycles (docs/timing.md, "Outputs"). A
   // triangle's record is complete when its transport call returned.
   const std::vector<TriangleCycles>& records() const { return state_.records; }
+  // Moves the records out (a caller done with the stream's records; records() is empty after).
+  std::vector<TriangleCycles> take_records() { return std::move(state_.records); }
+  // Room for n records, for a caller that knows the stream's length (saves the regrowth).
+  void reserve_records(size_t n) { state_.records.reserve(n); }
   // The stream's work counters so far: busy_cycles.* / stall_cycles.* per module, the datapath's
   // counters (docs/sc-model.md, "Statistics").
   std::map<std::string, uint64_t> statistics() const;
