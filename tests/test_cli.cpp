@@ -257,7 +257,7 @@ TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
     for (std::string c; line >> c;) cells.push_back(c);
     return cells;
   };
-  // engine exact spans pixels missing extra seconds cycles work...
+  // engine exact spans pixels missing extra seconds cycles us@Fmax work...
   for (const std::string engine : {"improved-sc", "improved-rtl"}) {
     const auto cells = row(engine);
     ASSERT_GE(cells.size(), 8u) << engine;
@@ -271,6 +271,49 @@ TEST(Cli, CompareShowsCyclesOfTimedEnginesAndShortWork) {
   EXPECT_EQ(r.out.find("busy_cycles."), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("divider_iterations="), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("--report FILE.json"), std::string::npos) << r.out;
+}
+
+// compare's time column: a timed engine's cycles at its unit's routed iCE40 HX8K Fmax, as
+// docs/synth.csv records it for the run's widths (the improved2 unit's row, here), "n/a" where no
+// routed row applies (the first generation, which does not fit; a FIFO depth synthesis did not
+// build), "-" for untimed engines; the footnote names the row; --report has the same numbers.
+TEST(Cli, CompareTimeColumnFromTheRoutedFmax) {
+  // The improved2 unit's routed Fmax, read from the CSV as the program reads it.
+  double fmax = 0;
+  std::istringstream csv(slurp(std::string(TRIRAST_SOURCE_DIR) + "/docs/synth.csv"));
+  for (std::string line; std::getline(csv, line);)
+    if (line.rfind("improved2,default,ice40,", 0) == 0)
+      fmax = std::stod(line.substr(line.rfind(',') + 1));
+  ASSERT_GT(fmax, 0) << "docs/synth.csv has no routed improved2 row";
+  TempDir dir;
+  const std::string base = kBin + " compare --scene builtin:fan --engines improved2-sc,improved-sc,improved2-datapath";
+  CommandResult r = run_command(base + " --report " + dir.file("c.json"));
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  auto cells_of = [&](const std::string& out, const std::string& engine) {
+    const size_t b = out.find("\n  " + engine + " ");
+    std::istringstream line(b == std::string::npos ? "" : out.substr(b + 1, out.find('\n', b + 1) - b - 1));
+    std::vector<std::string> cells;
+    for (std::string c; line >> c;) cells.push_back(c);
+    return cells;
+  };
+  const auto i2 = cells_of(r.out, "improved2-sc");
+  ASSERT_GE(i2.size(), 9u) << r.out;
+  char expect[32];
+  std::snprintf(expect, sizeof expect, "%.1f", std::stod(i2[7]) / fmax);
+  EXPECT_EQ(i2[8], expect) << r.out;
+  EXPECT_EQ(cells_of(r.out, "improved-sc").at(8), "n/a") << r.out;
+  EXPECT_EQ(cells_of(r.out, "improved2-datapath").at(8), "-") << r.out;
+  char mhz[64];
+  std::snprintf(mhz, sizeof mhz, "improved2-sc %.2f MHz (improved2)", fmax);
+  EXPECT_NE(r.out.find(mhz), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("improved-sc none: no routed row of improved"), std::string::npos) << r.out;
+  const std::string report = slurp(dir.file("c.json"));
+  EXPECT_NE(report.find("\"microseconds_at_fmax\""), std::string::npos) << report;
+  EXPECT_NE(report.find("\"fmax_source\": \"" + std::string(mhz).substr(13)), std::string::npos) << report;
+  // A FIFO depth that synthesis did not build: no routed clock applies.
+  r = run_command(base + " --fifo-depth 4");
+  ASSERT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_EQ(cells_of(r.out, "improved2-sc").at(8), "n/a") << r.out;
 }
 
 // Engine names: the list shows <unit>-<view> names and the reference engines; the old names

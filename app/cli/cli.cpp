@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -28,6 +29,8 @@
 #include "io/cycles_file.hpp"
 #include "io/heatmap.hpp"
 #include "cli/slowest.hpp"
+#include "cli/source_files.hpp"
+#include "sweep/sweep_area.hpp"
 #include "io/spans_file.hpp"
 #include "scene/scene.hpp"
 #include "util.hpp"
@@ -459,6 +462,29 @@ int cmd_raster(int argc, char** argv) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The routed clock a timed engine's cycles are read at (compare's time column): its unit's iCE40
+// HX8K Fmax at the run's widths from docs/synth.csv, when scripts/synth.sh placed and routed that
+// configuration (FIFO 8, N = 1; the half-space unit's tile 8 and zigzag walk). `why` says where
+// the figure came from, or why there is none.
+double routed_fmax_mhz(const AreaModel& area, const std::string& engine, const RasterConfig& cfg,
+                       std::string& why) {
+  const UnitDescriptor* unit = unit_of(engine);
+  const UnitKind kind = unit ? unit_kind_of(unit->name) : UnitKind::Cpu;
+  const RasterConfig d;
+  const bool built = cfg.fifo_depth == d.fifo_depth &&
+                     (kind != UnitKind::Halfspace || (cfg.halfspace.tile == d.halfspace.tile &&
+                                                      cfg.halfspace.walk == d.halfspace.walk));
+  const double f = built ? area.csv_fmax_mhz(kind, cfg) : 0;
+  char text[160];
+  if (f > 0)
+    std::snprintf(text, sizeof text, "%.2f MHz (%s)", f, synth_unit_name(kind, cfg).c_str());
+  else
+    std::snprintf(text, sizeof text, "none: no routed row of %s at these widths",
+                  synth_unit_name(kind, cfg).c_str());
+  why = text;
+  return f;
+}
+
 int cmd_compare(int argc, char** argv) {
   auto specs = scene_options();
   specs.insert(specs.begin(), {"--engines", "A,B,...", "engines to run against the golden: " +
@@ -522,8 +548,12 @@ int cmd_compare(int argc, char** argv) {
               a.get("--scene").c_str(), cfg.width, cfg.height, cfg.subpixel_bits,
               (unsigned long long)ls.scene.source_triangles(),
               (unsigned long long)ls.setup.counts.accepted);
-  std::printf("  %-17s %6s %10s %12s %10s %10s %9s %10s  %s\n", "engine", "exact", "spans",
-              "pixels", "missing", "extra", "seconds", "cycles", "work");
+  std::printf("  %-17s %6s %10s %12s %10s %10s %9s %10s %10s  %s\n", "engine", "exact", "spans",
+              "pixels", "missing", "extra", "seconds", "cycles", "us@Fmax", "work");
+  // The time column: each timed engine's cycles at its unit's routed clock (routed_fmax_mhz).
+  const std::string synth_csv = source_file("docs/synth.csv");
+  const AreaModel area(synth_csv, source_file("scripts/synth.sh"));
+  std::vector<std::string> fmax_notes;
   bool any_module_counters = false;
   bool all_exact_agree = true;
   std::string diff_engine;  // the engine shown in --diff-image
@@ -560,14 +590,22 @@ int cmd_compare(int argc, char** argv) {
     }
     const bool timed = run.result.total_cycles > 0 || run.result.work.count("total_cycles") > 0;
     const std::string cycles = timed ? std::to_string(run.result.total_cycles) : "-";
+    std::string fmax_why, micros = "-";
+    const double fmax = timed ? routed_fmax_mhz(area, info->name, cfg, fmax_why) : 0;
+    if (timed) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.1f", double(run.result.total_cycles) / fmax);
+      micros = fmax > 0 ? t : "n/a";
+      fmax_notes.push_back(info->name + " " + fmax_why);
+    }
     if (timed) {
       if (timed_cycles.empty() && !diag.heatmap_path.empty()) heatmap_spans = run.result.spans;
       timed_cycles.emplace_back(info->name, run.result.cycles);
     }
-    std::printf("  %-17s %6s %10zu %12lld %10lld %10lld %9.3f %10s  %s%s\n", info->name.c_str(),
+    std::printf("  %-17s %6s %10zu %12lld %10lld %10lld %9.3f %10s %10s  %s%s\n", info->name.c_str(),
                 info->exact ? "yes" : "no", run.result.spans.size(),
                 (long long)count_pixels(run.result.spans), (long long)diff.missing_pixels,
-                (long long)diff.extra_pixels, run.seconds, cycles.c_str(), work.c_str(),
+                (long long)diff.extra_pixels, run.seconds, cycles.c_str(), micros.c_str(), work.c_str(),
                 info->exact && !agrees ? "  <-- DISAGREES WITH GOLDEN" : "");
     Json row = Json::object();
     row.set("engine", info->name)
@@ -579,6 +617,12 @@ int cmd_compare(int argc, char** argv) {
                   .set("agrees", agrees)
                   .set("seconds", run.seconds)
                   .set("work", work_json(run.result));
+    if (timed) {
+      row.set("fmax_mhz", Json::number(fmax > 0 ? fmax : NAN));
+      row.set("microseconds_at_fmax",
+              Json::number(fmax > 0 ? double(run.result.total_cycles) / fmax : NAN));
+      row.set("fmax_source", fmax_why);
+    }
     if (info->name != "golden") {
       add_diff_listing(row, diff);
       diffs.push_back({info->name, diff});
@@ -592,6 +636,13 @@ int cmd_compare(int argc, char** argv) {
       diff_agrees = agrees;
       diff_for_image = diff;
     }
+  }
+  if (!fmax_notes.empty()) {
+    std::printf("  (us@Fmax: the cycles at the unit's clock placed and routed on the iCE40 HX8K, from "
+                "docs/synth.csv:");
+    for (size_t i = 0; i < fmax_notes.size(); ++i)
+      std::printf("%s %s", i ? ";" : "", fmax_notes[i].c_str());
+    std::printf(")\n");
   }
   if (any_module_counters)
     std::printf("  (cycles: total of the timed engines; per-module busy and stall cycles and the "

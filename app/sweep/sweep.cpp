@@ -70,12 +70,7 @@ std::vector<SweepScene> sweep_scenes(bool quick) {
 }
 
 UnitKind SweepPoint::kind() const {
-  if (const UnitDescriptor* unit = unit_of(engine)) {
-    if (unit->name == "improved") return UnitKind::Improved;
-    if (unit->name == "trad") return UnitKind::Trad;
-    if (unit->name == "halfspace") return UnitKind::Halfspace;
-    if (unit->name == "improved2") return UnitKind::Improved2;
-  }
+  if (const UnitDescriptor* unit = unit_of(engine)) return unit_kind_of(unit->name);
   if (engine == "golden") return UnitKind::Golden;
   return UnitKind::Cpu;
 }

@@ -23,6 +23,14 @@ const char* unit_kind_name(UnitKind k) {
   }
 }
 
+UnitKind unit_kind_of(const std::string& unit_name) {
+  if (unit_name == "improved") return UnitKind::Improved;
+  if (unit_name == "trad") return UnitKind::Trad;
+  if (unit_name == "halfspace") return UnitKind::Halfspace;
+  if (unit_name == "improved2") return UnitKind::Improved2;
+  return UnitKind::Cpu;
+}
+
 std::string synth_unit_name(UnitKind k, const RasterConfig& cfg) {
   switch (k) {
     case UnitKind::Improved:
@@ -207,6 +215,16 @@ AreaModel::AreaModel(const std::string& synth_csv, const std::string& synth_scri
     r.coord_bits = w->second[1];
     r.box_bits = w->second[2];
     r.origin = synth_csv;
+    if (col.count("fmax_mhz") && r.target == "ice40" && !get("fmax_mhz").empty()) {
+      SynthRow f = r;
+      try {
+        f.fmax_mhz = std::stod(get("fmax_mhz"));
+      } catch (const std::exception&) {
+        throw std::runtime_error(synth_csv + ":" + std::to_string(lineno) + ": fmax_mhz '" +
+                                 get("fmax_mhz") + "' is not a number");
+      }
+      csv_fmax_rows_.push_back(f);
+    }
     rows_.push_back(r);
   }
   // One target for every number: Xilinx 7 when present (the paper's FPGA LUTs), else the first.
@@ -294,9 +312,18 @@ Area AreaModel::estimate(UnitKind kind, const RasterConfig& cfg) const {
 }
 
 double AreaModel::fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
+  return fmax_in(fmax_rows_, kind, cfg);
+}
+
+double AreaModel::csv_fmax_mhz(UnitKind kind, const RasterConfig& cfg) const {
+  return fmax_in(csv_fmax_rows_, kind, cfg);
+}
+
+double AreaModel::fmax_in(const std::vector<SynthRow>& rows, UnitKind kind,
+                          const RasterConfig& cfg) {
   const std::string unit = synth_unit_name(kind, cfg);
   if (unit.empty()) return 0;  // no hardware, or none scripts/synth.sh builds
-  for (const SynthRow& r : fmax_rows_)
+  for (const SynthRow& r : rows)
     if (r.unit == unit && r.subpixel_bits == cfg.subpixel_bits &&
         r.coord_bits == cfg.coord_int_bits && r.box_bits == cfg.box_bits &&
         r.endpoints == cfg.endpoints)

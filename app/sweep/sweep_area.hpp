@@ -15,6 +15,9 @@ namespace trirast {
 // sweep's synthesis jobs at others); it has no width formula: elsewhere its area is unknown.
 enum class UnitKind { Improved, Trad, Halfspace, Improved2, Cpu, Golden };
 const char* unit_kind_name(UnitKind k);
+// The kind of the unit named in app/units.cpp ("improved", "improved2", "trad", "halfspace");
+// UnitKind::Cpu for any other name.
+UnitKind unit_kind_of(const std::string& unit_name);
 // The unit's name in docs/synth.csv for a configuration: "improved", "trad", the half-space
 // unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S), the second-generation
 // unit's "improved2" (radix-16 corner form) or "improved2-products" (the products form); "" for no
@@ -75,8 +78,12 @@ class AreaModel {
   // unknown (Area::known() false) for a unit without one (the half-space unit, CPU engines) and
   // for the second-generation unit when no synthesis of its corner form calibrates it.
   Area estimate(UnitKind kind, const RasterConfig& cfg) const;
-  // iCE40 Fmax of the configuration's place and route, 0 when none was measured.
+  // iCE40 Fmax of the configuration's place and route by the distributed run's synthesis jobs
+  // (add_rows), 0 when none was measured.
   double fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
+  // iCE40 HX8K Fmax of the configuration's place and route as the synthesis CSV records it (its
+  // fmax_mhz column, the whole unit's row of target ice40), 0 when none.
+  double csv_fmax_mhz(UnitKind kind, const RasterConfig& cfg) const;
 
   bool have_synth() const { return !rows_.empty(); }
   const std::vector<SynthRow>& rows() const { return rows_; }
@@ -89,8 +96,9 @@ class AreaModel {
 
  private:
   const SynthRow* find(const std::string& unit, const RasterConfig& cfg) const;
+  static double fmax_in(const std::vector<SynthRow>& rows, UnitKind kind, const RasterConfig& cfg);
   void calibrate();
-  std::vector<SynthRow> rows_, fmax_rows_;
+  std::vector<SynthRow> rows_, fmax_rows_, csv_fmax_rows_;
   std::string target_;
   double lut_scale_ = 1, ff_scale_ = 1;
   std::pair<double, double> trad_scale_{1, 1};  // (LUT, FF) of the traditional unit
