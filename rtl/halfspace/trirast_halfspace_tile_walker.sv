@@ -101,16 +101,18 @@ module trirast_halfspace_tile_walker #(
   end
 
   // ---- stamp tester: the unit itself without tiles, else the current stamp ----
+  // With tiles its result is read in WStamp only, without tiles in WUnit only: its inputs are
+  // the stamp's (es, si, sj) or the unit's (eu, i0, j0) by the build, not by the state.
   logic [S-1:0] st_any;
   logic [S*PB-1:0] st_first, st_last;
   logic stamp_mode;
   assign stamp_mode = state_q == WStamp;
   trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (EdgeBits)) u_stamp (
-    .e_i         (stamp_mode ? es_q : eu_q),
+    .e_i         (Tiles ? es_q : eu_q),
     .a_i         (a_q),
     .b_i         (b_q),
-    .i0_i        (stamp_mode ? si_q : i0_q),
-    .j0_i        (stamp_mode ? sj_q : j0_q),
+    .i0_i        (Tiles ? si_q : i0_q),
+    .j0_i        (Tiles ? sj_q : j0_q),
     .xmax_i      (xmax_q),
     .ymax_i      (ymax_q),
     .row_any_o   (st_any),
