@@ -51,7 +51,10 @@ module trirast_halfspace_tile_walker #(
 );
   localparam int F = trirast_pkg::FracBits;
   localparam int CoefBits = trirast_pkg::CoefBits;
-  localparam int EdgeBits = HalfspaceEdgeBits;  // the walker's values; the hand-off's are pkg EdgeBits
+  // The walker keeps E >> F: every step it takes is a multiple of u = 2^F (a = A*u, b = B*u), so
+  // the low F bits of an edge value stay those of E0 (or E_end), and with them in [0, 2^F)
+  // E < 0 exactly when E >> F < 0. The walker's values are E >> F, and its steps A and B.
+  localparam int EdgeBits = HalfspaceEdgeBits - F;  // the walker's values; the hand-off's are pkg EdgeBits
   localparam int InBits = trirast_pkg::EdgeBits;
   localparam int BoxBits = trirast_pkg::BoxBits;
   localparam int PB = BoxBits + 1;
@@ -71,7 +74,7 @@ module trirast_halfspace_tile_walker #(
   logic [trirast_pkg::TagBits-1:0] tag_q, tag_d;
   logic [trirast_pkg::PixBits-1:0] x0_q, x0_d, y0_q, y0_d;
   logic [BoxBits-1:0] xmax_q, xmax_d, ymax_q, ymax_d;
-  logic [3*EdgeBits-1:0] a_q, a_d, b_q, b_d;        // a = A*u, b = B*u
+  logic [3*EdgeBits-1:0] a_q, a_d, b_q, b_d;        // A, B: the steps a = A*u, b = B*u, >> F
   logic [3*EdgeBits-1:0] eu_q, eu_d;                // E at the current unit (i0, j0)
   logic [3*EdgeBits-1:0] ebl_q, ebl_d, ebr_q, ebr_d;  // E at the band's first / last unit
   logic [3*EdgeBits-1:0] es_q, es_d, esr_q, esr_d;  // E at the stamp / its stamp row's start
@@ -98,16 +101,18 @@ module trirast_halfspace_tile_walker #(
   end
 
   // ---- stamp tester: the unit itself without tiles, else the current stamp ----
+  // With tiles its result is read in WStamp only, without tiles in WUnit only: its inputs are
+  // the stamp's (es, si, sj) or the unit's (eu, i0, j0) by the build, not by the state.
   logic [S-1:0] st_any;
   logic [S*PB-1:0] st_first, st_last;
   logic stamp_mode;
   assign stamp_mode = state_q == WStamp;
   trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (EdgeBits)) u_stamp (
-    .e_i         (stamp_mode ? es_q : eu_q),
+    .e_i         (Tiles ? es_q : eu_q),
     .a_i         (a_q),
     .b_i         (b_q),
-    .i0_i        (stamp_mode ? si_q : i0_q),
-    .j0_i        (stamp_mode ? sj_q : j0_q),
+    .i0_i        (Tiles ? si_q : i0_q),
+    .j0_i        (Tiles ? sj_q : j0_q),
     .xmax_i      (xmax_q),
     .ymax_i      (ymax_q),
     .row_any_o   (st_any),
@@ -194,15 +199,13 @@ module trirast_halfspace_tile_walker #(
           state_d = WUnit;
           `TRIRAST_LOAD_HANDOFF_BOX
           for (int k = 0; k < 3; k++) begin
-            a_d[k*EdgeBits +: EdgeBits] = {{(EdgeBits - CoefBits - F){hand_a_i[k*CoefBits + CoefBits-1]}},
-                                           hand_a_i[k*CoefBits +: CoefBits], {F{1'b0}}};
-            b_d[k*EdgeBits +: EdgeBits] = {{(EdgeBits - CoefBits - F){hand_b_i[k*CoefBits + CoefBits-1]}},
-                                           hand_b_i[k*CoefBits +: CoefBits], {F{1'b0}}};
+            a_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_a_i[k*CoefBits +: CoefBits]));
+            b_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_b_i[k*CoefBits +: CoefBits]));
           end
-          for (int k = 0; k < 3; k++) begin  // sign-extended to the walker's width
-            eu_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits +: InBits]));
-            ebl_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits +: InBits]));
-            ebr_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_eend_i[k*InBits +: InBits]));
+          for (int k = 0; k < 3; k++) begin  // E >> F, sign-extended to the walker's width
+            eu_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
+            ebl_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
+            ebr_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F]));
           end
           i0_d = '0;
           j0_d = '0;
@@ -295,7 +298,7 @@ module trirast_halfspace_tile_walker #(
          si_d, sj_d, iend_d, back_d, seen_d, spans_d};
   end
 
-  `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits)
+  `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits - F && EdgeBits > CoefBits)
   // Box-relative positions are PB = BoxBits + 1 bits: a unit past the box must not wrap.
   `ASSERT_INIT(HalfspaceBoxHoldsUnit_A, (1 << BoxBits) >= U)
   `ASSERT_INIT(HalfspaceParamsLegal_A, (StampSize == 1 || StampSize == 2 || StampSize == 4) &&
