@@ -92,7 +92,7 @@ std::vector<OptionSpec> scene_options() {
       {"--corner-form", "FORM", "corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
       {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
-      {"--sink-stall", "PATTERN", "sink ready pattern: none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99)", "none"},
+      {"--sink-stall", "PATTERN", "the downstream of the span output: a ready pattern none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99), or queue:RATE:CAPACITY, a pixel queue that reacts to what it took (consumes RATE pixels per cycle; ready while fewer than CAPACITY pixels are queued)", "none"},
   };
   for (OptionSpec& spec : engine_specs)
     if (std::find(engine_options().begin(), engine_options().end(), spec.name) !=

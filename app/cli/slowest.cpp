@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <map>
 
+#include "common/span_downstream.hpp"
 #include "io/output_file.hpp"
 #include "units.hpp"
 
@@ -36,6 +37,13 @@ namespace {
 std::string u(uint64_t v) { return std::to_string(v); }
 std::string plural(uint64_t v, const char* one, const char* many) {
   return u(v) + " " + (v == 1 ? one : many);
+}
+
+// What the sink was doing while the FIFO stayed full: a pattern stalls (its ready is low); a queue
+// downstream (queue:RATE:CAPACITY) is not ready while its queue holds CAPACITY pixels or more.
+std::string sink_stalled(const std::string& sink_stall) {
+  return is_cycle_pattern(sink_stall) ? "sink stalled, --sink-stall " + sink_stall
+                                      : "sink's queue full, --sink-stall " + sink_stall;
 }
 
 // A triangle that went through the walk stage (not retired in the setup stage).
@@ -90,7 +98,7 @@ std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t p
       waits.push_back({c.stall_cycles,
                        plural(c.stall_cycles, "stall cycle", "stall cycles") + " " + words.stall +
                            " (" +
-                           (sink_stalls ? "sink stalled, --sink-stall " + sink_stall
+                           (sink_stalls ? sink_stalled(sink_stall)
                                         : std::string("the sink takes one span a cycle")) +
                            ")"});
     }

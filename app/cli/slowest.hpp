@@ -35,7 +35,7 @@ std::vector<size_t> slowest_triangles(const std::vector<TriangleCycles>& cycles,
 // One line on the triangle at position pos: its cycles, what it waited for (largest wait first)
 // and the stage breakdown, in the words of the engine's unit (units.hpp, CycleWords), e.g.
 // "waited 53 cycles in StHold: walk stage busy with triangle 1285 until cycle 23218".
-// sink_stall is the run's --sink-stall pattern.
+// sink_stall is the run's --sink-stall (a pattern, or queue:RATE:CAPACITY).
 std::string explain_triangle(const std::vector<TriangleCycles>& cycles, size_t pos,
                              const std::string& sink_stall, const CycleWords& words);
 

@@ -1,7 +1,8 @@
 // The per-cycle loop of the Verilator harnesses (rtl_engine.cpp for trirast_improved_top,
 // rtl_trad_engine.cpp for trirast_trad_top): reset, triangles offered back to back, span_ready_i
-// from the --sink-stall pattern, the handshakes and observation outputs sampled into the spans
-// and per-triangle cycles of docs/timing.md, and the trace window. Both tops share these ports
+// from the run's downstream (common/span_downstream.hpp: the --sink-stall pattern or queue, or a
+// program's own), the handshakes and observation outputs sampled into the spans and
+// per-triangle cycles of docs/timing.md, and the trace window. Both tops share these ports
 // (docs/rtl.md, "Harness"); what differs is given by the harness as a Unit:
 //
 //   void configure(Top&, const RasterConfig&)     its cfg_*_i ports beyond the viewport and FIFO
@@ -47,7 +48,7 @@
 #include <vector>
 
 #include "common/engine.hpp"
-#include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 #include "common/harness_util.hpp"
 #include "common/rtl_gtkw.hpp"
 
@@ -83,7 +84,9 @@ struct has_pipelined_setup<Unit, std::void_t<decltype(Unit::kPipelinedSetup)>> :
 template <class Top, class Unit>
 CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        const char* engine, const char* top_name, Unit& unit, EngineResult& out) {
-  const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);
+  // The stage downstream of the span output, driven as its contract says: asked every cycle
+  // (span_ready_i), handed every span in the cycle of its handshake, in output order.
+  const std::unique_ptr<SpanDownstream> ds = make_span_downstream(cfg);
   const std::vector<TriangleSetup>& tris = setup.tris;
   const size_t n = tris.size();
   const std::string who = engine;
@@ -195,7 +198,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   if constexpr (has_watchdog<Unit>::value) watchdog = std::max(watchdog, Unit::kWatchdogCycles);
   uint64_t c = 0;
   for (;; ++c) {
-    top->span_ready_i = sink.ready(c);
+    top->span_ready_i = ds->ready(c);
     top->eval();
     // Stop once every triangle went in and the unit is empty (cycle c is not part of the run).
     if constexpr (has_pipelined_setup<Unit>::value) {
@@ -287,6 +290,7 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
                    int32_t(top->span_x_end_o)};
       tc.pixels += uint64_t(s.pixels());
       out.spans.push_back(s);
+      ds->take(s, c);
       progress = true;
     }
     if (progress) last_progress = c;

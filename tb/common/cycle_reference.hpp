@@ -10,6 +10,7 @@
 
 #include "common/engine.hpp"
 #include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 
 namespace trirast::test {
 
@@ -43,12 +44,22 @@ std::vector<TriangleCycles> passed_through_rows(const std::vector<Tri>& tris) {
 // traditional unit (a row costs row_cost cycles, its span pushed in its last cycle). The FIFO room
 // test is made at the start of every group (improved: count <= DEPTH - N) or row (trad:
 // count <= DEPTH - 1).
+//
+// The sink is a SpanDownstream (common/span_downstream.hpp) driven by its contract: asked in the
+// cycles a span is on offer, handed each popped span in its pop cycle. The reference knows a
+// span's triangle and pixels, not its coordinates: it hands over the stand-in span
+// reference_span() (the triangle's scene index, the row's position in its walk, x from 0).
+inline Span reference_span(uint32_t tri, size_t row, uint64_t pixels) {
+  return Span{tri, int32_t(row), 0, int32_t(pixels)};
+}
+
 inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangle>& tris,
                                                     uint64_t rows_per_group, uint64_t depth,
-                                                    const SinkPattern& sink) {
+                                                    SpanDownstream& sink) {
   std::vector<TriangleCycles> out = passed_through_rows(tris);
   struct Entry {
     size_t tri;
+    size_t row;  // its position in the triangle's walk
   };
   std::deque<Entry> fifo;
   // Setup stage.
@@ -70,7 +81,7 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
     // --- sink: pops the oldest span when ready ---
     bool pop = count > 0 && sink.ready(c);
     // --- walk stage ---
-    std::vector<size_t> pushes;
+    std::vector<Entry> pushes;
     if (walking) {
       const RefTriangle& t = tris[w_tri];
       {
@@ -82,12 +93,12 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
           } else if (rows_per_group > 1 || t.row_cost[w_row] == 1) {
             // One cycle does the whole group / row.
             for (uint64_t n = 0; n < rows_per_group && w_row < t.row_cost.size(); ++n, ++w_row)
-              if (t.row_pixels[w_row]) pushes.push_back(w_tri);
+              if (t.row_pixels[w_row]) pushes.push_back(Entry{w_tri, w_row});
           } else {
             w_left = t.row_cost[w_row] - 1;  // this cycle is the row's first
           }
         } else if (--w_left == 0) {
-          if (t.row_pixels[w_row]) pushes.push_back(w_tri);
+          if (t.row_pixels[w_row]) pushes.push_back(Entry{w_tri, w_row});
           ++w_row;
         }
         if (w_left == 0 && w_row == t.row_cost.size()) {
@@ -135,6 +146,9 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
     // --- commit ---
     if (pop) {
       const size_t t = fifo.front().tri;
+      sink.take(reference_span(tris[t].tri, fifo.front().row,
+                               tris[t].row_pixels[fifo.front().row]),
+                c);
       fifo.pop_front();
       TriangleCycles& o = out[t];
       if (o.spans == 0) o.first_span_cycle = c;
@@ -144,7 +158,7 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
                                             [](uint64_t p) { return p > 0; })))
         ++done_count;
     }
-    for (size_t t : pushes) fifo.push_back(Entry{t});
+    for (const Entry& e : pushes) fifo.push_back(e);
     if (load) {
       out[load_tri].handoff_cycle = c;
       out[load_tri].walk_start_cycle = c + 1;
@@ -161,6 +175,14 @@ inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangl
     out[i].pixels = px;
   }
   return out;
+}
+
+// The same with a sink whose ready is a function of the cycle alone (a --sink-stall pattern).
+inline std::vector<TriangleCycles> reference_cycles(const std::vector<RefTriangle>& tris,
+                                                    uint64_t rows_per_group, uint64_t depth,
+                                                    const SinkPattern& sink) {
+  PatternDownstream ds(sink);
+  return reference_cycles(tris, rows_per_group, depth, ds);
 }
 
 }  // namespace trirast::test

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "common/engine.hpp"
-#include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 
 namespace trirast::rtl {
 
@@ -35,11 +35,12 @@ const std::vector<RtlBuild>& trad_builds();
 const std::vector<RtlBuild>& halfspace_builds();
 const std::vector<RtlBuild>& improved2_builds();
 
-// Runs `build` (every RTL engine's run once it picked its build): a bad --sink-stall pattern fails
-// before anything runs; reports the build's FIFO depth (work "rtl_build_fifo_depth").
+// Runs `build` (every RTL engine's run once it picked its build): a bad --sink-stall (a pattern
+// or queue:RATE:CAPACITY; span_downstream.hpp) fails before anything runs; reports the build's
+// FIFO depth (work "rtl_build_fifo_depth").
 inline void run_build(const RtlBuild& build, const SetupResult& setup, const RasterConfig& cfg,
                       uint32_t x_seed, EngineResult& out) {
-  (void)SinkPattern::parse(cfg.sink_stall);
+  (void)make_span_downstream(cfg.sink_stall);  // parsed only: a program's factory is not called
   build.run(setup, cfg, x_seed, out);
   out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
 }

@@ -2,6 +2,9 @@
 // scene, and the spans with their pop cycles and the accept cycles that the Verilated model
 // produces for them at the default hardware (N = 1, DEPTH = 8) with a periodic sink.
 //   trirast_rtl_vectors SCENE OUTDIR READY STALL [halfspace[:STAMP:TILE:WALK] | improved2:FORM]
+// READY and STALL are cycle counts: --sink-stall periodic:READY:STALL, the fixed pattern
+// tb_trirast.sv drives from +ready/+stall. A downstream that reacts to the spans it takes
+// (--sink-stall queue:RATE:CAPACITY) cannot be replayed there and is refused.
 // (the half-space unit's vectors from the halfspace-rtl engine, at --stamp STAMP --tile TILE
 // (0: none) --hs-walk WALK (row | zigzag); default 2:8:zigzag, trirast_halfspace_top's defaults; the
 // second-generation unit's from the improved2-rtl engine in corner form FORM, 1 radix 16, 0
@@ -60,6 +63,16 @@ int main(int argc, char** argv) {
   }
   try {
     const std::string spec = argv[1], dir = argv[2];
+    for (const std::string arg : {argv[3], argv[4]}) {
+      if (arg.rfind("queue:", 0) == 0)
+        throw std::invalid_argument(
+            "READY STALL: '" + arg + "': the Icarus bench drives a fixed periodic sink "
+            "(--sink-stall periodic:READY:STALL); --sink-stall queue:RATE:CAPACITY, a downstream "
+            "that reacts to the spans it takes, is not supported there");
+      if (arg.empty() || arg.find_first_not_of("0123456789") != std::string::npos)
+        throw std::invalid_argument("READY STALL: '" + arg + "' is not a cycle count (the Icarus "
+                                    "bench drives --sink-stall periodic:READY:STALL)");
+    }
     const int ready = std::stoi(argv[3]), stall = std::stoi(argv[4]);
     RasterConfig cfg;
     cfg.width = 256;

@@ -1,6 +1,7 @@
 // The Verilated RTL of the improved unit (rtl/) as an Engine: the transactor feeds set-up
-// triangles back to back, drives span_ready_i from the --sink-stall pattern, collects spans and
-// the per-triangle cycles of docs/timing.md (docs/rtl.md, "Harness").
+// triangles back to back, drives span_ready_i from the run's downstream (--sink-stall,
+// common/span_downstream.hpp), collects spans and the per-triangle cycles of docs/timing.md
+// (docs/rtl.md, "Harness").
 #pragma once
 #include <cstdint>
 #include <memory>

@@ -10,6 +10,7 @@
 
 #include "common/engine.hpp"
 #include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 #include "common/cycle_reference.hpp"
 
 namespace trirast::test {
@@ -28,9 +29,12 @@ struct Ref2Triangle {
 };
 
 // corner_radix16: the digit-serial corner unit (else products: values one cycle after entering C).
+// The sink is a SpanDownstream driven by its contract (asked in the cycles a span is on offer,
+// handed each popped span in its pop cycle), the spans as reference_span() (cycle_reference.hpp):
+// triangle, the row's position in the walk, its pixels.
 inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Triangle>& tris,
                                                      bool corner_radix16, uint64_t n,
-                                                     uint64_t depth, const SinkPattern& sink) {
+                                                     uint64_t depth, SpanDownstream& sink) {
   const size_t none = tris.size();
   std::vector<TriangleCycles> out = passed_through_rows(tris);
   // A stage register: the triangle it holds (none: empty) and, for C and L, the first cycle its
@@ -46,6 +50,7 @@ inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Trian
   struct SpanRef {
     size_t tri;
     uint64_t pixels;
+    size_t row;  // its position in the triangle's walk
   };
   std::vector<SpanRef> push_q;  // spans registered for the push
   std::deque<SpanRef> fifo;     // spans in the FIFO
@@ -65,7 +70,7 @@ inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Trian
         w_go = true;
         const std::vector<uint64_t>& rows = tris[w].row_pixels;
         for (uint64_t r = 0; r < n && w_row + r < rows.size(); ++r)
-          if (rows[w_row + r]) group.push_back(SpanRef{w, rows[w_row + r]});
+          if (rows[w_row + r]) group.push_back(SpanRef{w, rows[w_row + r], w_row + r});
         w_last = w_row + n >= rows.size();
       } else {
         ++out[w].stall_cycles;
@@ -95,6 +100,8 @@ inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Trian
       o.done_cycle = t;
       ++o.spans;
       o.pixels += fifo.front().pixels;
+      sink.take(reference_span(tris[fifo.front().tri].tri, fifo.front().row, fifo.front().pixels),
+                t);
       fifo.pop_front();
     }
     if (b_retire) {  // an empty box: every column its retire cycle
@@ -150,6 +157,14 @@ inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Trian
     }
   }
   return out;
+}
+
+// The same with a sink whose ready is a function of the cycle alone (a --sink-stall pattern).
+inline std::vector<TriangleCycles> reference2_cycles(const std::vector<Ref2Triangle>& tris,
+                                                     bool corner_radix16, uint64_t n,
+                                                     uint64_t depth, const SinkPattern& sink) {
+  PatternDownstream ds(sink);
+  return reference2_cycles(tris, corner_radix16, n, depth, ds);
 }
 
 }  // namespace trirast::test

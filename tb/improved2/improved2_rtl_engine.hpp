@@ -1,7 +1,7 @@
 // The Verilated RTL of the second-generation improved unit (rtl/improved2/trirast_improved2.f) as an Engine:
 // the transactor of the other RTL engines (cycle_loop.hpp) with the unit's ports
-// (improved2_harness.hpp): set-up triangles back to back, span_ready_i from the --sink-stall
-// pattern, spans and the per-triangle cycles of the SystemC model improved2-sc's contract
+// (improved2_harness.hpp): set-up triangles back to back, span_ready_i from the run's downstream
+// (--sink-stall, common/span_downstream.hpp), spans and the per-triangle cycles of the SystemC model improved2-sc's contract
 // (docs/timing.md, "The second-generation improved unit").
 #pragma once
 #include <cstdint>

@@ -1,6 +1,6 @@
 // The Verilated RTL of the traditional-Bresenham unit (rtl/trad/trirast_trad_*.sv) as an Engine: the
 // same transactor as the rtl engine (rtl_engine.hpp): set-up triangles back to back, span_ready_i
-// from the --sink-stall pattern, spans and the per-triangle cycles of docs/timing.md ("The
+// from the run's downstream (--sink-stall, common/span_downstream.hpp), spans and the per-triangle cycles of docs/timing.md ("The
 // traditional unit"). Its spans are the C++ trad model's (not the golden rule: exact = false).
 #pragma once
 #include <cstdint>

@@ -1,6 +1,7 @@
 // The Verilated RTL (rtl/, engine "improved-rtl"): spans identical to the golden on the hard cases,
 // 10,000 random triangles and the meshes; cycles equal to docs/timing.md, both in closed form and
-// against an independent cycle-by-cycle reference written from that document (below); configuration
+// against an independent cycle-by-cycle reference written from that document (below), also with a
+// queue downstream (--sink-stall queue:RATE:CAPACITY, which reacts to the spans it took); configuration
 // errors; the FST trace of a window read back with fst2vcd.
 #include <gtest/gtest.h>
 
@@ -9,12 +10,14 @@
 #include <cstdlib>
 #include <deque>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/setup.hpp"
-#include "common/sink_pattern.hpp"
+#include "common/span_downstream.hpp"
 #include "golden/golden.hpp"
 #include "improved/improved_sc.hpp"
 #include "improved/improved_rtl_engine.hpp"
@@ -71,6 +74,7 @@ struct RefTriangle {
   uint64_t L;             // max over the lanes of boundary_steps_k + divider_iterations_k
   int64_t rows;           // Ymax + 1
   std::vector<bool> has;  // has[j]: row j has a span
+  std::vector<uint64_t> pixels;  // pixels[j]: its pixels
 };
 
 std::vector<RefTriangle> ref_triangles(const SetupResult& setup, const RasterConfig& cfg) {
@@ -79,13 +83,17 @@ std::vector<RefTriangle> ref_triangles(const SetupResult& setup, const RasterCon
   for (const TriangleSetup& t : setup.tris) {
     SpanList spans;
     const UnitTriangleResult r = unit.run_triangle(t, spans);
-    RefTriangle rt{r.iface.empty, 0, 0, {}};
+    RefTriangle rt{r.iface.empty, 0, 0, {}, {}};
     if (!rt.empty) {
       for (int k = 0; k < 3; ++k)
         rt.L = std::max(rt.L, r.work.edge[k].boundary_steps + r.work.edge[k].divider_iterations);
       rt.rows = r.iface.Ymax + 1;
       rt.has.assign(size_t(rt.rows), false);
-      for (const Span& s : spans) rt.has[size_t(s.y - r.iface.y0)] = true;
+      rt.pixels.assign(size_t(rt.rows), 0);
+      for (const Span& s : spans) {
+        rt.has[size_t(s.y - r.iface.y0)] = true;
+        rt.pixels[size_t(s.y - r.iface.y0)] = uint64_t(s.pixels());
+      }
     }
     out.push_back(rt);
   }
@@ -94,7 +102,9 @@ std::vector<RefTriangle> ref_triangles(const SetupResult& setup, const RasterCon
 
 std::vector<TriangleCycles> reference_cycles(const SetupResult& setup, const RasterConfig& cfg) {
   const std::vector<RefTriangle> tris = ref_triangles(setup, cfg);
-  const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);
+  // The run's downstream (a pattern or a queue), asked in the cycles a span is on offer and
+  // handed each popped span (its triangle, its row in the walk, its pixels).
+  const std::unique_ptr<SpanDownstream> sink = make_span_downstream(cfg);
   const size_t n = tris.size();
   const int64_t N = cfg.endpoints;
   const size_t depth = size_t(cfg.fifo_depth);
@@ -107,25 +117,27 @@ std::vector<TriangleCycles> reference_cycles(const SetupResult& setup, const Ras
   size_t wtri = 0;
   int64_t wrow = 0;
   bool wany = false;
-  std::deque<size_t> fifo;
+  std::deque<std::pair<size_t, int64_t>> fifo;  // triangle, row
   for (uint64_t c = 0; c < (uint64_t(1) << 32); ++c) {
     const size_t count0 = fifo.size();  // occupancy at the start of the cycle
     const bool walk_idle = !walking;
     // Sink: pop the oldest span.
-    if (count0 > 0 && sink.ready(c)) {
-      TriangleCycles& tc = out[fifo.front()];
+    if (count0 > 0 && sink->ready(c)) {
+      const auto [p, row] = fifo.front();
+      sink->take(Span{setup.tris[p].index, int32_t(row), 0, int32_t(tris[p].pixels[size_t(row)])}, c);
+      TriangleCycles& tc = out[p];
       if (tc.spans == 0) tc.first_span_cycle = c;
       tc.done_cycle = c;
       ++tc.spans;
       fifo.pop_front();
     }
     // Walk stage: a group when count <= DEPTH - N at the start of the cycle, else a stall.
-    std::vector<size_t> pushes;
+    std::vector<std::pair<size_t, int64_t>> pushes;
     if (walking) {
       const RefTriangle& t = tris[wtri];
       if (count0 + size_t(N) <= depth) {
         for (int64_t r = 0; r < N && wrow <= t.rows - 1; ++r, ++wrow)
-          if (t.has[size_t(wrow)]) pushes.push_back(wtri);
+          if (t.has[size_t(wrow)]) pushes.push_back({wtri, wrow});
         wany = wany || !pushes.empty();
         if (wrow >= t.rows) {
           walking = false;  // idle from c + 1
@@ -135,7 +147,7 @@ std::vector<TriangleCycles> reference_cycles(const SetupResult& setup, const Ras
         ++out[wtri].stall_cycles;
       }
     }
-    for (size_t p : pushes) fifo.push_back(p);
+    for (const auto& e : pushes) fifo.push_back(e);
     // Setup stage.
     switch (setup_st) {
       case Idle:
@@ -176,9 +188,13 @@ std::vector<TriangleCycles> reference_cycles(const SetupResult& setup, const Ras
   return out;
 }
 
-void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std::string& what) {
+// with_model: also every column against the SystemC model (which reads --sink-stall as a cycle
+// pattern only, not yet a queue downstream). out: the RTL's run.
+void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std::string& what,
+                   bool with_model = true, EngineResult* out = nullptr) {
   const std::vector<TriangleCycles> ref = reference_cycles(setup, cfg);
-  const EngineResult r = run_rtl(setup, cfg);
+  EngineResult run = run_rtl(setup, cfg);
+  const EngineResult& r = out ? (*out = std::move(run)) : run;
   ASSERT_EQ(r.cycles.size(), ref.size()) << what;
   for (size_t p = 0; p < ref.size(); ++p) {
     const TriangleCycles &a = r.cycles[p], &b = ref[p];
@@ -189,6 +205,7 @@ void expect_cycles(const SetupResult& setup, const RasterConfig& cfg, const std:
     ASSERT_EQ(a.spans, b.spans) << what << ": triangle " << a.tri;
     ASSERT_EQ(a.stall_cycles, b.stall_cycles) << what << ": triangle " << a.tri;
   }
+  if (!with_model) return;
   // Every column, the stage breakdown too, equals the SystemC model's (docs/timing.md, "Outputs").
   EngineResult sc;
   make_improved_sc_engine()->run(setup, cfg, sc);
@@ -445,6 +462,30 @@ TEST(RtlCycles, BackPressureStalls) {
   const EngineResult r = run_rtl(setup, cfg);
   EXPECT_GT(r.cycles[0].stall_cycles, 50u);
   expect_cycles(setup, cfg, "back-pressure");
+}
+
+// A queue downstream (--sink-stall queue:RATE:CAPACITY, docs/timing.md "Sink patterns"): its
+// ready reacts to the pixels of the spans it took; the RTL asks it every cycle, the reference only
+// in the cycles a span is on offer, and they must give the same cycles.
+TEST(RtlCycles, QueueDownstreamFollowsTheReference) {
+  const std::vector<InputTriangle> tris = random_tris(0x9e0e5u, 800, 80.0);
+  uint64_t stalls = 0;
+  for (int N : {1, 4})
+    for (const char* queue : {"queue:2:16", "queue:1:4", "queue:8:64", "queue:3:1"})
+      for (int depth : {N, 8}) {
+        RasterConfig cfg = default_cfg();
+        cfg.endpoints = N;
+        cfg.fifo_depth = depth;
+        cfg.sink_stall = queue;
+        EngineResult r;
+        expect_cycles(setup_scene(tris, cfg), cfg,
+                      "N=" + std::to_string(N) + " depth=" + std::to_string(depth) + " " + queue,
+                      false, &r);
+        if (HasFatalFailure()) return;
+        EXPECT_GT(r.work["stall_cycles.span_sink"], 0u) << queue;
+        stalls += r.work["walk_stall_cycles"];
+      }
+  EXPECT_GT(stalls, 1000u);  // the queues back-pressured the walk stage
 }
 
 // ---- the trace ----
