@@ -1,5 +1,5 @@
-// The stage downstream of a unit's span output (docs/embedding.md, "The downstream"): it decides,
-// cycle by cycle, whether it takes the span the unit offers. The SystemC models and the RTL
+// The stage downstream of a unit's span output (docs/timing.md, "Sink patterns"; docs/embedding.md,
+// "SystemC components"): it decides, cycle by cycle, whether it takes the span the unit offers. The SystemC models and the RTL
 // harnesses drive the same object, so a downstream that reacts to what it received gives the same
 // per-triangle cycles in both.
 //

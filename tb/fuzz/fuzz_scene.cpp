@@ -113,9 +113,11 @@ RasterConfig draw_fuzz_config(FuzzDraws& d, const std::vector<FuzzWidths>& width
   } else if (sink < 8) {
     cfg.sink_stall = "periodic:" + std::to_string(d.range(1, 5)) + ":" + std::to_string(d.range(0, 5));
   } else if (kFuzzDrawsQueueDownstreams && sink == 9) {
-    // A downstream that reacts to what it took: RATE pixels per cycle, CAPACITY pixels.
-    const int64_t rate = d.range(1, 8);
-    cfg.sink_stall = "queue:" + std::to_string(rate) + ":" + std::to_string(d.range(1, 64));
+    // A downstream that reacts to what it took: RATE pixels per cycle, CAPACITY pixels. A queue
+    // makes a run's cycles grow with its pixels (pixels / RATE) where the patterns' grow with its
+    // spans, so RATE is drawn from 8 up: the generator's screen-sized triangles stay affordable.
+    const int64_t rate = d.range(8, 128);
+    cfg.sink_stall = "queue:" + std::to_string(rate) + ":" + std::to_string(d.range(1, 512));
   } else {
     cfg.sink_stall = "random:" + std::to_string(d.below(1000)) + ":" + std::to_string(d.range(0, 90));
   }

@@ -85,14 +85,11 @@ struct FuzzWidths {
   int subpixel_bits, coord_int_bits, box_bits;
 };
 
-// Whether draw_fuzz_config also draws queue:RATE:CAPACITY downstreams (--sink-stall; RATE 1..8,
-// CAPACITY 1..64: a downstream whose ready reacts to the spans it took, span_downstream.hpp), one
-// configuration in ten, in place of a tenth of the random patterns. OFF: the SystemC engines
-// (*-sc) read --sink-stall as a cycle pattern only and refuse a queue with invalid_argument, which
-// check_engines counts as a skipped engine, not a disagreement, so a queue scene would silently
-// compare the RTL engines alone. Turn it on once every timed engine accepts a queue (the RTL
-// engines do). Off, the draws are those from before it existed (a seed draws the same scenes).
-inline constexpr bool kFuzzDrawsQueueDownstreams = false;
+// Whether draw_fuzz_config also draws queue:RATE:CAPACITY downstreams (--sink-stall; RATE 8..128,
+// CAPACITY 1..512: a downstream whose ready reacts to the spans it took, span_downstream.hpp), one
+// configuration in ten, in place of a tenth of the random patterns. Every timed engine, SystemC
+// and RTL, drives the same downstream object.
+inline constexpr bool kFuzzDrawsQueueDownstreams = true;
 
 // A configuration every engine must accept: viewport, subpixel bits, coordinate range, box bits
 // (always large enough for the viewport), boundary mode, culling, and the timed engines'

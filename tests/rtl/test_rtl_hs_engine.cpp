@@ -125,6 +125,29 @@ TEST(RtlHalfspace, HardCasesAndMeshes) {
       }
 }
 
+// A downstream that reacts to what it took (a pixel queue, --sink-stall queue:RATE:CAPACITY):
+// the model and the RTL drive the same object, so their per-triangle cycles agree on three scenes
+// with every built stamp size; the queue really held the unit back.
+TEST(RtlHalfspace, ReactingDownstream) {
+  for (const HalfspaceShape& b : kBuilt) {
+    if (b.tile == 0) continue;  // untiled: every stamp of a box (HardCasesAndMeshes covers it)
+    for (const char* spec : {"builtin:mixed", "builtin:lowpoly-near", TRIRAST_SOURCE_DIR "/tests/data/cube.obj"})
+      for (const char* sink : {"queue:2:16", "queue:1:4"}) {
+        RasterConfig cfg = config(b);
+        cfg.sink_stall = sink;
+        const SetupResult setup = setup_scene(load_scene(spec, cfg, CameraOptions{}).tris, cfg);
+        expect_equal(setup, cfg, std::string(spec) + " " + name(b, sink, cfg.fifo_depth));
+        RasterConfig ready_cfg = cfg;
+        ready_cfg.sink_stall = "none";
+        EngineResult sc, ready;
+        make_halfspace_sc_engine()->run(setup, cfg, sc);
+        make_halfspace_sc_engine()->run(setup, ready_cfg, ready);
+        EXPECT_GT(sc.work["stall_cycles.span_sink"], 0u) << spec << " " << sink;
+        EXPECT_GT(sc.total_cycles, ready.total_cycles) << spec << " " << sink;
+      }
+  }
+}
+
 // ---- the coordinate limits ----------------------------------------------------------------------
 
 // Triangles with vertices on the corners and edges of the coordinate range [-L, L) and on the

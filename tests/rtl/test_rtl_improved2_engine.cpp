@@ -100,6 +100,25 @@ TEST(RtlImproved2, CyclesTableScenes) {
   }
 }
 
+// A downstream that reacts to what it took (a pixel queue, --sink-stall queue:RATE:CAPACITY,
+// common/span_downstream.hpp): the model and the RTL drive the same object, so their per-triangle
+// cycles and statistics agree on three scenes, both corner forms; the queue really held the unit
+// back (sink stall cycles, and cycles other than an always-ready downstream's).
+TEST(RtlImproved2, ReactingDownstream) {
+  for (const char* spec : {"builtin:mixed", "builtin:highpoly-near", TRIRAST_SOURCE_DIR "/tests/data/cube.obj"})
+    for (int form : {0, 1})
+      for (const char* sink : {"queue:2:16", "queue:1:4"}) {
+        const RasterConfig cfg = cfg_with(form, sink, 8);
+        const SetupResult setup = scene(spec, cfg);
+        expect_improved2(setup, cfg, std::string(spec) + " form " + std::to_string(form) + " " + sink);
+        EngineResult sc, ready;
+        make_improved2_sc_engine()->run(setup, cfg, sc);
+        make_improved2_sc_engine()->run(setup, cfg_with(form, "none", 8), ready);
+        EXPECT_GT(sc.work["stall_cycles.span_sink"], 0u) << spec << " " << sink;
+        EXPECT_GT(sc.total_cycles, ready.total_cycles) << spec << " " << sink;
+      }
+}
+
 // FIFO depths 1 (every row waits for the span before to leave), 2, 4, 16 and 1024 (the
 // Verilated maximum), random triangles of every size class, both forms.
 TEST(RtlImproved2, FifoDepths) {
