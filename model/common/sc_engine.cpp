@@ -74,7 +74,7 @@ class StreamProducer : public sc_core::sc_module {
   static constexpr uint64_t kQuantumCycles = uint64_t(1) << 16;
 
   void thread() {
-    tlm::tlm_generic_payload p;
+    tlm::tlm_generic_payload& p = payload_;
     for (;;) {
       while (!pending_) sc_core::wait(start_ev_);
       pending_ = false;
@@ -102,6 +102,9 @@ class StreamProducer : public sc_core::sc_module {
 
   RasterUnitSc& unit_;
   const std::vector<TriangleSetup>* tris_ = nullptr;
+  // A member, not a local of the thread: the thread never returns, and the payload's extension
+  // array must be freed when the module is (LeakSanitizer).
+  tlm::tlm_generic_payload payload_;
   tlm_utils::tlm_quantumkeeper quantum_;
   bool pending_ = false, finished_ = false;
   sc_core::sc_event start_ev_;
