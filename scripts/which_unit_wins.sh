@@ -1,8 +1,9 @@
 #!/bin/bash
-# docs/which-unit-wins.md and docs/img/which-unit-wins/*.png: which unit (improved, traditional,
-# half-space at stamp sizes 1, 2, 4) wins where, from the timed SystemC models (per-triangle cycles
-# on the benchmark scenes and meshes, and a sweep of box sizes and aspect ratios) and the areas in
-# docs/synth.csv (scripts/synth.sh).
+# docs/which-unit-wins.md and docs/img/which-unit-wins/*.png: which unit (improved, improved2 in
+# both corner forms, traditional, half-space at stamp sizes 1, 2, 4) wins where, in time and per
+# area, from the timed SystemC models (per-triangle cycles on the benchmark scenes and meshes, and a
+# sweep of box sizes and aspect ratios) and the areas and routed clocks in docs/synth.csv
+# (scripts/synth.sh).
 # Usage: scripts/which_unit_wins.sh [OUTPUT.md]   (default docs/which-unit-wins.md; the plots go
 #                                                 to docs/img/which-unit-wins/, or to the folder
 #                                                 TRIRAST_WUW_IMG names)

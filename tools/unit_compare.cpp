@@ -1,6 +1,8 @@
 // Which unit wins where (scripts/which_unit_wins.sh turns the output into docs/which-unit-wins.md):
-// the timed SystemC models of the improved, traditional and half-space units (stamp 1, 2, 4; tile
-// 8, zigzag walk, the CLI defaults otherwise: N = 1, FIFO 8, sink always ready, S = 8, 1024x768)
+// the timed SystemC models of the improved unit, the second-generation improved unit in both corner
+// forms (radix-16 digit-serial, the iCE40 form and the default; DSP products, the xc7 form), the
+// traditional unit and the half-space unit (stamp 1, 2, 4; tile 8, zigzag walk), the CLI defaults
+// otherwise (N = 1, FIFO 8, sink always ready, S = 8, 1024x768)
 // on the benchmark scenes and meshes, and on a sweep of scenes whose triangles all have one box
 // size and aspect ratio.
 //
@@ -15,9 +17,10 @@
 //                     scene's total (added_cycles: done cycle minus the latest done cycle before
 //                     it), so the column sums to the unit's total cycles
 //   sweep.csv         box_area,aspect,box_w,box_h,triangles,mean_box,mean_pixels,trad_mean_pixels,
-//                     <unit>: cycles per
-//                     triangle (total / triangles) of scenes of equal-shaped triangles
-// The unit columns are improved, trad, hs1, hs2, hs4.
+//                     <unit>: the total cycles of each unit on a scene of equal-shaped triangles
+//                     (cycles per triangle = total / triangles)
+// The unit columns are improved, improved2 (radix-16 corners), improved2p (product corners), trad,
+// hs1, hs2, hs4.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -32,6 +35,7 @@
 #include "common/setup.hpp"
 #include "benchmark_scenes.hpp"
 #include "improved/improved_sc.hpp"
+#include "improved2/improved2_sc.hpp"
 #include "trad/trad_sc.hpp"
 #include "halfspace/halfspace_sc.hpp"
 #include "scene/scene.hpp"
@@ -42,18 +46,23 @@ namespace {
 
 struct Unit {
   const char* name;
-  int stamp;  // half-space stamp size, 0 for the Bresenham units
+  int stamp;        // half-space stamp size, 0 for the Bresenham units
+  int corner_form;  // the second-generation unit's corner form (Improved2Config), else -1
 };
-const Unit kUnits[] = {{"improved", 0}, {"trad", 0}, {"hs1", 1}, {"hs2", 2}, {"hs4", 4}};
+const Unit kUnits[] = {{"improved", 0, -1}, {"improved2", 0, 1}, {"improved2p", 0, 0},
+                       {"trad", 0, -1},     {"hs1", 1, -1},      {"hs2", 2, -1},
+                       {"hs4", 4, -1}};
 
 std::unique_ptr<Engine> make(const Unit& u) {
   if (u.stamp > 0) return make_halfspace_sc_engine();
+  if (u.corner_form >= 0) return make_improved2_sc_engine();
   return std::string(u.name) == "improved" ? make_improved_sc_engine() : make_trad_sc_engine();
 }
 
 RasterConfig config_of(const Unit& u) {
-  RasterConfig cfg;  // the defaults: tile 8, zigzag
+  RasterConfig cfg;  // the defaults: tile 8, zigzag; radix-16 corners
   if (u.stamp > 0) cfg.halfspace.stamp = u.stamp;
+  if (u.corner_form >= 0) cfg.improved2.corner_form = u.corner_form;
   return cfg;
 }
 
@@ -193,11 +202,11 @@ int sc_main(int argc, char** argv) {
         const SetupResult setup = setup_scene(shaped(w, h, n, cfg, uint64_t(la * 100 + aspect * 16)), cfg);
         if (setup.tris.empty()) continue;
         double box = 0, pix = 0, tpix = 0;
-        std::vector<double> per;
+        std::vector<uint64_t> per;
         for (const Unit& u : kUnits) {
           EngineResult r;
           make(u)->run(setup, config_of(u), r);
-          per.push_back(double(r.total_cycles) / double(setup.tris.size()));
+          per.push_back(r.total_cycles);
           if (std::string(u.name) == "trad")
             for (const TriangleCycles& c : r.cycles) tpix += double(c.pixels);
           if (box == 0)
@@ -211,10 +220,7 @@ int sc_main(int argc, char** argv) {
         std::snprintf(line, sizeof line, "%.0f,%.4g,%.0f,%.0f,%zu,%.1f,%.1f,%.1f", area, aspect, w,
                       h, setup.tris.size(), box / m, pix / m, tpix / m);
         sw << line;
-        for (double p : per) {
-          std::snprintf(line, sizeof line, ",%.2f", p);
-          sw << line;
-        }
+        for (uint64_t p : per) sw << ',' << p;
         sw << '\n';
       }
       std::fprintf(stderr, "unit_compare: sweep box area %.0f done\n", area);
