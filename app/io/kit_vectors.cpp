@@ -104,8 +104,9 @@ void check_kit_vectors(const std::string& engine, const RasterConfig& cfg, const
   const std::string view = unit ? engine.substr(unit->name.size() + 1) : "";
   if (!unit || (view != "sc" && view != "rtl"))
     refuse(dir, "engine '" + engine +
-                    "' has no RTL top to replay (the kit runs a unit's trirast_UNIT_top; use a "
-                    "unit's -rtl or -sc engine, e.g. --engine improved-rtl)");
+                    "' has no RTL top with cycles to replay (the kit runs a unit's "
+                    "trirast_UNIT_top against the cycles of its -rtl or -sc engine, e.g. --engine "
+                    "improved-rtl)");
   if (cfg.subpixel_bits != rtl::kSubpixelBits || cfg.coord_int_bits != rtl::kCoordIntBits ||
       cfg.box_bits != rtl::kBoxBits)
     refuse(dir, "the kit's RTL has the widths of rtl/common/trirast_pkg.sv (--subpixel-bits " +

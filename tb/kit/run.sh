@@ -10,7 +10,8 @@ the parameters of VECTORS_DIR/params.txt, with Verilator (--binary --timing --as
 (iverilog -g2012, vvp), in WORKDIR (a build is reused while its parameters, memory sizes and
 sources are unchanged), and runs it with VECTORS_DIR/plusargs.txt. The scoreboard holds every
 span and every triangle's accept, first-span and done cycles against the vectors. Exit status 0
-only when the bench prints PASS; the simulator's own exit status is non-zero on FAIL.
+only when the bench prints PASS; 1 when it fails (the simulator's own exit status is non-zero
+on FAIL in both: vvp 1, a Verilated model 134, from $fatal); 2 on bad input.
 
 options:
   --sim verilator|icarus  the simulator (required)
@@ -49,14 +50,14 @@ while [ $# -gt 0 ]; do
     *) POS+=("$1"); shift ;;
   esac
 done
-[ ${#POS[@]} -eq 2 ] || die "expected VECTORS_DIR WORKDIR (see --help)"
-VEC="$(cd "${POS[0]}" 2>/dev/null && pwd)" || die "${POS[0]}: no such vectors directory"
-WORK="${POS[1]}"
 case "$SIM" in
   verilator|icarus) ;;
   "") die "--sim verilator|icarus is required" ;;
   *) die "--sim $SIM: expected verilator or icarus" ;;
 esac
+[ ${#POS[@]} -eq 2 ] || die "expected VECTORS_DIR WORKDIR (see --help)"
+VEC="$(cd "${POS[0]}" 2>/dev/null && pwd)" || die "${POS[0]}: no such vectors directory"
+WORK="${POS[1]}"
 for f in params.txt plusargs.txt tris.hex spans.hex expect.hex; do
   [ -f "$VEC/$f" ] || die "$VEC/$f: missing (write the directory with trirast raster --vectors)"
 done
@@ -157,15 +158,16 @@ fi
 t0=$(date +%s)
 set +e
 if [ "$SIM" = verilator ]; then
-  out="$("$BIN" +kit_dir="$VEC" "${PLUS[@]}" $plusargs 2>&1)"
+  out="$("$BIN" +kit_dir="${POS[0]}" "${PLUS[@]}" $plusargs 2>&1)"
 else
-  out="$(vvp -n "$BIN" +kit_dir="$VEC" "${PLUS[@]}" $plusargs 2>&1)"
+  out="$(vvp -n "$BIN" +kit_dir="${POS[0]}" "${PLUS[@]}" $plusargs 2>&1)"
 fi
 rc=$?
 set -e
 echo "$out" | grep -v "^- \|^VCD info\|^\*\*\* \|Verilog \$finish" || true
-echo "kit: $SIM ran $UNIT on $VEC in $(( $(date +%s) - t0 )) s, exit status $rc"
-if [ $rc -ne 0 ]; then exit "$rc"; fi
+echo "kit: $SIM ran $UNIT on ${POS[0]} in $(( $(date +%s) - t0 )) s, exit status $rc"
+# (a Verilated --binary model aborts on $fatal: exit status 134; vvp exits with 1)
+if [ $rc -ne 0 ]; then exit 1; fi
 if ! grep -q "^PASS:" <<< "$out"; then
   echo "tb/kit/run.sh: the simulation ended without a PASS line" >&2
   exit 1

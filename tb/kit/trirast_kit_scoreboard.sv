@@ -42,12 +42,12 @@ module trirast_kit_scoreboard #(
   logic [SpanBits-1:0] exp_spans [MaxSpans];
   logic [159:0] expect_q [MaxTris];  // {first, count, accept, first_span, done}
   logic [31:0] got_count [MaxTris];
-  logic [63:0] got_accept [MaxTris], got_first [MaxTris], got_done [MaxTris];
+  logic [63:0] got_first [MaxTris], got_done [MaxTris];
   logic got_any [MaxTris];
   logic got_accepted [MaxTris];
   int ntris, nspans, gap, check_cycles, errors, k;
   longint unsigned last, slack, limit;
-  string dir;
+  string dir, cycles_said;
   logic over;
 
   initial begin
@@ -75,8 +75,12 @@ module trirast_kit_scoreboard #(
   end
 
   // The first difference is printed in full; later ones are counted (up to 10 more printed).
+  // During the run a line names the cycle; at its end, "end of run".
   task automatic differ(input string what);
-    if (errors <= 10) $display("kit scoreboard: cycle %0d: %s", cycle, what);
+    if (errors <= 10) begin
+      if (over) $display("kit scoreboard: end of run: %s", what);
+      else $display("kit scoreboard: cycle %0d: %s", cycle, what);
+    end
     errors = errors + 1;
   endtask
 
@@ -84,6 +88,7 @@ module trirast_kit_scoreboard #(
     if (tag >= TagBits'(ntris)) begin
       differ($sformatf("a triangle with tag %0d (of %0d triangles) retired", tag, ntris));
     end else begin
+      if (!got_any[tag]) check_cycle(int'(tag), "first-span (retire)", cycle, expect_q[tag][63:32]);
       got_any[tag] = 1'b1;
       got_first[tag] = cycle;
       got_done[tag] = cycle;
@@ -100,14 +105,12 @@ module trirast_kit_scoreboard #(
     int p;
     for (p = 0; p < ntris; p = p + 1) begin
       if (!got_accepted[p]) differ($sformatf("triangle %0d: never accepted", p));
-      else check_cycle(p, "accept", got_accept[p], expect_q[p][95:64]);
       if (got_count[p] != expect_q[p][127:96])
         differ($sformatf("triangle %0d: %0d spans, expected %0d", p, got_count[p],
                          expect_q[p][127:96]));
       if (!got_any[p]) begin
         differ($sformatf("triangle %0d: neither a span nor a retirement", p));
       end else begin
-        check_cycle(p, "first-span", got_first[p], expect_q[p][63:32]);
         check_cycle(p, "done", got_done[p], expect_q[p][31:0]);
       end
     end
@@ -116,9 +119,10 @@ module trirast_kit_scoreboard #(
       errors = errors + protocol_errors;
     end
     if (errors == 0) begin
-      $display("PASS: %0d triangles, %0d spans identical%s; the unit idle from cycle %0d", ntris, nspans,
-               check_cycles != 0 ? "; accept, first-span and done cycles identical"
-                                 : "; cycles NOT checked (+gap or +kit_cycles=0)", cycle);
+      if (check_cycles != 0) cycles_said = "accept, first-span and done cycles identical";
+      else cycles_said = "cycles NOT checked (+gap or +kit_cycles=0)";
+      $display("PASS: %0d triangles, %0d spans identical; %s; the unit idle from cycle %0d", ntris,
+               nspans, cycles_said, cycle);
       $finish;
     end else begin
       $fatal(1, "FAIL: %0d differences from %s (the first printed above)", errors, dir);
@@ -141,7 +145,7 @@ module trirast_kit_scoreboard #(
             differ($sformatf("triangle %0d (of %0d) accepted", accept_tag, ntris));
           end else begin
             got_accepted[accept_tag] = 1'b1;
-            got_accept[accept_tag] = cycle;
+            check_cycle(int'(accept_tag), "accept", cycle, expect_q[accept_tag][95:64]);
           end
         end
         if (retire) retired(retire_tag);
@@ -165,7 +169,10 @@ module trirast_kit_scoreboard #(
                                span_tag, i, span_y, span_x_begin, span_x_end,
                                want[2 * PixBits + PixBits : 2 * PixBits + 1],
                                want[2 * PixBits : PixBits + 1], want[PixBits:0]));
-            if (!got_any[span_tag]) got_first[span_tag] = cycle;
+            if (!got_any[span_tag]) begin
+              got_first[span_tag] = cycle;
+              check_cycle(int'(span_tag), "first-span", cycle, expect_q[span_tag][63:32]);
+            end
             got_any[span_tag] = 1'b1;
             got_done[span_tag] = cycle;
             got_count[span_tag] = i + 1;
