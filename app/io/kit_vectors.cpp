@@ -37,9 +37,10 @@ tris.hex     per triangle p, the unit top's triangle port (rtl/common/trirast_po
                trad (vertices only): {tri_vy_i, tri_vx_i, tri_tag_i}
              (edge k of a field at [k*width +: width]; widths of rtl/common/trirast_pkg.sv:
              VertexBits 24, CoefBits 25, EdgeBits 50, TagBits 32)
-spans.hex    the expected spans {tag[TagBits], y[PixBits], x_begin[PixBits], x_end[PixBits+1]}
-             (PixBits 15; x_end exclusive), triangle by triangle (0 first), each triangle's in
-             the order its span port gives them
+spans.hex    the expected spans {order[32], tag[TagBits], y[PixBits], x_begin[PixBits],
+             x_end[PixBits+1]} (PixBits 15; x_end exclusive), triangle by triangle (0 first), each
+             triangle's in the order its span port gives them; order: the span's position in the
+             span port's whole output (0 first)
 expect.hex   per triangle p: {first[32], count[32], accept[32], first_span[32], done[32]}:
              its spans are lines first .. first+count-1 of spans.hex; accept: the cycle of its
              triangle-port handshake; first_span, done: the cycles of its first and last span
@@ -139,8 +140,9 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
   // Spans grouped by triangle position, each triangle's in output order.
   std::map<uint32_t, size_t> pos_of;
   for (size_t p = 0; p < n; ++p) pos_of[setup.tris[p].index] = p;
-  std::vector<std::vector<Span>> by_tri(n);
-  for (const Span& s : output_order) by_tri[pos_of.at(s.tri)].push_back(s);
+  std::vector<std::vector<std::pair<Span, uint64_t>>> by_tri(n);  // each span with its order
+  for (size_t i = 0; i < output_order.size(); ++i)
+    by_tri[pos_of.at(output_order[i].tri)].push_back({output_order[i], uint64_t(i)});
 
   uint64_t last = 0;
   for (const TriangleCycles& tc : result.cycles) last = std::max(last, tc.done_cycle);
@@ -164,12 +166,13 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
       for (int k = 0; k < 3; ++k) h.put(1, t.edge[k].bias != 0);
     }
     tris << h.hex() << "\n";
-    for (const Span& s : by_tri[p]) {
+    for (const auto& [s, order] : by_tri[p]) {
       HexBits hs;
       hs.put(rtl::kPixBits + 1, s.x_end);
       hs.put(rtl::kPixBits, s.x_begin);
       hs.put(rtl::kPixBits, s.y);
       hs.put(rtl::kTagBits, int64_t(p));
+      hs.put(32, int64_t(order));
       spans << hs.hex() << "\n";
     }
     const TriangleCycles& tc = result.cycles[p];

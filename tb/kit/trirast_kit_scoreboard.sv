@@ -1,7 +1,8 @@
 // Testbench kit: the scoreboard. It reads the expected results of trirast raster --vectors
 // (+kit_dir=DIR: spans.hex, expect.hex) and holds the unit's outputs against them:
 //   * each triangle's spans, in order (span i of triangle p must be line first_p + i of
-//     spans.hex), and their number;
+//     spans.hex), and their number; and each span's position in the span port's whole output
+//     (the order of triangles' spans among one another);
 //   * each triangle's accept cycle (its triangle-port handshake), first-span and done cycles (its
 //     first and last span handshakes, or the cycle it retired without a span).
 // It prints the first difference (triangle, what, expected, got) as it happens, counts the rest,
@@ -39,7 +40,8 @@ module trirast_kit_scoreboard #(
   input  int                 protocol_errors
 );
   localparam int SpanBits = TagBits + 2 * PixBits + PixBits + 1;
-  logic [SpanBits-1:0] exp_spans [MaxSpans];
+  logic [32+SpanBits-1:0] exp_spans [MaxSpans];  // {order, tag, y, x_begin, x_end}
+  logic [31:0] taken;  // spans taken so far (the next span's order)
   logic [159:0] expect_q [MaxTris];  // {first, count, accept, first_span, done}
   logic [31:0] got_count [MaxTris];
   logic [63:0] got_first [MaxTris], got_done [MaxTris];
@@ -71,6 +73,7 @@ module trirast_kit_scoreboard #(
     end
     limit = last + slack + longint'(ntris) * longint'(gap + 1) * (gap != 0 ? 1 : 0);
     errors = 0;
+    taken = 0;
     over = 1'b0;
   end
 
@@ -121,7 +124,7 @@ module trirast_kit_scoreboard #(
     if (errors == 0) begin
       if (check_cycles != 0) cycles_said = "accept, first-span and done cycles identical";
       else cycles_said = "cycles NOT checked (+gap or +kit_cycles=0)";
-      $display("PASS: %0d triangles, %0d spans identical; %s; the unit idle from cycle %0d", ntris,
+      $display("PASS: %0d triangles, %0d spans identical and in order; %s; the unit idle from cycle %0d", ntris,
                nspans, cycles_said, cycle);
       $finish;
     end else begin
@@ -156,7 +159,7 @@ module trirast_kit_scoreboard #(
                              span_x_begin, span_x_end, span_tag));
           end else begin : span_check
             logic [31:0] first, count, i;
-            logic [SpanBits-1:0] want;
+            logic [32+SpanBits-1:0] want;
             first = expect_q[span_tag][159:128];
             count = expect_q[span_tag][127:96];
             i = got_count[span_tag];
@@ -164,11 +167,15 @@ module trirast_kit_scoreboard #(
             if (i >= count)
               differ($sformatf("triangle %0d: span %0d y %0d [%0d, %0d) is one more than the %0d expected",
                                span_tag, i, span_y, span_x_begin, span_x_end, count));
-            else if ({span_tag, span_y, span_x_begin, span_x_end} != want)
+            else if ({span_tag, span_y, span_x_begin, span_x_end} != want[SpanBits-1:0])
               differ($sformatf("triangle %0d: span %0d is y %0d [%0d, %0d), expected y %0d [%0d, %0d)",
                                span_tag, i, span_y, span_x_begin, span_x_end,
                                want[2 * PixBits + PixBits : 2 * PixBits + 1],
                                want[2 * PixBits : PixBits + 1], want[PixBits:0]));
+            else if (want[32+SpanBits-1:SpanBits] != taken)
+              differ($sformatf("triangle %0d: span %0d y %0d [%0d, %0d) is span %0d of the output, expected %0d",
+                               span_tag, i, span_y, span_x_begin, span_x_end, taken,
+                               want[32+SpanBits-1:SpanBits]));
             if (!got_any[span_tag]) begin
               got_first[span_tag] = cycle;
               check_cycle(int'(span_tag), "first-span", cycle, expect_q[span_tag][63:32]);
@@ -177,6 +184,7 @@ module trirast_kit_scoreboard #(
             got_done[span_tag] = cycle;
             got_count[span_tag] = i + 1;
           end
+          taken = taken + 1;
         end
       end
     end
