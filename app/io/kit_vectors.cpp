@@ -49,7 +49,8 @@ expect.hex   per triangle p: {first[32], count[32], accept[32], first_span[32], 
 params.txt   "unit UNIT" and the top's parameters, "NAME VALUE" per line (run.sh gives them to
              the simulator: trirast_UNIT_top's NumEndpoints, FifoDepth, CornerForm, StampSize,
              TileSize, WalkZigzag, as the unit has them)
-plusargs.txt the bench's run-time plusargs: +ntris +nspans; the static inputs +vp_xmax +vp_ymax
+plusargs.txt the bench's run-time plusargs: +kit_format (this format's number, 1: the bench
+             refuses another) +ntris +nspans; the static inputs +vp_xmax +vp_ymax
              (cfg_vp_xmax_i, cfg_vp_ymax_i), +fifo_depth (cfg_fifo_depth_i), +endpoints
              (cfg_endpoints_i), +divide (cfg_divide_i), +adaptive (cfg_adaptive_i); the
              downstream's span_ready_i pattern +sink=none|periodic|random with +sink_ready
@@ -57,6 +58,9 @@ plusargs.txt the bench's run-time plusargs: +ntris +nspans; the static inputs +v
              +sink_percent (random: not ready in cycle c when splitmix64(SEED * 0x9E3779B97F4A7C15
              + c) % 100 < PERCENT); +last, the last expected done cycle
 )";
+
+// The format's number (+kit_format in plusargs.txt); tb/kit/trirast_kit_scoreboard.sv's KitFormat.
+constexpr int kKitFormat = 1;
 
 // Hex of a bit vector of `bits` bits, bit 0 first in `bitsv` (MSB first in the text, as
 // $readmemh reads it).
@@ -202,7 +206,7 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
                      : sink.kind() == SinkPattern::Kind::Random ? "random"
                                                                 : "none";
   std::ofstream args = open_in(dir, "plusargs.txt");
-  args << "+ntris=" << n << " +nspans=" << first << " +vp_xmax=" << cfg.width - 1
+  args << "+kit_format=" << kKitFormat << " +ntris=" << n << " +nspans=" << first << " +vp_xmax=" << cfg.width - 1
        << " +vp_ymax=" << cfg.height - 1 << " +fifo_depth=" << cfg.fifo_depth
        << " +endpoints=" << cfg.endpoints
        << " +divide=" << (cfg.boundary == BoundaryMode::Divide ? 1 : 0)

@@ -21,7 +21,7 @@ options:
                           e.g. a copy with a change of one's own
   --jobs N                Verilator's C++ build jobs (default 2)
   --cxx-opt FLAG          Verilator's C++ optimization (default -O0: the fastest build; -O2 for
-                          long runs)
+                          long runs); the C++ goes through ccache when it is installed
   -h, --help              this text
 +PLUSARG ...              passed to the simulation before the vectors' own (the first given
                           wins): +gap=N (idle cycles between triangles; turns the cycle checks
@@ -135,9 +135,12 @@ if [ "$fresh" = 1 ]; then
     command -v verilator > /dev/null || die "verilator: not found (the kit needs Verilator 5 for --sim verilator)"
     gflags=()
     for p in "${PARAMS[@]}"; do gflags+=("-G$p"); done
+    # ccache, when installed, compiles Verilator's runtime and unchanged model code once.
+    objcache=""
+    if command -v ccache > /dev/null; then objcache="OBJCACHE=ccache"; fi
     verilator --binary --timing --assert -Wno-fatal -Wno-lint -Wno-style -Wno-TIMESCALEMOD \
       --top-module trirast_kit_bench "-D$DEFINE" "${INCLUDES[@]/#/-I}" "${gflags[@]}" \
-      --Mdir "$BUILD/obj" -j "$JOBS" -MAKEFLAGS "OPT_FAST=$CXXOPT OPT_SLOW=$CXXOPT OPT_GLOBAL=$CXXOPT" "${SOURCES[@]}" > "$BUILD/build.log" 2>&1 ||
+      --Mdir "$BUILD/obj" -j "$JOBS" -MAKEFLAGS "OPT_FAST=$CXXOPT OPT_SLOW=$CXXOPT OPT_GLOBAL=$CXXOPT $objcache" "${SOURCES[@]}" > "$BUILD/build.log" 2>&1 ||
       { tail -20 "$BUILD/build.log" >&2; die "verilator build failed (log: $BUILD/build.log)"; }
   else
     command -v iverilog > /dev/null || die "iverilog: not found (the kit needs Icarus 11 for --sim icarus)"

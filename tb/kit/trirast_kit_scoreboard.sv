@@ -40,6 +40,9 @@ module trirast_kit_scoreboard #(
   input  int                 protocol_errors
 );
   localparam int SpanBits = TagBits + 2 * PixBits + PixBits + 1;
+  // The vectors' format this scoreboard reads (app/io/kit_vectors.cpp, kKitFormat).
+  localparam int KitFormat = 1;
+  int format;
   logic [32+SpanBits-1:0] exp_spans [MaxSpans];  // {order, tag, y, x_begin, x_end}
   logic [31:0] taken;  // spans taken so far (the next span's order)
   logic [159:0] expect_q [MaxTris];  // {first, count, accept, first_span, done}
@@ -54,6 +57,9 @@ module trirast_kit_scoreboard #(
 
   initial begin
     if (!$value$plusargs("kit_dir=%s", dir)) $fatal(1, "kit scoreboard: +kit_dir=DIR missing");
+    if (!$value$plusargs("kit_format=%d", format) || format != KitFormat)
+      $fatal(1, "kit scoreboard: +kit_format: the vectors in %s are not of format %0d (write them again with trirast raster --vectors)",
+             dir, KitFormat);
     if (!$value$plusargs("ntris=%d", ntris)) $fatal(1, "kit scoreboard: +ntris missing");
     if (!$value$plusargs("nspans=%d", nspans)) $fatal(1, "kit scoreboard: +nspans missing");
     if (!$value$plusargs("last=%d", last)) $fatal(1, "kit scoreboard: +last missing");
