@@ -3,7 +3,7 @@
 
 The order, lowest first: model/common; model/scene and model/golden; the units' model folders
 (model/improved, improved2, trad, halfspace: a unit may use another unit's stages); tb/common;
-the units' tb folders; tb/fuzz and tb/icarus (over every unit); app/. A file may include its own
+the units' tb folders; tb/fuzz (over every unit); app/. A file may include its own
 layer and any lower one, never a higher one. tools/ and tests/ sit above everything.
   scripts/check_layers.py [ROOT]
 Prints each include that points up and exits 1, or prints a summary and exits 0."""
@@ -14,7 +14,7 @@ import sys
 ROOT = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..'))
 UNITS = ('improved', 'improved2', 'trad', 'halfspace')
 LAYERS = [('model/common',), ('model/scene', 'model/golden'), tuple('model/' + u for u in UNITS),
-          ('tb/common',), tuple('tb/' + u for u in UNITS), ('tb/fuzz', 'tb/icarus'), ('app',)]
+          ('tb/common',), tuple('tb/' + u for u in UNITS), ('tb/fuzz',), ('app',)]
 # The include roots (CMake's include directories) and the folders under them.
 ROOTS = ('model', 'tb', 'app')
 

@@ -82,6 +82,40 @@ TEST(CliBadInput, Options) {
   expect_one_line_error("raster --scene builtin:nosuchscene", "nosuchscene", dir);
   expect_one_line_error("raster --scene builtin:fan:nosuchkey=1", "nosuchkey", dir);
   expect_one_line_error("frobnicate", "frobnicate", dir);
+  // raster --vectors (the testbench kit, docs/port.md): engines without an RTL top or cycles,
+  // widths other than the RTL package's, a downstream that reacts to the spans it takes.
+  const std::string vectors = " --vectors " + dir.file("vectors");
+  expect_one_line_error("raster" + scene + " --engine golden" + vectors, "--vectors", dir);
+  expect_one_line_error("raster" + scene + " --engine improved-datapath" + vectors, "--vectors", dir);
+  expect_one_line_error("raster" + scene + " --engine improved-sc --subpixel-bits 4" + vectors,
+                        "--subpixel-bits 8", dir);
+  expect_one_line_error("raster" + scene + " --engine trad-sc --sink-stall queue:2:16" + vectors,
+                        "--sink-stall queue:2:16", dir);
+}
+
+TEST(Cli, RasterVectorsWritesTheKitsDirectory) {
+  TempDir dir;
+  const std::string out = dir.file("v");
+  CommandResult r = run_command(kBin + " raster --scene builtin:fan:n=4 --engine halfspace-sc " +
+                                "--sink-stall periodic:2:1 --vectors " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // One line per triangle in tris.hex and expect.hex; spans.hex as many lines as the spans.
+  auto lines = [&](const std::string& name) {
+    std::ifstream in(out + "/" + name);
+    std::string l;
+    size_t n = 0;
+    while (std::getline(in, l)) ++n;
+    return n;
+  };
+  EXPECT_EQ(lines("tris.hex"), 4u);
+  EXPECT_EQ(lines("expect.hex"), 4u);
+  EXPECT_GT(lines("spans.hex"), 4u);
+  std::ifstream params(out + "/params.txt"), args(out + "/plusargs.txt"), readme(out + "/README.txt");
+  std::string p((std::istreambuf_iterator<char>(params)), {}), a((std::istreambuf_iterator<char>(args)), {});
+  EXPECT_EQ(p, "unit halfspace\nFifoDepth 8\nStampSize 2\nTileSize 8\nWalkZigzag 1\n");
+  EXPECT_NE(a.find("+ntris=4 +nspans=" + std::to_string(lines("spans.hex")) + " "), std::string::npos) << a;
+  EXPECT_NE(a.find("+sink=periodic +sink_ready=2 +sink_stall=1 "), std::string::npos) << a;
+  EXPECT_TRUE(readme.good());
 }
 
 TEST(CliBadInput, UnwritableOutputLeavesNothing) {

@@ -32,6 +32,7 @@
 #include "cli/source_files.hpp"
 #include "sweep/sweep_area.hpp"
 #include "io/spans_file.hpp"
+#include "io/kit_vectors.hpp"
 #include "scene/scene.hpp"
 #include "util.hpp"
 
@@ -241,7 +242,7 @@ GoldenOptions golden_options_from(const Args& a) {
 }
 
 EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const RasterConfig& cfg,
-                     const GoldenOptions& golden_options) {
+                     const GoldenOptions& golden_options, SpanList* output_order = nullptr) {
   EngineRun run{&info, {}, 0};
   auto engine = info.name == "golden"
                     ? make_golden_engine(golden_options.traversal, golden_options.threads)
@@ -249,6 +250,7 @@ EngineRun run_engine(const EngineInfo& info, const LoadedScene& ls, const Raster
   auto t0 = Clock::now();
   engine->run(ls.setup, cfg, run.result);
   run.seconds = seconds_since(t0);
+  if (output_order) *output_order = run.result.spans;  // as the engine's span output gave them
   sort_spans(run.result.spans);
   return run;
 }
@@ -320,6 +322,10 @@ int cmd_raster(int argc, char** argv) {
                    "timed engines: waveform trace, VCD or FST by the extension, and FILE.gtkw",
                    ""});
   specs.push_back({"--trace-tris", "A:B", "record only triangles A..B (scene indices) in the trace", ""});
+  specs.push_back({"--vectors", "DIR",
+                   "a unit's -rtl or -sc engine: write the testbench kit's stimulus and expected "
+                   "spans and cycles into DIR (tb/kit, docs/port.md)",
+                   ""});
   add_diag_options(specs, false);
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
   a.parse(argc, argv, 2);
@@ -357,6 +363,7 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--spans")) check_output_path(a.get("--spans"), "--spans");
   if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
+  if (a.has("--vectors")) check_kit_vectors(info.name, cfg, a.get("--vectors"));
   const DiagOptions diag = diag_options_from(a, false);
 
   auto t0 = Clock::now();
@@ -368,7 +375,9 @@ int cmd_raster(int argc, char** argv) {
     if (a.has(opt)) stamps.note(a.get(opt));
   if (a.has("--trace")) stamps.note(gtkw_path(a.get("--trace")));
   const GoldenOptions golden_options = golden_options_from(a);
-  EngineRun run = run_engine(info, ls, cfg, golden_options);
+  SpanList output_order;  // --vectors: each triangle's spans in the order its span port gave them
+  EngineRun run = run_engine(info, ls, cfg, golden_options,
+                             a.has("--vectors") ? &output_order : nullptr);
   const int64_t pixels = count_pixels(run.result.spans);
 
   Json report = Json::object();
@@ -387,6 +396,9 @@ int cmd_raster(int argc, char** argv) {
     write_cycles_file(run.result.cycles, a.get("--cycles"), "--cycles");
   }
   if (a.has("--spans")) write_spans_file(run.result.spans, a.get("--spans"), "--spans");
+  if (a.has("--vectors"))
+    write_kit_vectors(a.get("--vectors"), info.name, a.get("--scene"), ls.setup, cfg, run.result,
+                      output_order);
   if (a.has("--image"))
     write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
   if (!diag.heatmap_path.empty()) {
@@ -458,6 +470,9 @@ int cmd_raster(int argc, char** argv) {
                 exported, (long long)diag.export_first, (long long)diag.export_last);
   if (a.has("--trace") && stamps.written(gtkw_path(a.get("--trace"))))
     std::printf("  wrote      %s (GTKWave save file)\n", gtkw_path(a.get("--trace")).c_str());
+  if (a.has("--vectors"))
+    std::printf("  wrote      %s/ (testbench kit vectors: %zu triangles, %zu spans; README.txt)\n",
+                a.get("--vectors").c_str(), ls.setup.tris.size(), output_order.size());
   return 0;
 }
 
