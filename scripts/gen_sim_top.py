@@ -13,6 +13,9 @@ both of the simulation's surroundings, not of the unit:
   * probes: --probe PORT WIDTH EXPR adds output PORT = EXPR, an expression over u_dut's
     hierarchy (the harness's busy counters), so the harness reads ports, not Verilator's internal
     names. WIDTH is a number or an expression over the unit's parameters.
+And trace views, signals nothing reads: the triangle port's packed buses split into one signed
+signal per vertex or edge (tri_v0_x .. tri_v2_y; tri_e0_a .. tri_e2_c), so a trace shows the
+triangle's coordinates as numbers (tb/common/rtl_gtkw.hpp shows them in signed decimal).
 
   scripts/gen_sim_top.py --dut rtl/improved/trirast_improved_top.sv --top trirast_improved_top --name trirast_improved_top_sim \
       --out DIR/trirast_improved_top_sim.sv [--include DIR] [--probe PORT WIDTH EXPR ...]
@@ -98,6 +101,19 @@ def main():
     out.append(f"  {a.top}" + (f" #({plist})" if plist else "") + " u_dut (" + ", ".join(conn) + ");")
     for port, _, expr in a.probe:
         out.append(f"  assign {port} = {expr};")
+    # trace views: (packed port, field name of element k)
+    views = [("tri_vx_i", "tri_v{k}_x"), ("tri_vy_i", "tri_v{k}_y"), ("tri_a_i", "tri_e{k}_a"),
+             ("tri_b_i", "tri_e{k}_b"), ("tri_c_i", "tri_e{k}_c")]
+    views = [(port, field) for port, field in views if port in names]
+    if views:
+        out.append("  // trace views (nothing reads them): one signed signal per vertex and edge")
+        out.append("  /* verilator lint_off UNUSEDSIGNAL */")
+        for port, field in views:
+            w = f"$bits({port}) / 3"
+            for k in range(3):
+                out.append(f"  logic signed [{w}-1:0] {field.format(k=k)};")
+                out.append(f"  assign {field.format(k=k)} = {port}[{k}*({w}) +: {w}];")
+        out.append("  /* verilator lint_on UNUSEDSIGNAL */")
     out.append("endmodule")
     with open(a.out, "w") as f:
         f.write("\n".join(out) + "\n")

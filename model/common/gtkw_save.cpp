@@ -51,6 +51,7 @@ std::string stem_of(const std::string& gtkw_path) {
 
 // GTKWave's trace flags (its analyzer.h): what the @ lines hold.
 constexpr unsigned kFlagDec = 0x4, kFlagBin = 0x8, kFlagRjustify = 0x20, kFlagBlank = 0x200,
+                   kFlagSigned = 0x400,
                    kFlagFileTranslated = 0x2000, kFlagClosed = 0x400000,
                    kFlagGroupBegin = 0x800000, kFlagGroupEnd = 0x1000000;
 
@@ -108,7 +109,8 @@ void write_gtkw(const std::string& gtkw_path, const GtkwSave& save) {
         g += "^" + std::to_string(filter) + " " + filter_files[size_t(filter - 1)] + "\n";
         g += flags(kFlagFileTranslated | kFlagRjustify | kFlagDec);
       } else {
-        g += flags(kFlagRjustify | (t.width == 1 ? kFlagBin : kFlagDec));
+        g += flags(kFlagRjustify | (t.width == 1 ? kFlagBin : kFlagDec) |
+                   (t.is_signed && t.width > 1 ? kFlagSigned : 0u));
       }
       g += t.name + "\n";
     }

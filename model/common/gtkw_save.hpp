@@ -3,7 +3,7 @@
 //   * the dump named RELATIVE to the save file (with a [savefile] line, GTKWave resolves it from
 //     the save file's folder), so the pair opens from any working directory and after a move;
 //   * the zoom set to the traced window;
-//   * signals in groups (one per module), buses in decimal, bits as bits;
+//   * signals in groups (one per module), buses in decimal (signed where a trace says so), bits as bits;
 //   * state registers shown by name through GTKWave translate filter files, written beside the
 //     save file (FILE.NAME.filter) and referenced from it by their relative names.
 // Every file goes to a temporary name first and is renamed when complete (temporary_files.hpp).
@@ -24,6 +24,7 @@ struct GtkwSave {
     std::string name;    // full name as GTKWave lists it, e.g. "improved.setup.state[2:0]"
     int width = 1;       // 1: shown as a bit; more: a bus in decimal
     std::string filter;  // a Filter's name, or empty
+    bool is_signed = false;  // a bus shown in signed decimal
   };
   struct Group {
     std::string name;

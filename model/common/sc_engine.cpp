@@ -162,15 +162,18 @@ double simulate(int unit, const SetupResult& setup, const RasterConfig& cfg, Eng
   return secs;
 }
 
-// The trace: a second run that records the cycles from the first windowed triangle's accept to
-// the last one's done (the first run found them), plus the downstream's ready in that window.
+// The trace: a second run that records the cycles from the one the first windowed triangle is on
+// the port (offered: the cycle after its predecessor's accept, or cycle 0) to the last one's done
+// (the first run found them), plus the downstream's ready in that window. The RTL's trace window
+// starts on the same cycle (tb/common/cycle_loop.hpp), so the two line up in GTKWave.
 void write_trace(int unit, const SetupResult& setup, const RasterConfig& cfg,
                  const EngineResult& first) {
   uint64_t lo = ~uint64_t(0), hi = 0;
-  for (const TriangleCycles& c : first.cycles) {
+  for (size_t i = 0; i < first.cycles.size(); ++i) {
+    const TriangleCycles& c = first.cycles[i];  // setup order: offered back to back
     if (int64_t(c.tri) < cfg.trace_first) continue;
     if (cfg.trace_last >= 0 && int64_t(c.tri) > cfg.trace_last) continue;
-    lo = std::min(lo, c.accept_cycle);
+    lo = std::min(lo, i == 0 ? uint64_t(0) : first.cycles[i - 1].accept_cycle + 1);
     hi = std::max(hi, c.done_cycle);
   }
   if (lo > hi) lo = hi = 0;  // no triangle in the window: an empty trace at cycle 0

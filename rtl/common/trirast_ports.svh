@@ -19,6 +19,10 @@
 
 // ---- every top's clock, reset and viewport (static configuration: the viewport's width - 1 and
 // height - 1, the last pixel's index) ----
+//   clk_i : the clock; every register takes its value at the rising edge
+//   rst_ni : asynchronous reset, active low: every control register to its idle value
+//   cfg_vp_xmax_i, cfg_vp_ymax_i : the viewport's last pixel, width - 1 and height - 1
+//                                  (static during a run)
 `define TRIRAST_TOP_CLOCK_AND_VIEWPORT \
   input  logic                                  clk_i, \
   input  logic                                  rst_ni, \
@@ -26,6 +30,8 @@
   input  logic [trirast_pkg::PixBits-1:0]       cfg_vp_ymax_i
 
 // ---- the triangle port: one set-up triangle per valid/ready handshake ----
+//   tri_valid_i : a triangle is on the port (held, with its fields, until tri_ready_o)
+//   tri_ready_o : the unit takes the triangle at this rising edge if tri_valid_i
 //   tri_tag_i : returned with the triangle's spans
 //   tri_vx_i, tri_vy_i : vertex k at [k*VertexBits +: VertexBits], signed, in 1/2^SubpixelBits
 //                        pixel (1/256 at the default S = 8)
@@ -91,6 +97,13 @@
   `TRIRAST_CONNECT_HANDOFF_BOX(_o)
 
 // ---- the span port: one span {tag, y, x_begin, x_end (exclusive)} per valid/ready handshake ----
+//   span_valid_o : a span is on the port (held, with its fields, until span_ready_i)
+//   span_ready_i : the downstream takes the span at this rising edge if span_valid_o
+//   span_tag_o : the tag of the triangle the span belongs to
+//   span_y_o : the span's pixel row
+//   span_x_begin_o : its first pixel
+//   span_x_end_o : one past its last pixel (exclusive; one bit wider, a span may end at the
+//                  viewport's width)
 `define TRIRAST_SPAN_PORT \
   output logic                                  span_valid_o, \
   input  logic                                  span_ready_i, \
@@ -107,8 +120,11 @@
   .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o)
 
 // ---- the walk stage's timing observation (the harness's per-triangle timing) ----
-//   walk_busy_o : a triangle walks; walk_stall_o : ... and waits for FIFO room this cycle
-//   walk_last_o : its last group or row goes; walk_retire_o : ... and it had no span
+//   walk_busy_o : a triangle walks
+//   walk_stall_o : ... and waits for FIFO room this cycle
+//   walk_last_o : its last group or row goes
+//   walk_retire_o : ... and it had no span
+//   walk_tag_o : the walking triangle's tag
 //   fifo_count_o : the span FIFO's occupancy at the cycle's start
 `define TRIRAST_WALK_OBSERVATION \
   output logic                                  walk_busy_o, \

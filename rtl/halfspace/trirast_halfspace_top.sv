@@ -19,14 +19,14 @@ module trirast_halfspace_top #(
 ) (
   // ---- clock, reset and configuration (static) ----
   `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
-  input  logic [CountBits-1:0]                  cfg_fifo_depth_i,
+  input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   // ---- triangle port: one set-up triangle per handshake ----
   `TRIRAST_TRIANGLE_PORT,
   // ---- span port ----
   `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
-  output logic                                  box_retire_o,
-  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  output logic                                  box_retire_o,     // empty box retires (StBox)
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o, // ... its tag
   `TRIRAST_WALK_OBSERVATION,
   output logic [2:0]                            setup_state_o,    // StIdle, StBox, StEdge, StHold (0, 1, 2, 4)
   output logic                                  handoff_o,        // the walk stage loads

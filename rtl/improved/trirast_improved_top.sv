@@ -23,7 +23,7 @@ module trirast_improved_top #(
   `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
   output logic                                  box_retire_o,     // empty box retires (StBox)
-  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o, // ... its tag
   `TRIRAST_WALK_OBSERVATION,
   // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
   output logic [2:0]                            setup_state_o,    // StIdle..StHold (0..4)

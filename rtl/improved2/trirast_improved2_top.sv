@@ -57,26 +57,29 @@ module trirast_improved2_top #(
   parameter int LanePreIter = 0,
   parameter int CountBits = $clog2(FifoDepth + 1)  // derived: do not override
 ) (
+  // ---- clock, reset and configuration (static) ----
   `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   input  logic [2:0]                            cfg_endpoints_i,  // --endpoints (<= NumEndpoints)
-  `TRIRAST_TRIANGLE_PORT,  // tri_c_i is not read (vertex-relative E)
+  // ---- triangle port: one set-up triangle per handshake ----
+  `TRIRAST_TRIANGLE_PORT,  // tri_c_i : not read (vertex-relative E)
+  // ---- span port ----
   `TRIRAST_SPAN_PORT,
-  output logic                                  box_retire_o,      // an empty box retires (B)
-  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o,
-  output logic                                  busy_o,            // a triangle is in the unit
   // ---- observation (the harness's per-triangle cycles and module counters; traces) ----
+  output logic                                  box_retire_o,      // an empty box retires (B)
+  output logic [trirast_pkg::TagBits-1:0]       box_retire_tag_o, // ... its tag
+  output logic                                  busy_o,            // a triangle is in the unit
   output logic                                  box_valid_o,       // B holds a triangle
   output logic                                  box_stall_o,       // ... waiting for C
-  output logic [trirast_pkg::TagBits-1:0]       box_tag_o,
+  output logic [trirast_pkg::TagBits-1:0]       box_tag_o, // ... its tag
   output logic                                  corner_valid_o,    // C holds a triangle
   output logic                                  corner_stall_o,    // ... done, waiting for L
   output logic                                  job_valid_o,       // L holds a job
   output logic                                  job_ready_o,       // ... ready to hand off
-  output logic [trirast_pkg::TagBits-1:0]       job_tag_o,
+  output logic [trirast_pkg::TagBits-1:0]       job_tag_o, // ... its tag
   output logic                                  handoff_o,         // the walk stage loads L's job
   output logic [trirast_pkg::BoxBits-1:0]       box_xmax_o,        // L's box: Xmax, Ymax
-  output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o,
+  output logic [trirast_pkg::BoxBits-1:0]       box_ymax_o, //   (valid with handoff_o)
   output logic [2:0]                            lane_busy_o,       // lane k works this cycle
   output logic [2:0]                            lane_div_o,        // ... a divider iteration
   output logic [2:0]                            lane_step_o,       // ... a traversal row step

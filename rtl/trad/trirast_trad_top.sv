@@ -25,7 +25,7 @@ module trirast_trad_top #(
   `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
   output logic                                  setup_retire_o,   // collinear retires (StSort)
-  output logic [trirast_pkg::TagBits-1:0]       setup_retire_tag_o,
+  output logic [trirast_pkg::TagBits-1:0]       setup_retire_tag_o, // ... its tag
   `TRIRAST_WALK_OBSERVATION,
   // ---- observation of the setup stage (the harness's stage breakdown, docs/rtl.md) ----
   output logic [2:0]                            setup_state_o,    // StIdle, StSort, StLine, StHold

@@ -4,6 +4,7 @@
 // states by name through translate filters, the zoom on the traced window.
 #pragma once
 #include <cstdint>
+#include <regex>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -45,6 +46,7 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
       "lane_phase", {{0, "PhSlope"}, {1, "PhTrav"}, {2, "PhEntry"}, {3, "PhDone"}}});
   std::vector<std::string> scope;
   std::vector<int> group_of;  // per scope depth: the group index of that scope (-1: none yet)
+  int view_group = -1;        // the triangle port's per-vertex views (-1: none yet)
   auto path = [&]() {
     std::string p;
     for (const std::string& s : scope) p += (p.empty() ? "" : ".") + s;
@@ -102,6 +104,18 @@ inline void write_rtl_gtkw(const std::string& fst_path, const std::string& trace
         filter = "walk_state";
       else if (leaf == "u_lane" && (base == "phase_q" || base == "phase_d"))
         filter = "lane_phase";
+      // The harness top's trace views of the triangle port (scripts/gen_sim_top.py: tri_v0_x ..
+      // tri_e2_c, one per vertex and edge): a group of their own, open, in signed decimal.
+      static const std::regex kView("tri_(v[0-2]_[xy]|e[0-2]_[abc])");
+      if (scope.size() == 2 && std::regex_match(base, kView)) {
+        if (view_group < 0) {
+          view_group = int(save.groups.size());
+          save.groups.push_back(GtkwSave::Group{"triangle port, per vertex and edge (signed)", false, {}});
+        }
+        save.groups[size_t(view_group)].traces.push_back(
+            GtkwSave::Trace{path() + "." + shown, int(h->u.var.length), "", true});
+        continue;
+      }
       save.groups[size_t(group_of.back())].traces.push_back(
           GtkwSave::Trace{path() + "." + shown, int(h->u.var.length), filter});
     }

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -536,6 +537,50 @@ TEST(RtlTrace, FstWindowOfALargeSceneHasTheHandshakes) {
   EXPECT_NE(gtkw.find("^1 rtl_window.setup_state.filter\n@2024\ntrirast_improved_top.setup_state_o[2:0]\n"),
             std::string::npos);
   EXPECT_NE(read_file(dir + "/rtl_window.setup_state.filter").find("4 StHold\n"), std::string::npos);
+}
+
+// The first timestamp after the header of a VCD (its first recorded instant).
+uint64_t first_vcd_time(const std::string& text) {
+  const size_t t = text.find("\n#", text.find("$enddefinitions"));
+  if (t == std::string::npos) throw std::runtime_error("a VCD without a timestamp");
+  return std::stoull(text.substr(t + 2));
+}
+
+// The SystemC model's trace and the RTL's of the same window start on the same cycle: the one the
+// window's first triangle is on the port (the model records in 1 ns per cycle, the RTL in 100 ps
+// with cycle c's values at c.5 ns). The RTL's trace has the triangle port split per vertex and
+// edge, signed, in a group of its own in the save file.
+TEST(RtlTrace, ModelAndRtlWindowsStartOnTheSameCycle) {
+  RasterConfig cfg = default_cfg();
+  const std::string dir = testing::TempDir();
+  const SetupResult setup = builtin("mixed", cfg);
+  // The window starts at a triangle that waits on the port (accepted later than offered), so a
+  // trace that starts at the accept would start later.
+  EngineResult untraced;
+  make_improved_sc_engine()->run(setup, cfg, untraced);
+  size_t p = 100;
+  while (p < untraced.cycles.size() &&
+         untraced.cycles[p].accept_cycle <= untraced.cycles[p - 1].accept_cycle + 1)
+    ++p;
+  ASSERT_LT(p, untraced.cycles.size());
+  const uint64_t offered = untraced.cycles[p - 1].accept_cycle + 1;
+  cfg.trace_first = setup.tris[p].index;
+  cfg.trace_last = cfg.trace_first + 4;
+  cfg.trace_path = dir + "/align_model.vcd";
+  EngineResult model;
+  make_improved_sc_engine()->run(setup, cfg, model);
+  cfg.trace_path = dir + "/align_rtl.vcd";
+  const EngineResult rtl = run_rtl(setup, cfg);
+  ASSERT_EQ(rtl.cycles[p - 1].accept_cycle, untraced.cycles[p - 1].accept_cycle);
+  const std::string model_vcd = read_file(dir + "/align_model.vcd");
+  const std::string rtl_vcd = read_file(dir + "/align_rtl.vcd");
+  EXPECT_EQ(first_vcd_time(model_vcd), offered);
+  EXPECT_EQ(first_vcd_time(rtl_vcd), 10 * offered + 5);
+  for (const char* view : {"tri_v0_x", "tri_v2_y", "tri_e1_a", "tri_e2_c"})
+    EXPECT_NE(rtl_vcd.find(std::string(" ") + view + " "), std::string::npos) << view;
+  const std::string gtkw = read_file(dir + "/align_rtl.gtkw");
+  EXPECT_NE(gtkw.find("-triangle port, per vertex and edge (signed)\n@424\n"), std::string::npos)
+      << gtkw;
 }
 
 TEST(RtlTrace, VcdOutputIsConverted) {
