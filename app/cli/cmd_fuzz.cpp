@@ -380,9 +380,9 @@ int cmd_fuzz(int argc, char** argv) {
       if (found.empty()) continue;
       const std::string where =
           whole ? std::string()
-                : " (as cut for it: viewport " + std::to_string(g.width) + "x" +
+                : " (on the schedule's cut: viewport " + std::to_string(g.width) + "x" +
                       std::to_string(g.height) + ", triangles " + std::to_string(g.tri_begin) +
-                      ".." + std::to_string(g.tri_end - 1) + " of the scene)";
+                      ".." + std::to_string(g.tri_end - 1) + ")";
       for (const FuzzDisagreement& f : found) {
         summary += (summary.empty() ? "" : "; ") + f.engine + ": " + f.what;
         if (disagreed) note += "\n" + f.engine + " disagrees with golden" + where + ": " + f.what;
@@ -392,9 +392,10 @@ int cmd_fuzz(int argc, char** argv) {
       note = "seed " + std::to_string(seed) + ", scene " + std::to_string(n) + " (" +
              std::to_string(tris.size()) + " triangles)";
       if (!whole)
-        note += "; the engines below ran viewport " + std::to_string(g.width) + "x" +
-                std::to_string(g.height) + ", triangles " + std::to_string(g.tri_begin) + ".." +
-                std::to_string(g.tri_end - 1) + " of it (the fuzz schedule's cut)";
+        note += "; the engines below ran the fuzz schedule's cut of it: viewport " +
+                std::to_string(g.width) + "x" + std::to_string(g.height) + " of " +
+                std::to_string(cfg.width) + "x" + std::to_string(cfg.height) + ", triangles " +
+                std::to_string(g.tri_begin) + ".." + std::to_string(g.tri_end - 1);
       for (const FuzzDisagreement& f : found)
         note += "\n" + f.engine + " disagrees with golden: " + f.what;
       if (written < uint64_t(max_repro)) {
