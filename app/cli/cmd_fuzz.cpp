@@ -16,7 +16,6 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
-#include "cli/fuzz_schedule.hpp"
 #include "common/engine.hpp"
 #include "engines.hpp"
 #include "fuzz/fuzz_scene.hpp"
@@ -25,6 +24,7 @@
 #include "util.hpp"
 #include "common/rtl_builds.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
+#include "cli/fuzz_schedule.hpp"
 
 namespace trirast {
 
