@@ -335,10 +335,12 @@ int cmd_fuzz(int argc, char** argv) {
     ++scenes;
     estimated_ns += scene_ns;
     triangles += tris.size();
-    tally[golden_row].scenes += 1;
-    tally[golden_row].triangles += tris.size();
-    for (FuzzClass c : classes)
-      if (c != FuzzClass::kCount) ++tally[golden_row].classes[int(c)];
+    if (!groups.empty()) {  // the golden runs a scene when some engine does
+      tally[golden_row].scenes += 1;
+      tally[golden_row].triangles += tris.size();
+      for (FuzzClass c : classes)
+        if (c != FuzzClass::kCount) ++tally[golden_row].classes[int(c)];
+    }
 
     std::string note, summary;
     bool disagreed = false;
