@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <tuple>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -22,6 +24,7 @@
 #include "util.hpp"
 #include "common/rtl_builds.hpp"
 #include "halfspace/halfspace_rtl_engine.hpp"
+#include "cli/fuzz_schedule.hpp"
 
 namespace trirast {
 
@@ -72,6 +75,60 @@ uint64_t parse_seed(const std::string& text) {
   return v;
 }
 
+
+// What one engine did in a run: the scenes it ran (cut: on a cropped viewport or a window of the
+// triangles), their triangles and golden pixels, the generator's classes among those triangles,
+// its CPU time and what the schedule estimated of it.
+struct EngineTally {
+  uint64_t scenes = 0, cut = 0, triangles = 0, pixels = 0;
+  uint64_t classes[int(FuzzClass::kCount)] = {};
+  double cpu_seconds = 0, estimate_ns = 0;
+  int classes_seen() const {
+    return int(std::count_if(std::begin(classes), std::end(classes), [](uint64_t n) { return n; }));
+  }
+};
+
+// The engines of a scene that run the same part of it (the same viewport and triangles), the
+// golden held against them once.
+struct SceneGroup {
+  int width, height;
+  uint32_t tri_begin, tri_end;
+  std::vector<size_t> engines;  // indices into the run's engine list
+};
+
+std::vector<SceneGroup> group_assignments(const std::vector<FuzzAssignment>& plan,
+                                          const std::vector<std::string>& names) {
+  std::map<std::tuple<int, int, uint32_t, uint32_t>, size_t> at;
+  std::vector<SceneGroup> groups;
+  for (size_t e = 0; e < plan.size(); ++e) {
+    const FuzzAssignment& a = plan[e];
+    if (!a.runs || names[e] == "golden") continue;
+    const auto key = std::make_tuple(a.width, a.height, a.tri_begin, a.tri_end);
+    auto it = at.find(key);
+    if (it == at.end()) {
+      it = at.emplace(key, groups.size()).first;
+      groups.push_back({a.width, a.height, a.tri_begin, a.tri_end, {}});
+    }
+    groups[it->second].engines.push_back(e);
+  }
+  return groups;
+}
+
+void print_engine_table(const std::vector<std::string>& names, const std::vector<EngineTally>& tally,
+                        uint64_t scenes) {
+  const int k_all = int(FuzzClass::kCount);
+  std::printf("  %-19s %8s %6s %7s %10s %14s %8s %9s %9s\n", "engine", "scenes", "share", "cut",
+              "triangles", "pixels", "classes", "CPU s", "est. s");
+  for (size_t e = 0; e < names.size(); ++e) {
+    const EngineTally& t = tally[e];
+    std::printf("  %-19s %8llu %5.1f%% %7llu %10llu %14llu %5d/%-2d %9.2f %9.2f\n", names[e].c_str(),
+                (unsigned long long)t.scenes, scenes ? 100.0 * double(t.scenes) / double(scenes) : 0.0,
+                (unsigned long long)t.cut, (unsigned long long)t.triangles,
+                (unsigned long long)t.pixels, t.classes_seen(), k_all, t.cpu_seconds,
+                t.estimate_ns * 1e-9);
+  }
+}
+
 }  // namespace
 
 int cmd_fuzz(int argc, char** argv) {
@@ -88,6 +145,7 @@ int cmd_fuzz(int argc, char** argv) {
              {"--max-reproducers", "N", "write at most N reproducers (the count goes on)", "20"},
              {"--inject-fault", "ENGINE",
               "self-test: ENGINE drops one pixel per scene, so the checker must report it", ""},
+             {"--calibrate", "", "measure the --engines' cost constants (the schedule's table), print them, exit", ""},
          });
   a.parse(argc, argv, 2);
   if (a.help_requested()) {
@@ -101,6 +159,13 @@ int cmd_fuzz(int argc, char** argv) {
                  "replay does not have). Progress on stderr once a second. With an RTL engine\n"
                  "among --engines, the widths (subpixel, coordinate and box bits) are those of\n"
                  "the Verilated builds, so no scene skips the RTL; without one, any widths.\n"
+                 "Each scene goes to the golden and to the engines the schedule picks: an engine\n"
+                 "runs about its share of CPU time per scene (its cost estimated from the set-up\n"
+                 "boxes before it runs), at least one scene in ten, and a scene too costly for it\n"
+                 "on a cropped viewport or a window of the triangles (fuzz_schedule.hpp); the\n"
+                 "choice depends on the seed and the scene alone. No scene starts that is not\n"
+                 "expected to end by --seconds. The summary has a row per engine: scenes, cut\n"
+                 "scenes, triangles, pixels, classes of the generator seen, CPU and estimated s.\n"
                  "Exit status: 0 no disagreement, 1 a disagreement, 2 bad usage.\n\n"
               << a.help_text();
     return 0;
@@ -144,6 +209,11 @@ int cmd_fuzz(int argc, char** argv) {
   if (names.empty()) throw UsageError("trirast fuzz: --engines: empty list");
   if (names.size() == 1 && names[0] == "golden")
     throw UsageError("trirast fuzz: --engines: nothing to compare with the golden");
+  if (a.has("--calibrate")) {
+    std::fprintf(stderr, "fuzz: calibrating %zu engines (CPU time, about 1 s each)\n", names.size());
+    fuzz_calibrate(names, stdout);
+    return 0;
+  }
 
   EngineInfo faulty;
   if (a.has("--inject-fault")) {
@@ -209,57 +279,144 @@ int cmd_fuzz(int argc, char** argv) {
     const EngineDescriptor* d = find_engine_descriptor(n);
     return d && d->rtl_builds && engine_reads(n, "--stamp");
   });
+  // The golden runs every part of every scene the engines run; its row in the table counts
+  // those runs (listed or not among --engines).
+  const EngineInfo* golden_info = find_engine("golden");
+  const bool golden_listed = std::find(names.begin(), names.end(), "golden") != names.end();
+  std::vector<std::string> rows = names;
+  if (!golden_listed) rows.insert(rows.begin(), "golden");
+  const size_t golden_row = size_t(std::find(rows.begin(), rows.end(), "golden") - rows.begin());
+  auto row_of = [&](size_t e) { return golden_listed ? e : e + 1; };
+  std::vector<EngineTally> tally(rows.size());
+
   const auto t0 = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
   double next_report = 1.0;
   uint64_t scenes = 0, triangles = 0, pixels = 0, disagreements = 0, written = 0;
+  double estimated_ns = 0;  // of the scenes run so far, golden included
   std::vector<uint64_t> skips(engines.size(), 0);  // scenes an engine's build does not cover
   auto progress = [&] {
     std::fprintf(stderr, "fuzz: %.1f s, %llu triangles, %llu disagreements\n", elapsed(),
                  (unsigned long long)triangles, (unsigned long long)disagreements);
   };
+  bool deadline_stop = false;
   while ((max_scenes == 0 || scenes < uint64_t(max_scenes)) &&
          (!time_limited || elapsed() < double(seconds))) {
-    const uint64_t n = scenes++;
+    const uint64_t n = scenes;
     RngDraws draws(scene_seed(seed, n));
     RasterConfig cfg = draw_fuzz_config(draws, widths);
-    const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris));
+    std::vector<FuzzClass> classes;
+    const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris), &classes);
     // The half-space unit's stamp, tile and walk: among halfspace-rtl's builds of these widths
     // when it runs (it then never skips a scene for them), else among all.
     draw_fuzz_hs_config(draws, cfg,
                         hs_rtl ? rtl::halfspace_built_params(cfg) : std::vector<HalfspaceParams>{});
-    triangles += tris.size();
-    uint64_t golden_pixels = 0;
-    std::vector<std::string> skipped;
-    const std::vector<FuzzDisagreement> found =
-        check_engines(tris, cfg, engines, &golden_pixels, &skipped);
-    for (const std::string& name : skipped)
-      for (size_t i = 0; i < engines.size(); ++i) skips[i] += engines[i]->name == name;
-    pixels += golden_pixels;
-    if (!found.empty()) {
-      ++disagreements;
-      std::string note = "seed " + std::to_string(seed) + ", scene " + std::to_string(n) + " (" +
-                         std::to_string(tris.size()) + " triangles)";
-      std::string summary;
-      for (const FuzzDisagreement& f : found) {
-        note += "\n" + f.engine + " disagrees with golden: " + f.what;
-        summary += (summary.empty() ? "" : "; ") + f.engine + ": " + f.what;
+    // The schedule (fuzz_schedule.hpp): which engines run the scene, and which part of it.
+    const SetupResult setup = setup_scene(tris, cfg);
+    const std::vector<FuzzAssignment> plan =
+        fuzz_schedule_scene(seed, n, setup, uint32_t(tris.size()), cfg, names);
+    const std::vector<SceneGroup> groups = group_assignments(plan, names);
+    const FuzzEngineCost& golden_cost = fuzz_engine_cost("golden");
+    double scene_ns = 0;
+    for (const SceneGroup& g : groups) {
+      scene_ns += fuzz_estimate_ns(golden_cost, fuzz_cost_features(setup, cfg, g.width, g.height,
+                                                                   g.tri_begin, g.tri_end));
+      for (size_t e : g.engines) scene_ns += plan[e].estimate_ns;
+    }
+    // A time-limited run starts no scene it expects to end after the deadline: the estimate
+    // times the wall seconds per estimated second so far (at least 1; a loaded machine's more).
+    if (time_limited && scenes > 0) {
+      const double wall_per_est = std::max(1.0, elapsed() / (estimated_ns * 1e-9));
+      if (elapsed() + scene_ns * 1e-9 * wall_per_est > double(seconds)) {
+        deadline_stop = true;
+        break;
       }
+    }
+    ++scenes;
+    estimated_ns += scene_ns;
+    triangles += tris.size();
+    if (!groups.empty()) {  // the golden runs a scene when some engine does
+      tally[golden_row].scenes += 1;
+      tally[golden_row].triangles += tris.size();
+      for (FuzzClass c : classes)
+        if (c != FuzzClass::kCount) ++tally[golden_row].classes[int(c)];
+    }
+
+    std::string note, summary;
+    bool disagreed = false;
+    for (const SceneGroup& g : groups) {
+      RasterConfig part_cfg = cfg;
+      part_cfg.width = g.width;
+      part_cfg.height = g.height;
+      const std::vector<InputTriangle> part(tris.begin() + g.tri_begin, tris.begin() + g.tri_end);
+      std::vector<const EngineInfo*> list = {golden_info};
+      for (size_t e : g.engines) list.push_back(engines[e]);
+      uint64_t golden_pixels = 0;
+      std::vector<std::string> skipped;
+      std::vector<double> cpu;
+      const std::vector<FuzzDisagreement> found =
+          check_engines(part, part_cfg, list, &golden_pixels, &skipped, &cpu);
+      tally[golden_row].cpu_seconds += cpu[0];
+      tally[golden_row].estimate_ns += fuzz_estimate_ns(
+          golden_cost, fuzz_cost_features(setup, cfg, g.width, g.height, g.tri_begin, g.tri_end));
+      const bool whole = g.width == cfg.width && g.height == cfg.height && g.tri_begin == 0 &&
+                         g.tri_end == tris.size();
+      pixels += golden_pixels;
+      tally[golden_row].pixels += golden_pixels;
+      for (size_t k = 0; k < g.engines.size(); ++k) {
+        const size_t e = g.engines[k];
+        if (std::find(skipped.begin(), skipped.end(), names[e]) != skipped.end()) {
+          ++skips[e];
+          continue;
+        }
+        EngineTally& t = tally[row_of(e)];
+        t.scenes += 1;
+        t.cut += plan[e].cut;
+        t.triangles += part.size();
+        t.pixels += golden_pixels;
+        for (uint32_t i = g.tri_begin; i < g.tri_end; ++i)
+          if (classes[i] != FuzzClass::kCount) ++t.classes[int(classes[i])];
+        t.cpu_seconds += cpu[k + 1];
+        t.estimate_ns += plan[e].estimate_ns;
+      }
+      if (found.empty()) continue;
+      const std::string where =
+          whole ? std::string()
+                : " (on the schedule's cut: viewport " + std::to_string(g.width) + "x" +
+                      std::to_string(g.height) + ", triangles " + std::to_string(g.tri_begin) +
+                      ".." + std::to_string(g.tri_end - 1) + ")";
+      for (const FuzzDisagreement& f : found) {
+        summary += (summary.empty() ? "" : "; ") + f.engine + ": " + f.what;
+        if (disagreed) note += "\n" + f.engine + " disagrees with golden" + where + ": " + f.what;
+      }
+      if (disagreed) continue;  // the first disagreeing part of the scene is written out
+      disagreed = true;
+      note = "seed " + std::to_string(seed) + ", scene " + std::to_string(n) + " (" +
+             std::to_string(tris.size()) + " triangles)";
+      if (!whole)
+        note += "; the engines below ran the fuzz schedule's cut of it: viewport " +
+                std::to_string(g.width) + "x" + std::to_string(g.height) + " of " +
+                std::to_string(cfg.width) + "x" + std::to_string(cfg.height) + ", triangles " +
+                std::to_string(g.tri_begin) + ".." + std::to_string(g.tri_end - 1);
+      for (const FuzzDisagreement& f : found)
+        note += "\n" + f.engine + " disagrees with golden: " + f.what;
       if (written < uint64_t(max_repro)) {
         const EngineInfo* first = nullptr;
         for (const EngineInfo* e : engines)
           if (e->name == found[0].engine) first = e;
-        const std::vector<InputTriangle> small = reduce_scene(tris, cfg, *first, found[0]);
-        if (small.size() < tris.size())
+        const std::vector<InputTriangle> small = reduce_scene(part, part_cfg, *first, found[0]);
+        if (small.size() < part.size())
           note += "\nreduced to " + std::to_string(small.size()) + " of " +
-                  std::to_string(tris.size()) + " triangles";
+                  std::to_string(part.size()) + " triangles";
         if (!faulty.name.empty())
           note += "\n" + faulty.name + " ran with --inject-fault: the replay, without the fault, agrees";
-        // The replay names the engines that ran on this scene (not those whose build does not
-        // cover its configuration), so it runs as written.
+        // The replay names the engines that ran this part of the scene (not those whose build
+        // does not cover its configuration), so it runs as written.
         std::vector<std::string> ran;
-        for (const std::string& name : names)
-          if (std::find(skipped.begin(), skipped.end(), name) == skipped.end()) ran.push_back(name);
+        for (size_t e : g.engines)
+          if (std::find(skipped.begin(), skipped.end(), names[e]) == skipped.end())
+            ran.push_back(names[e]);
+        if (golden_listed) ran.insert(ran.begin(), "golden");
         // Options none of them reads (compare refuses those) stay out of the replay.
         std::vector<std::string> unread;
         for (const std::string& option : engine_options())
@@ -268,16 +425,20 @@ int cmd_fuzz(int argc, char** argv) {
                            [&](const std::string& e) { return engine_reads(e, option); }))
             unread.push_back(option);
         OutputFile out(repro_path(n), "--out");
-        out.write(format_reproducer(small, cfg, ran, note, repro_path(n), unread));
+        out.write(format_reproducer(small, part_cfg, ran, note, repro_path(n), unread));
         out.commit();
         ++written;
-        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s): wrote %s\nfuzz: replay: %s\n",
-                     (unsigned long long)n, summary.c_str(), repro_path(n).c_str(),
-                     replay_command(cfg, ran, repro_path(n), unread).c_str());
+        note = "wrote " + repro_path(n) + "\nfuzz: replay: " +
+               replay_command(part_cfg, ran, repro_path(n), unread);
       } else {
-        std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu (%s)\n", (unsigned long long)n,
-                     summary.c_str());
+        note.clear();
       }
+    }
+    if (disagreed) {
+      ++disagreements;
+      std::fprintf(stderr, "fuzz: DISAGREEMENT in scene %llu at %.1f s (%s)%s%s\n",
+                   (unsigned long long)n, elapsed(), summary.c_str(), note.rfind("wrote ", 0) == 0 ? ": " : "",
+                   note.rfind("wrote ", 0) == 0 ? note.c_str() : "");
     }
     if (elapsed() >= next_report) {
       progress();
@@ -287,9 +448,14 @@ int cmd_fuzz(int argc, char** argv) {
   progress();
   const double total = elapsed();
   std::printf("trirast fuzz: seed %llu, engines %s\n", (unsigned long long)seed, engine_list.c_str());
-  std::printf("  ran        %.1f s, %llu scenes, %llu triangles, %llu golden pixels (%.0f triangles/s)\n",
+  std::printf("  ran        %.1f s, %llu scenes, %llu triangles, %llu pixels of the golden (%.1f scenes/s, %.0f triangles/s)\n",
               total, (unsigned long long)scenes, (unsigned long long)triangles,
-              (unsigned long long)pixels, total > 0 ? double(triangles) / total : 0.0);
+              (unsigned long long)pixels, total > 0 ? double(scenes) / total : 0.0,
+              total > 0 ? double(triangles) / total : 0.0);
+  if (time_limited)
+    std::printf("  deadline   %ld s, ended %.1f s after it (%s)\n", seconds, total - double(seconds),
+                deadline_stop ? "the next scene's estimate did not fit" : "no scene after it");
+  print_engine_table(rows, tally, scenes);
   for (size_t i = 0; i < engines.size(); ++i)
     if (skips[i])
       std::printf("  skipped    %s: %llu of %llu scenes had a configuration its build does not cover\n",

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <functional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -12,6 +14,16 @@
 #include "golden/golden.hpp"
 
 namespace trirast {
+
+namespace {
+
+double process_cpu_seconds() {
+  timespec ts;
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
+}  // namespace
 
 // ---- draws --------------------------------------------------------------------------------------
 
@@ -370,7 +382,9 @@ InputTriangle draw_fuzz_triangle(FuzzDraws& d, const RasterConfig& cfg) {
   return draw_fuzz_triangle(d, cfg, FuzzClass(d.below(uint64_t(FuzzClass::kCount))));
 }
 
-std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris) {
+std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris,
+                                           std::vector<FuzzClass>* classes) {
+  if (classes) classes->clear();
   max_tris = std::max(1, max_tris);
   const uint64_t size_pick = d.below(10);
   int n = size_pick < 2 ? 1 : size_pick < 6 ? int(d.range(2, 16)) : size_pick < 9 ? int(d.range(17, 64))
@@ -398,12 +412,17 @@ std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg
       P v[3] = {c, ring[k], ring[(k + 1) % spokes]};
       if (k % 2) std::swap(v[1], v[2]);
       tris.push_back(to_input(v, g));
+      if (classes) classes->push_back(FuzzClass::kCount);  // a fan: no class of its own
     }
   }
   const FuzzClass run_class = FuzzClass(d.below(uint64_t(FuzzClass::kCount)));
   const bool one_class = mode >= 3 && mode < 8;
-  while (int(tris.size()) < n)
-    tris.push_back(one_class ? draw_fuzz_triangle(d, cfg, run_class) : draw_fuzz_triangle(d, cfg));
+  while (int(tris.size()) < n) {
+    // As draw_fuzz_triangle(d, cfg): the class drawn first, then the triangle.
+    const FuzzClass c = one_class ? run_class : FuzzClass(d.below(uint64_t(FuzzClass::kCount)));
+    tris.push_back(draw_fuzz_triangle(d, cfg, c));
+    if (classes) classes->push_back(c);
+  }
   return tris;
 }
 
@@ -485,16 +504,36 @@ std::vector<FuzzDisagreement> check_engines(const std::vector<InputTriangle>& tr
                                             const RasterConfig& cfg,
                                             const std::vector<const EngineInfo*>& engines,
                                             uint64_t* golden_pixels,
-                                            std::vector<std::string>* skipped) {
+                                            std::vector<std::string>* skipped,
+                                            std::vector<double>* cpu_seconds) {
+  if (cpu_seconds) cpu_seconds->assign(engines.size(), 0.0);
+  double t = cpu_seconds ? process_cpu_seconds() : 0.0;
+  auto charge = [&](size_t i) {  // CPU time since the last charge goes to engines[i]
+    if (!cpu_seconds) return;
+    const double now = process_cpu_seconds();
+    (*cpu_seconds)[i] += now - t;
+    t = now;
+  };
   const SetupResult setup = setup_scene(tris, cfg);
   EngineResult golden;
   make_golden_engine()->run(setup, cfg, golden);
   sort_spans(golden.spans);
   if (golden_pixels) *golden_pixels = uint64_t(count_pixels(golden.spans));
+  for (size_t i = 0; i < engines.size(); ++i)
+    if (engines[i]->name == "golden") {
+      charge(i);
+      break;
+    }
 
   std::vector<FuzzDisagreement> found;
-  for (const EngineInfo* info : engines) {
+  for (size_t i = 0; i < engines.size(); ++i) {
+    const EngineInfo* info = engines[i];
     if (info->name == "golden") continue;
+    if (cpu_seconds) t = process_cpu_seconds();
+    struct Charge {  // on every way out of this iteration
+      std::function<void()> f;
+      ~Charge() { f(); }
+    } charged{[&, i] { charge(i); }};
     EngineResult r;
     try {
       info->make()->run(setup, cfg, r);

@@ -104,8 +104,10 @@ InputTriangle draw_fuzz_triangle(FuzzDraws& d, const RasterConfig& cfg, FuzzClas
 InputTriangle draw_fuzz_triangle(FuzzDraws& d, const RasterConfig& cfg);
 
 // A scene of 1..max_tris triangles; sometimes a closed fan or quad grid, sometimes runs of one
-// class, tiny after huge, so pipelined engines see every kind of neighbour.
-std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris);
+// class, tiny after huge, so pipelined engines see every kind of neighbour. `classes`, when
+// given, gets each triangle's class (FuzzClass::kCount for a fan's); the draws are the same.
+std::vector<InputTriangle> draw_fuzz_scene(FuzzDraws& d, const RasterConfig& cfg, int max_tris,
+                                           std::vector<FuzzClass>* classes = nullptr);
 
 // The half-space unit's build parameters (--stamp, --tile, --hs-walk), drawn after the scene (so
 // a seed's scenes stay those it drew before these existed): uniformly among `among` (e.g. the
@@ -132,12 +134,14 @@ struct FuzzDisagreement {
 // viewport. An engine built for fewer configurations (the rtl: one set of widths) says so by
 // throwing std::invalid_argument before it runs (tb/improved/improved_rtl_engine.hpp); it is then listed in
 // `skipped`, not counted as a disagreement. A SetupError propagates (the scene is bad, not an
-// engine).
+// engine). `cpu_seconds`, when given, gets each entry of `engines` its run's process CPU time
+// (a "golden" entry: the golden's run with the scene's set-up; others: the run and the check).
 std::vector<FuzzDisagreement> check_engines(const std::vector<InputTriangle>& tris,
                                             const RasterConfig& cfg,
                                             const std::vector<const EngineInfo*>& engines,
                                             uint64_t* golden_pixels = nullptr,
-                                            std::vector<std::string>* skipped = nullptr);
+                                            std::vector<std::string>* skipped = nullptr,
+                                            std::vector<double>* cpu_seconds = nullptr);
 
 // Cuts a disagreeing scene down: the triangles the disagreement names, if those alone still
 // disagree for the same engine; else each triangle alone; else the whole scene.
