@@ -14,7 +14,8 @@
 //                              low bit 0 (setup snaps to 1/2^S pixel, then scales to 1/2^F)
 //   TriBoxInRange_A            the box (pixel centres within the vertices' extent, clipped to the
 //                              viewport) is at most 2^BoxBits pixels on each axis (HasBox)
-//   CfgViewportInRange_A       the viewport lies in the coordinate range: its last pixel < 2^(CoordIntBits-1)
+// The viewport needs no check: its last pixel (PixBits = CoordIntBits - 1 bits) is always inside
+// the coordinate range, as the CLI's --coord-bits check asks.
 // Simulation only: a top instantiates it outside synthesis (`ifndef SYNTHESIS`), and its
 // assertions are Verilator's alone (trirast_assert.svh), so netlists and cycles do not change.
 // The arithmetic is trirast_port_pkg's, the same a testbench forms its triangles with.
@@ -99,8 +100,6 @@ module trirast_triangle_port_check #(
             (ext_x[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits) &&
              ext_y[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits)), clk_i, !rst_ni)
   end
-  `ASSERT(CfgViewportInRange_A, 32'(cfg_vp_xmax_i) < (1 << (trirast_pkg::CoordIntBits - 1)) &&
-          32'(cfg_vp_ymax_i) < (1 << (trirast_pkg::CoordIntBits - 1)), clk_i, !rst_ni)
 
   // Read only by the assertions (none in a tool without them) or not at all (the parameters).
   logic unused;
