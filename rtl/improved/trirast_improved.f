@@ -3,6 +3,8 @@
 // the Icarus testbench, the libFuzzer build and scripts/synth.sh. Include dir: rtl/common/
 // (trirast_assert.svh, trirast_ports.svh).
 ../common/trirast_pkg.sv
+../common/trirast_port_pkg.sv
+../common/trirast_triangle_port_check.sv
 trirast_improved_adder_divider.sv
 trirast_improved_edge_lane.sv
 trirast_improved_edge_normalizer.sv

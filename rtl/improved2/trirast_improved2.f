@@ -3,6 +3,8 @@
 // Yosys, Icarus), the Verilated builds (cmake/trirast_rtl_builds.cmake) and scripts/synth.sh.
 // Include dir: rtl/common/ (trirast_assert.svh, trirast_ports.svh).
 ../common/trirast_pkg.sv
+../common/trirast_port_pkg.sv
+../common/trirast_triangle_port_check.sv
 trirast_improved2_corner_products.sv
 trirast_improved2_corner_serial.sv
 trirast_improved2_direct_test_2x2.sv

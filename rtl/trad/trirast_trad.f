@@ -1,6 +1,8 @@
 // The traditional-Bresenham unit (top: trirast_trad_top), in dependency order: the package
 // first. One path per line, relative to this list's folder (Verilator's -F rule); read by every flow as rtl/improved/trirast_improved.f is.
 ../common/trirast_pkg.sv
+../common/trirast_port_pkg.sv
+../common/trirast_triangle_port_check.sv
 ../common/trirast_span_fifo.sv
 ../common/trirast_span_port.sv
 trirast_trad_quantizer.sv

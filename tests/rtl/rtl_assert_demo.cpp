@@ -13,6 +13,9 @@
 #include <memory>
 
 #include "Vtrirast_improved_top.h"
+#include "common/harness_util.hpp"
+#include "common/setup.hpp"
+#include "default/params.hpp"
 
 int main(int argc, char** argv) {
   const char* mode = argc > 1 ? argv[1] : "";
@@ -53,6 +56,14 @@ int main(int argc, char** argv) {
 
   // tri-data: a triangle is offered from cycle 0 and taken then; the next one is offered from
   // cycle 1 (the setup stage is busy, tri_ready_o low) and changes in cycle 2 before its handshake.
+  // The triangle is one setup forms (the port's preconditions hold: only the tag breaks the rule).
+  trirast::RasterConfig cfg;
+  cfg.width = cfg.height = 64;
+  trirast::InputTriangle in{{2.25, 40.5, 9.75}, {3.5, 11.0, 50.25}};
+  trirast::TriangleSetup t{};
+  const char* why = nullptr;
+  if (!trirast::setup_triangle(in, 0, cfg, t, &why)) return 2;
+  trirast::rtl::drive_edge_triangle<trirast::rtl::Params_default>(*top, t);
   const int cycles = 20;
   for (int c = 0; c < cycles && !ctx->gotFinish(); ++c) {
     if (tri_data) {
