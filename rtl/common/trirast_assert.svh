@@ -9,6 +9,9 @@
 //                                        and not ready), Data equals its value of that cycle
 //                                        (Wait |=> $stable(Data)), checked at every such edge
 //   `ASSERT_INIT(Name, Prop)             Prop (on parameters) holds at time zero
+//   `ASSERT_IF(Name, Cond, Prop, Clk, Rst)
+//                                        Prop holds at every rising edge where Cond holds and Rst
+//                                        is 0, evaluated only then (an immediate assertion)
 //
 // A failure prints "[ASSERT FAILED] [instance] Name" through $error, which stops a Verilated
 // model (--assert) with a non-zero exit. Only Verilator evaluates them: Yosys 0.23 (which defines
@@ -59,9 +62,22 @@
     assert (__prop) else $error("[ASSERT FAILED] [%m] %s", `"__name`");          \
   end
 
+// Prop is evaluated only at the rising edges where Cond holds (an immediate assertion in a clocked
+// block), so an expensive Prop (the triangle port's products) costs nothing in the other cycles,
+// where a concurrent Cond |-> Prop would be evaluated at every edge.
+`define ASSERT_IF(__name, __cond, __prop, __clk, __rst)                         \
+  /* verilator lint_off SYNCASYNCNET */                                          \
+  always_ff @(posedge __clk) begin                                                \
+    if (!(__rst) && (__cond)) begin                                               \
+      __name: assert (__prop) else $error("[ASSERT FAILED] [%m] %s", `"__name`"); \
+    end                                                                           \
+  end                                                                             \
+  /* verilator lint_on SYNCASYNCNET */
+
 `else
 
 `define ASSERT(__name, __prop, __clk, __rst)
+`define ASSERT_IF(__name, __cond, __prop, __clk, __rst)
 `define ASSERT_KNOWN(__name, __sig, __clk, __rst)
 `define ASSERT_STABLE(__name, __wait, __data, __clk, __rst)
 `define ASSERT_INIT(__name, __prop)

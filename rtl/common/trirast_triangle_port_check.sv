@@ -49,13 +49,19 @@ module trirast_triangle_port_check #(
   localparam int PB = trirast_pkg::PixBits;
   localparam int AB = trirast_port_pkg::AreaBits;
 
+  // Every check is evaluated in the cycle a triangle is taken and only then (ASSERT_IF: an
+  // immediate assertion in a clocked block), so the products and extents below cost the
+  // simulation nothing in the other cycles: the arithmetic is in functions, no continuous
+  // assignment hangs off the port.
   logic take;
-  logic signed [AB-1:0] area2;
   assign take = tri_valid_i && tri_ready_i;
-  assign area2 = trirast_port_pkg::tri_area2(tri_vx_i, tri_vy_i);
 
-  // One axis's box extent: pixels p with centre p u + h inside [min v, max v], clipped to
-  // [0, vp]; returns {empty, last - first} (a box wider than 2^BoxBits shows in the extent).
+  function automatic logic signed [AB-1:0] area2(input logic [3*P-1:0] vx, input logic [3*P-1:0] vy);
+    area2 = trirast_port_pkg::tri_area2(vx, vy);
+  endfunction
+
+  // {empty, last - first} of one axis of the box: the pixels whose centres lie within the
+  // vertices' extent, clipped to the viewport.
   function automatic logic [AB:0] axis_extent(input logic [3*P-1:0] v, input logic [PB-1:0] vp);
     logic signed [AB-1:0] lo, hi, first, last, h, u;
     lo = trirast_port_pkg::coord(v, 0);
@@ -72,38 +78,40 @@ module trirast_triangle_port_check #(
     if (last > $signed(AB'(vp))) last = AB'(vp);
     axis_extent = {first > last, last - first};
   endfunction
-  logic [AB:0] ext_x, ext_y;
-  assign ext_x = axis_extent(tri_vx_i, cfg_vp_xmax_i);
-  assign ext_y = axis_extent(tri_vy_i, cfg_vp_ymax_i);
 
-  `ASSERT(TriNonDegenerate_A, take |-> area2 != '0, clk_i, !rst_ni)
-  `ASSERT(TriOrientation_A, take |-> !area2[AB-1], clk_i, !rst_ni)
+  function automatic logic box_in_range(input logic [AB:0] ext_x, input logic [AB:0] ext_y);
+    box_in_range = ext_x[AB] || ext_y[AB] ||
+                   (ext_x[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits) &&
+                    ext_y[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits));
+  endfunction
+
+  `ASSERT_IF(TriNonDegenerate_A, take, area2(tri_vx_i, tri_vy_i) != '0, clk_i, !rst_ni)
+  `ASSERT_IF(TriOrientation_A, take, area2(tri_vx_i, tri_vy_i) >= 0, clk_i, !rst_ni)
   if (HasEdges) begin : g_edges
-    `ASSERT(TriEdgesFromVertices_A, take |-> tri_a_i == trirast_port_pkg::edge_a(tri_vx_i, tri_vy_i),
-            clk_i, !rst_ni)
-    `ASSERT(TriEdgesFromVertices_B, take |-> tri_b_i == trirast_port_pkg::edge_b(tri_vx_i, tri_vy_i),
-            clk_i, !rst_ni)
-    `ASSERT(TriEdgesFromVertices_Bias,
-            take |-> tri_bias_i == trirast_port_pkg::edge_bias(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
+    `ASSERT_IF(TriEdgesFromVertices_A, take,
+               tri_a_i == trirast_port_pkg::edge_a(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
+    `ASSERT_IF(TriEdgesFromVertices_B, take,
+               tri_b_i == trirast_port_pkg::edge_b(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
+    `ASSERT_IF(TriEdgesFromVertices_Bias, take,
+               tri_bias_i == trirast_port_pkg::edge_bias(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
     if (ReadsC) begin : g_c
-      `ASSERT(TriEdgesFromVertices_C,
-              take |-> tri_c_i == trirast_port_pkg::edge_c(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
+      `ASSERT_IF(TriEdgesFromVertices_C, take,
+                 tri_c_i == trirast_port_pkg::edge_c(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
     end
   end
   if (F > S) begin : g_grid
-    `ASSERT(TriVertexOnGrid_A, take |-> tri_vx_i[0] == 1'b0 && tri_vx_i[P] == 1'b0 &&
-            tri_vx_i[2*P] == 1'b0 && tri_vy_i[0] == 1'b0 && tri_vy_i[P] == 1'b0 &&
-            tri_vy_i[2*P] == 1'b0, clk_i, !rst_ni)
+    `ASSERT_IF(TriVertexOnGrid_A, take, tri_vx_i[0] == 1'b0 && tri_vx_i[P] == 1'b0 &&
+               tri_vx_i[2*P] == 1'b0 && tri_vy_i[0] == 1'b0 && tri_vy_i[P] == 1'b0 &&
+               tri_vy_i[2*P] == 1'b0, clk_i, !rst_ni)
   end
   if (HasBox) begin : g_box
-    `ASSERT(TriBoxInRange_A, take |-> ext_x[AB] || ext_y[AB] ||
-            (ext_x[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits) &&
-             ext_y[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits)), clk_i, !rst_ni)
+    `ASSERT_IF(TriBoxInRange_A, take,
+               box_in_range(axis_extent(tri_vx_i, cfg_vp_xmax_i), axis_extent(tri_vy_i, cfg_vp_ymax_i)),
+               clk_i, !rst_ni)
   end
 
-  // Read only by the assertions (none in a tool without them) or not at all (the parameters).
   logic unused;
-  assign unused = ^{tri_a_i, tri_b_i, tri_c_i, tri_bias_i, ext_x, ext_y, area2, take};
+  assign unused = ^{tri_a_i, tri_b_i, tri_c_i, tri_bias_i, cfg_vp_xmax_i, cfg_vp_ymax_i, take};
 
 endmodule
 
