@@ -97,7 +97,7 @@ module trirast_span_fifo #(
   // start of the cycle (DEPTH <= FifoDepth), so the pushes fit without the cycle's pop.
   `ASSERT(FifoNoOverflow_A, 32'(count_q) + 32'(pushes) <= FifoDepth, clk_i, !rst_ni)
   // No pop from an empty FIFO, and the occupancy in 0..FifoDepth.
-  `ASSERT(FifoNoUnderflow_A, pop |-> count_q != '0, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(FifoNoUnderflow_A, pop, count_q != '0, clk_i, !rst_ni)
   `ASSERT(FifoCountInRange_A, 32'(count_q) <= FifoDepth, clk_i, !rst_ni)
   `ASSERT_INIT(FifoDepthPow2_A, FifoDepth >= 1 && (FifoDepth & (FifoDepth - 1)) == 0)
 

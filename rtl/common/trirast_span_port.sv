@@ -59,11 +59,11 @@ module trirast_span_port #(
   assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = head;
 
   // The span port's handshake: a span offered and not taken stays, unchanged, next cycle.
-  `ASSERT(SpanValidHeld_A, span_valid_o && !span_ready_i |=> span_valid_o, clk_i, !rst_ni)
+  `ASSERT_NEXT(SpanValidHeld_A, span_valid_o && !span_ready_i, span_valid_o, clk_i, !rst_ni)
   `ASSERT_STABLE(SpanDataStable_A, span_valid_o && !span_ready_i, head, clk_i, !rst_ni)
   // Known values on the unit's outputs: the valid and the count always, the span when valid.
   `ASSERT_KNOWN(SpanValidKnown_A, span_valid_o, clk_i, !rst_ni)
   `ASSERT_KNOWN(FifoCountKnown_A, count_o, clk_i, !rst_ni)
-  `ASSERT(SpanDataKnown_A, span_valid_o |-> !$isunknown(head), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(SpanDataKnown_A, span_valid_o, head, clk_i, !rst_ni)
 
 endmodule
