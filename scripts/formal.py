@@ -40,6 +40,7 @@ import argparse
 import json
 import os
 import re
+import resource
 import shutil
 import signal
 import subprocess
@@ -65,6 +66,13 @@ def unit_files(unit):
             if line:
                 out.append(os.path.realpath(os.path.join(os.path.dirname(lst), line)))
     return out
+
+
+def children_cpu():
+    """CPU seconds (user + system) of the finished child processes: a proof's cost, which does
+    not depend on the machine's load as its wall-clock time does."""
+    r = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return r.ru_utime + r.ru_stime
 
 
 def run(cmd, log, deadline, cwd):
@@ -103,7 +111,11 @@ def failed_asserts(log):
 def short_assert(name):
     """An assertion's label from smtbmc's description (path:line.col-... (Label) or the label)."""
     m = re.search(r"\(([A-Za-z_][\w.$]*)\)\s*$", name)
-    return m.group(1) if m else name
+    if m and not m.group(1).startswith("$"):
+        return m.group(1)
+    # an unlabelled assertion (the RTL's macros under FORMAL): its file and line
+    m = re.search(r"\$assert\$([^$()]*?):(\d+)\$\d+\)?\s*$", name)
+    return "%s:%s" % (os.path.basename(m.group(1)), m.group(2)) if m else name
 
 
 def build_model(proof, work, plant, deadline, opts_check=None):
@@ -199,6 +211,7 @@ def run_proof(proof, opts, plant=None):
     mode = proof["mode"]
     timeout = opts.timeout or proof["timeout"]
     t0 = time.time()
+    cpu0 = children_cpu()
     deadline = t0 + timeout
     times = []
     top = proof["top"]
@@ -248,7 +261,8 @@ def run_proof(proof, opts, plant=None):
     except (RuntimeError, OSError) as e:
         return "ERROR", str(e), time.time() - t0, []
     what = ("k-induction, depth %d" % depth) if mode == "prove" else ("BMC, depth %d" % depth)
-    return "PASS", "%s, %s; %s" % (what, solver, ", ".join(times)), time.time() - t0, []
+    return "PASS", "%s, %s; %s; cpu %.1f s" % (what, solver, ", ".join(times),
+                                               children_cpu() - cpu0), time.time() - t0, []
 
 
 def main():
