@@ -308,8 +308,10 @@ def main():
         if opts.plant not in plants:
             print("formal.py: proof %s has no plant %s" % (names[0], opts.plant), file=sys.stderr)
             return 2
+        cpu0 = children_cpu()
         st, detail, secs, _ = run_proof(proof, opts, plants[opts.plant])
-        print("formal: %s with plant %s: %s (%s) %.1f s" % (names[0], opts.plant, st, detail, secs))
+        print("formal: %s with plant %s: %s (%s) %.1f s, cpu %.1f s" % (
+            names[0], opts.plant, st, detail, secs, children_cpu() - cpu0))
         caught = st == "FAIL" and detail.startswith("counterexample")
         print("formal: plant %s of %s: %s" % (
             opts.plant, names[0], "CAUGHT (the proof fails on it): PASS" if caught else
