@@ -10,6 +10,7 @@ PACKAGES=(
   libsystemc-dev                          # SystemC 2.3.4 (transaction-level model)
   verilator iverilog                      # RTL simulation
   yosys nextpnr-ice40 fpga-icestorm       # synthesis, place and route
+  z3 boolector cvc5                       # SMT solvers of the formal proofs (yosys-smtbmc)
   gtkwave                                 # waveform viewer (traces)
   xvfb xauth imagemagick                  # GTKWave headless in tests/gtkwave (xvfb-run), screenshots
   libglm-dev libassimp-dev assimp-testmodels  # mesh scenes and camera

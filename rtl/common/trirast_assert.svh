@@ -2,23 +2,38 @@
 // writes its protocol assumptions beside the logic they guard.
 //
 //   `ASSERT(Name, Prop, Clk, Rst)        Prop holds at every rising edge of Clk while Rst is 0
-//                                        (Rst is the "in reset" condition, e.g. !rst_ni)
+//                                        (Rst is the "in reset" condition, e.g. !rst_ni); Prop
+//                                        is a plain expression ($past allowed, no |-> or |=>)
+//   `ASSERT_IMPLIES(Name, Ante, Cons, Clk, Rst)
+//                                        Ante |-> Cons: in a cycle with Ante, Cons
+//   `ASSERT_NEXT(Name, Ante, Cons, Clk, Rst)
+//                                        Ante |=> Cons: in the cycle after one with Ante (out of
+//                                        reset), Cons
 //   `ASSERT_KNOWN(Name, Sig, Clk, Rst)   Sig has no X or Z bit at every such edge
+//   `ASSERT_KNOWN_IF(Name, Cond, Sig, Clk, Rst)
+//                                        ... in the cycles with Cond
 //   `ASSERT_STABLE(Name, Wait, Data, Clk, Rst)
 //                                        a handshake's data held: after a cycle with Wait (valid
 //                                        and not ready), Data equals its value of that cycle
 //                                        (Wait |=> $stable(Data)), checked at every such edge
 //   `ASSERT_INIT(Name, Prop)             Prop (on parameters) holds at time zero
-//   `ASSERT_IF(Name, Cond, Prop, Clk, Rst)
-//                                        Prop holds at every rising edge where Cond holds and Rst
-//                                        is 0, evaluated only then (an immediate assertion)
 //
-// A failure prints "[ASSERT FAILED] [instance] Name" through $error, which stops a Verilated
-// model (--assert) with a non-zero exit. Only Verilator evaluates them: Yosys 0.23 (which defines
-// SYNTHESIS) does not parse concurrent assertions in read_verilog -sv, and neither does Icarus 11
-// (it defines __ICARUS__; "sorry: concurrent_assertion_item not supported"), so for those tools
-// the macros expand to nothing. Every argument must be given (no defaults: the empty forms take
-// four arguments too); a concatenation ({a, b}) is one argument in all three tools.
+// Three expansions:
+//  - Verilator (simulation): concurrent assertions; a failure prints "[ASSERT FAILED] [instance]
+//    Name" through $error, which stops a Verilated model (--assert) with a non-zero exit.
+//  - FORMAL (Yosys's read_verilog -formal defines it; tb/formal/, docs/formal.md): immediate
+//    assertions in an always @(posedge Clk) block, enabled out of reset, which the formal proofs
+//    check with their own properties. Yosys 0.23 parses no |->, |=> or concurrent assertion, so
+//    ASSERT_IMPLIES is !Ante || Cons, ASSERT_NEXT a register of Ante (out of reset) and Cons
+//    asserted the cycle after, ASSERT_STABLE a copy of Data compared the cycle after a Wait, and
+//    ASSERT_INIT an assertion on the parameters in every cycle. ASSERT_KNOWN and
+//    ASSERT_KNOWN_IF expand to nothing: a formal model has two-valued bits (an undriven or
+//    unreset bit is a free 0 or 1 the solver chooses), so no bit is ever X.
+//  - anything else (synthesis, Yosys without -formal, Icarus 11: "sorry:
+//    concurrent_assertion_item not supported"): nothing, so the synthesized netlists do not
+//    depend on the assertions.
+// Every argument must be given (no defaults: the empty forms take the same arguments); a
+// concatenation ({a, b}) is one argument in all three tools.
 `ifndef TRIRAST_ASSERT_SVH
 `define TRIRAST_ASSERT_SVH
 
@@ -26,7 +41,39 @@
 `define TRIRAST_ASSERTIONS_ON
 `endif
 
-`ifdef TRIRAST_ASSERTIONS_ON
+`ifdef FORMAL
+
+// The assertions carry no label: Yosys 0.23 names a labelled procedural assertion without its
+// generate scope (two in a generate loop collide), so a failure names the RTL's file and line.
+`define ASSERT(__name, __prop, __clk, __rst)                                    \
+  always @(posedge __clk) if (!(__rst)) assert (__prop);
+
+`define ASSERT_IMPLIES(__name, __ante, __cons, __clk, __rst)                    \
+  always @(posedge __clk) if (!(__rst)) assert (!(__ante) || (__cons));
+
+`define ASSERT_NEXT(__name, __ante, __cons, __clk, __rst)                       \
+  logic __name``_ante_q;                                                          \
+  always @(posedge __clk) begin                                                   \
+    if (!(__rst) && __name``_ante_q) assert (__cons);                    \
+    __name``_ante_q <= !(__rst) && (__ante);                                      \
+  end
+
+`define ASSERT_KNOWN(__name, __sig, __clk, __rst)
+`define ASSERT_KNOWN_IF(__name, __cond, __sig, __clk, __rst)
+
+`define ASSERT_STABLE(__name, __wait, __data, __clk, __rst)                      \
+  logic __name``_wait_q;                                                          \
+  logic [$bits(__data)-1:0] __name``_data_q;                                      \
+  always @(posedge __clk) begin                                                   \
+    if (!(__rst) && __name``_wait_q) assert ((__data) == __name``_data_q); \
+    __name``_data_q <= (__data);                                                  \
+    __name``_wait_q <= !(__rst) && (__wait);                                      \
+  end
+
+`define ASSERT_INIT(__name, __prop)                                             \
+  always @* assert (__prop);
+
+`elsif TRIRAST_ASSERTIONS_ON
 
 `define ASSERT(__name, __prop, __clk, __rst)                                    \
   /* verilator lint_off SYNCASYNCNET */                                          \
@@ -34,8 +81,17 @@
     else $error("[ASSERT FAILED] [%m] %s", `"__name`");                          \
   /* verilator lint_on SYNCASYNCNET */
 
+`define ASSERT_IMPLIES(__name, __ante, __cons, __clk, __rst)                    \
+  `ASSERT(__name, (__ante) |-> (__cons), __clk, __rst)
+
+`define ASSERT_NEXT(__name, __ante, __cons, __clk, __rst)                       \
+  `ASSERT(__name, (__ante) |=> (__cons), __clk, __rst)
+
 `define ASSERT_KNOWN(__name, __sig, __clk, __rst)                               \
   `ASSERT(__name, !$isunknown(__sig), __clk, __rst)
+
+`define ASSERT_KNOWN_IF(__name, __cond, __sig, __clk, __rst)                    \
+  `ASSERT(__name, (__cond) |-> !$isunknown(__sig), __clk, __rst)
 
 // Wait |=> $stable(Data) written for simulation speed: a concurrent $stable keeps a sampled copy
 // of every bit of Data at every evaluation of the Verilated model (the improved unit's triangle,
@@ -62,23 +118,13 @@
     assert (__prop) else $error("[ASSERT FAILED] [%m] %s", `"__name`");          \
   end
 
-// Prop is evaluated only at the rising edges where Cond holds (an immediate assertion in a clocked
-// block), so an expensive Prop (the triangle port's products) costs nothing in the other cycles,
-// where a concurrent Cond |-> Prop would be evaluated at every edge.
-`define ASSERT_IF(__name, __cond, __prop, __clk, __rst)                         \
-  /* verilator lint_off SYNCASYNCNET */                                          \
-  always_ff @(posedge __clk) begin                                                \
-    if (!(__rst) && (__cond)) begin                                               \
-      __name: assert (__prop) else $error("[ASSERT FAILED] [%m] %s", `"__name`"); \
-    end                                                                           \
-  end                                                                             \
-  /* verilator lint_on SYNCASYNCNET */
-
 `else
 
 `define ASSERT(__name, __prop, __clk, __rst)
-`define ASSERT_IF(__name, __cond, __prop, __clk, __rst)
+`define ASSERT_IMPLIES(__name, __ante, __cons, __clk, __rst)
+`define ASSERT_NEXT(__name, __ante, __cons, __clk, __rst)
 `define ASSERT_KNOWN(__name, __sig, __clk, __rst)
+`define ASSERT_KNOWN_IF(__name, __cond, __sig, __clk, __rst)
 `define ASSERT_STABLE(__name, __wait, __data, __clk, __rst)
 `define ASSERT_INIT(__name, __prop)
 

@@ -19,6 +19,15 @@ module trirast_span_fifo #(
   output logic                                valid_o,   // span_valid_o
   input  logic                                ready_i,   // span_ready_i
   output logic [EntryBits-1:0]                data_o     // the oldest entry
+`ifdef FORMAL
+  ,
+  // Formal proofs only (tb/formal/, docs/formal.md; FORMAL is defined by Yosys's read_verilog
+  // -formal and by no simulation or synthesis flow): the pointers and the storage, read by the
+  // proof's invariants.
+  output logic [$clog2(FifoDepth)-1:0]        f_wptr_o,
+  output logic [$clog2(FifoDepth)-1:0]        f_rptr_o,
+  output logic [FifoDepth*EntryBits-1:0]      f_mem_o    // entry k at [k*EntryBits +: EntryBits]
+`endif
 );
   localparam int PtrBits = $clog2(FifoDepth);
   localparam int PushBits = $clog2(NumEndpoints + 1);
@@ -76,12 +85,19 @@ module trirast_span_fifo #(
 
   assign count_o = count_q;
   assign data_o  = mem_q[rptr_q];
+`ifdef FORMAL
+  assign f_wptr_o = wptr_q;
+  assign f_rptr_o = rptr_q;
+  for (genvar k = 0; k < FifoDepth; k++) begin : g_f_mem
+    assign f_mem_o[k*EntryBits +: EntryBits] = mem_q[k];
+  end
+`endif
 
   // No push into a full FIFO: the walk stage admits a group only when count + n <= DEPTH at the
   // start of the cycle (DEPTH <= FifoDepth), so the pushes fit without the cycle's pop.
   `ASSERT(FifoNoOverflow_A, 32'(count_q) + 32'(pushes) <= FifoDepth, clk_i, !rst_ni)
   // No pop from an empty FIFO, and the occupancy in 0..FifoDepth.
-  `ASSERT(FifoNoUnderflow_A, pop |-> count_q != '0, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(FifoNoUnderflow_A, pop, count_q != '0, clk_i, !rst_ni)
   `ASSERT(FifoCountInRange_A, 32'(count_q) <= FifoDepth, clk_i, !rst_ni)
   `ASSERT_INIT(FifoDepthPow2_A, FifoDepth >= 1 && (FifoDepth & (FifoDepth - 1)) == 0)
 

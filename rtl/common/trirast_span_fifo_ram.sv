@@ -26,6 +26,14 @@ module trirast_span_fifo_ram #(
   output logic                 valid_o,
   input  logic                 ready_i,
   output logic [EntryBits-1:0] data_o     // the oldest entry (when valid_o)
+`ifdef FORMAL
+  ,
+  // Formal proofs only (tb/formal/, docs/formal.md; FORMAL is defined by Yosys's read_verilog
+  // -formal and by no simulation or synthesis flow): the pointers and the storage.
+  output logic [((FifoDepth > 1) ? $clog2(FifoDepth) : 1)-1:0] f_wptr_o,
+  output logic [((FifoDepth > 1) ? $clog2(FifoDepth) : 1)-1:0] f_rptr_o,
+  output logic [FifoDepth*EntryBits-1:0] f_mem_o   // entry k at [k*EntryBits +: EntryBits]
+`endif
 );
   localparam int PtrBits = (FifoDepth > 1) ? $clog2(FifoDepth) : 1;
 
@@ -61,5 +69,12 @@ module trirast_span_fifo_ram #(
 
   assign count_o = count_q;
   assign data_o  = rdata_q;
+`ifdef FORMAL
+  assign f_wptr_o = wptr_q;
+  assign f_rptr_o = rptr_q;
+  for (genvar k = 0; k < FifoDepth; k++) begin : g_f_mem
+    assign f_mem_o[k*EntryBits +: EntryBits] = mem[k];
+  end
+`endif
 
 endmodule

@@ -25,6 +25,13 @@ module trirast_span_port #(
   output logic [trirast_pkg::PixBits-1:0]     span_y_o,
   output logic [trirast_pkg::PixBits-1:0]     span_x_begin_o,
   output logic [trirast_pkg::PixBits:0]       span_x_end_o   // exclusive
+`ifdef FORMAL
+  ,
+  // Formal proofs only (tb/formal/, docs/formal.md): the FIFO's pointers and storage.
+  output logic [$clog2(FifoDepth)-1:0]        f_wptr_o,
+  output logic [$clog2(FifoDepth)-1:0]        f_rptr_o,
+  output logic [FifoDepth*EntryBits-1:0]      f_mem_o
+`endif
 );
   logic [EntryBits-1:0] head;
 
@@ -41,16 +48,22 @@ module trirast_span_port #(
     .valid_o (span_valid_o),
     .ready_i (span_ready_i),
     .data_o  (head)
+`ifdef FORMAL
+    ,
+    .f_wptr_o (f_wptr_o),
+    .f_rptr_o (f_rptr_o),
+    .f_mem_o  (f_mem_o)
+`endif
   );
 
   assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = head;
 
   // The span port's handshake: a span offered and not taken stays, unchanged, next cycle.
-  `ASSERT(SpanValidHeld_A, span_valid_o && !span_ready_i |=> span_valid_o, clk_i, !rst_ni)
+  `ASSERT_NEXT(SpanValidHeld_A, span_valid_o && !span_ready_i, span_valid_o, clk_i, !rst_ni)
   `ASSERT_STABLE(SpanDataStable_A, span_valid_o && !span_ready_i, head, clk_i, !rst_ni)
   // Known values on the unit's outputs: the valid and the count always, the span when valid.
   `ASSERT_KNOWN(SpanValidKnown_A, span_valid_o, clk_i, !rst_ni)
   `ASSERT_KNOWN(FifoCountKnown_A, count_o, clk_i, !rst_ni)
-  `ASSERT(SpanDataKnown_A, span_valid_o |-> !$isunknown(head), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(SpanDataKnown_A, span_valid_o, head, clk_i, !rst_ni)
 
 endmodule

@@ -110,7 +110,7 @@ module trirast_halfspace_setup_stage #(
   `ASSERT(HalfspaceSetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
           state_q == StHold, clk_i, !rst_ni)
   // The hand-off holds its triangle until the walk stage takes it.
-  `ASSERT(HalfspaceHandHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o && $stable(hand_tag_o),
-          clk_i, !rst_ni)
+  `ASSERT_NEXT(HalfspaceHandHeld_A, hand_valid_o && !hand_ready_i,
+          hand_valid_o && $stable(hand_tag_o), clk_i, !rst_ni)
   `ASSERT_KNOWN(HalfspaceHandValidKnown_A, {tri_ready_o, hand_valid_o, box_retire_o}, clk_i, !rst_ni)
 endmodule

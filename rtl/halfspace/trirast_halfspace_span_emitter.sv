@@ -114,7 +114,7 @@ module trirast_halfspace_span_emitter #(
   end
 
   // A band is handed over only when the previous one is out.
-  `ASSERT(HalfspaceBandLoadWhenFree_A, band_load_i |-> free_o, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(HalfspaceBandLoadWhenFree_A, band_load_i, free_o, clk_i, !rst_ni)
   `ASSERT_KNOWN(HalfspaceEmitterKnown_A, {push_o, free_o, any_o, stall_o}, clk_i, !rst_ni)
-  `ASSERT(HalfspacePushDataKnown_A, push_o |-> !$isunknown(push_data_o), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(HalfspacePushDataKnown_A, push_o, push_data_o, clk_i, !rst_ni)
 endmodule

@@ -304,11 +304,14 @@ module trirast_halfspace_tile_walker #(
   `ASSERT_INIT(HalfspaceParamsLegal_A, (StampSize == 1 || StampSize == 2 || StampSize == 4) &&
                (TileSize == 0 || TileSize == 8 || TileSize == 16) &&
                (TileSize == 0 || TileSize % StampSize == 0))
-  `ASSERT(HalfspaceWalkStateLegal_A, state_q inside {WIdle, WUnit, WStamp, WWait, WDrain}, clk_i, !rst_ni)
+  `ASSERT(HalfspaceWalkStateLegal_A, state_q == WIdle || state_q == WUnit || state_q == WStamp ||
+          state_q == WWait || state_q == WDrain, clk_i, !rst_ni)
   // The walker's position stays inside the box while it tests.
-  `ASSERT(HalfspaceUnitInBox_A, state_q == WUnit |-> i0_q <= {1'b0, xmax_q} && j0_q <= {1'b0, ymax_q},
+  `ASSERT_IMPLIES(HalfspaceUnitInBox_A, state_q == WUnit,
+                 i0_q <= {1'b0, xmax_q} && j0_q <= {1'b0, ymax_q}, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(HalfspaceStampInTile_A, state_q == WStamp, si_q <= tile_i1 && sj_q <= tile_j1,
           clk_i, !rst_ni)
-  `ASSERT(HalfspaceStampInTile_A, state_q == WStamp |-> si_q <= tile_i1 && sj_q <= tile_j1, clk_i, !rst_ni)
-  `ASSERT(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o |-> state_q == WIdle, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o, state_q == WIdle, clk_i,
+          !rst_ni)
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)
 endmodule

@@ -128,10 +128,10 @@ module trirast_halfspace_top #(
           clk_i, !rst_ni)
   `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, box_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
                                 walk_retire_o}, clk_i, !rst_ni)
-  `ASSERT(RetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
-  `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(RetireTagKnown_A, box_retire_o, box_retire_tag_o, clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(WalkTagKnown_A, walk_busy_o, walk_tag_o, clk_i, !rst_ni)
   // The triangle port: a triangle offered and not taken stays (the harness offers back to back).
-  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_NEXT(TriValidHeld_A, tri_valid_i && !tri_ready_o, tri_valid_i, clk_i, !rst_ni)
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"), simulation only.
 `ifndef SYNTHESIS

@@ -21,6 +21,17 @@ module trirast_improved_adder_divider (
   output logic [trirast_pkg::QuotBits-1:0]   quot_o,     // q (all ones when saturated), at last_o
   output logic [trirast_pkg::RemBits-1:0]    rem_o,      // r = n - q*d (unsaturated: r < d)
   output logic                               sat_o       // n >= d * 2^m, at last_o
+`ifdef FORMAL
+  ,
+  // Formal proofs only (tb/formal/formal_adder_divider.sv, docs/formal.md; FORMAL is defined by
+  // Yosys's read_verilog -formal and by no simulation or synthesis flow): the registers, read by
+  // the proof's invariants.
+  output logic [$clog2(trirast_pkg::QuotBits+1)-1:0] f_iter_o,
+  output logic [$clog2(trirast_pkg::QuotBits+1)-1:0] f_bits_o,
+  output logic [trirast_pkg::NumerBits-1:0]  f_rem_o,
+  output logic [trirast_pkg::StepBits+trirast_pkg::QuotBits-2:0] f_shift_o,
+  output logic [trirast_pkg::QuotBits-1:0]   f_quot_o
+`endif
 );
   `TRIRAST_PKG_NAMES
   // The divisor shifted to the quotient's MSB, d << (Q - 1), and the width both fit in.
@@ -77,6 +88,9 @@ module trirast_improved_adder_divider (
   assign sat_o  = WideBits'(rem_d) >= WideBits'(shift_in);
 
   `TRIRAST_FLOP_AR({busy_q, iter_q}, {busy_d, iter_d}, '0)
+`ifdef FORMAL
+  assign {f_iter_o, f_bits_o, f_rem_o, f_shift_o, f_quot_o} = {iter_q, bits_q, rem_q, shift_q, quot_q};
+`endif
 
   // Datapath registers: no reset (written by the first iteration before they are read).
   always_ff @(posedge clk_i) begin

@@ -161,13 +161,13 @@ module trirast_improved_setup_stage (
 
   // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
   // port, unchanged, until the handshake.
-  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_NEXT(TriValidHeld_A, tri_valid_i && !tri_ready_o, tri_valid_i, clk_i, !rst_ni)
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
                  {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i}, clk_i,
                  !rst_ni)
   // The hand-off (what this stage guarantees the walk stage): the set-up triangle is held in
   // StHold, unchanged, until the walk stage takes it.
-  `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
+  `ASSERT_NEXT(HandValidHeld_A, hand_valid_o && !hand_ready_i, hand_valid_o, clk_i, !rst_ni)
   `ASSERT_STABLE(HandDataStable_A, hand_valid_o && !hand_ready_i,
                  {hand_tag_o, hand_x0_o, hand_y0_o, hand_xmax_o, hand_ymax_o, hand_mirror_o,
                   hand_dir_down_o, hand_d_o, hand_qs_o, hand_rs_o, hand_ssat_o, hand_enters_o,

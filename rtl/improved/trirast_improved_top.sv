@@ -100,9 +100,9 @@ module trirast_improved_top #(
   `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, box_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
                                 walk_retire_o, setup_state_o, lane_busy_o, lane_div_o, handoff_o},
                 clk_i, !rst_ni)
-  `ASSERT(BoxKnown_A, handoff_o |-> !$isunknown({box_xmax_o, box_ymax_o}), clk_i, !rst_ni)
-  `ASSERT(RetireTagKnown_A, box_retire_o |-> !$isunknown(box_retire_tag_o), clk_i, !rst_ni)
-  `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(BoxKnown_A, handoff_o, {box_xmax_o, box_ymax_o}, clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(RetireTagKnown_A, box_retire_o, box_retire_tag_o, clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(WalkTagKnown_A, walk_busy_o, walk_tag_o, clk_i, !rst_ni)
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"), simulation only.
 `ifndef SYNTHESIS

@@ -208,7 +208,7 @@ module trirast_improved2_corner_serial #(
     assign fneg_o[k] = acc_q[AW-1];
     logic unused_e;
     assign unused_e = ^{esum[0], acc_q[0]};
-    `ASSERT(AccParity_A, run_q && ptr_q == '0 |-> acc_q[0] != pn_q[0], clk_i, !rst_ni)
+    `ASSERT_IMPLIES(AccParity_A, run_q && ptr_q == '0, acc_q[0] != pn_q[0], clk_i, !rst_ni)
   end
 
   // The run's top digit (one-hot): the highest group of any operand, digit 0 when none.

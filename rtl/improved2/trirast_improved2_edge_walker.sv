@@ -235,6 +235,6 @@ module trirast_improved2_edge_walker #(
                          entry_e_i[F-1:0], rs_i[F-1:0], d_i[F-1:0]};   // f's low bits
 
   // D and r_s have F zero low bits (the lane's), so f's stay the entry f's (see the header).
-  `ASSERT(StepLowBitsZero_A, load_i |-> rs_i[F-1:0] == '0 && d_i[F-1:0] == '0, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(StepLowBitsZero_A, load_i, rs_i[F-1:0] == '0 && d_i[F-1:0] == '0, clk_i, !rst_ni)
 
 endmodule

@@ -43,6 +43,6 @@ module trirast_improved2_job_ring #(
   end
   assign q_o = rdata_q;
 
-  `ASSERT(RingNoCollision_A, we_i |-> wp_q != rp_d, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(RingNoCollision_A, we_i, wp_q != rp_d, clk_i, !rst_ni)
 
 endmodule

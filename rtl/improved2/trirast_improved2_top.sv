@@ -341,7 +341,7 @@ module trirast_improved2_top #(
     assign el     = acc;
     assign e_lane = acc;
     // C's block-RAM fields are read two cycles after the take at the earliest (trirast_improved2_stage_ram).
-    `ASSERT(CRamReadLate_A, UseCRam && $past(b_take) |-> !(c_full_q && c_ready) && !start2_q,
+    `ASSERT_IMPLIES(CRamReadLate_A, UseCRam && $past(b_take), !(c_full_q && c_ready) && !start2_q,
             clk_i, !rst_ni)
     assign c_ready = done && (second_q || c_tiny);
   end
@@ -455,9 +455,9 @@ module trirast_improved2_top #(
       .d_i ({b_tag_q, b_fx_q, b_fy_q, b_xmax, b_ymax}), .next_i (hand_valid && hand_ready),
       .q_o (w_job));
     // The ring shows the job just handed off: the tag and box L held.
-    `ASSERT(JobRingInOrder_A, $past(hand_valid && hand_ready) |->
-            {w_job[JW-1 -: TB], w_job[2*BB-1:0]} == $past({l_tag_q, l_xmax_q, l_ymax_q}),
-            clk_i, !rst_ni)
+    `ASSERT_IMPLIES(JobRingInOrder_A, $past(hand_valid && hand_ready),
+                   {w_job[JW-1 -: TB], w_job[2*BB-1:0]} == $past({l_tag_q, l_xmax_q, l_ymax_q}),
+                   clk_i, !rst_ni)
   end else begin : g_lcopy
     logic [PB-1:0] l_x0_q, l_y0_q;
     always_ff @(posedge clk_i) begin
@@ -512,10 +512,10 @@ module trirast_improved2_top #(
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
                  {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i},
                  clk_i, !rst_ni)
-  `ASSERT(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o) |-> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o), tri_valid_i, clk_i, !rst_ni)
   // A job is handed off only when every lane it loaded is done; a tiny job loads none.
-  `ASSERT(HandoffLanesDone_A, handoff_o && !l_tiny_q |-> &lane_done, clk_i, !rst_ni)
-  `ASSERT(LaneLoadIdle_A, lane_load |-> &lane_done, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(HandoffLanesDone_A, handoff_o && !l_tiny_q, &lane_done, clk_i, !rst_ni)
+  `ASSERT_IMPLIES(LaneLoadIdle_A, lane_load, &lane_done, clk_i, !rst_ni)
   `ASSERT_KNOWN(HandshakesKnown_A, {tri_ready_o, box_retire_o, handoff_o, busy_o}, clk_i, !rst_ni)
 
   logic unused;

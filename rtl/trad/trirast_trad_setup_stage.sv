@@ -118,12 +118,12 @@ module trirast_trad_setup_stage (
 
   // The triangle port (an input assumption): a triangle offered and not yet taken stays on the
   // port, unchanged, until the handshake.
-  `ASSERT(TriValidHeld_A, tri_valid_i && !tri_ready_o |=> tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_NEXT(TriValidHeld_A, tri_valid_i && !tri_ready_o, tri_valid_i, clk_i, !rst_ni)
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o, {tri_tag_i, tri_vx_i, tri_vy_i},
                  clk_i, !rst_ni)
   // The hand-off (what this stage guarantees the walk stage): held in StHold, unchanged, until
   // the walk stage takes it.
-  `ASSERT(HandValidHeld_A, hand_valid_o && !hand_ready_i |=> hand_valid_o, clk_i, !rst_ni)
+  `ASSERT_NEXT(HandValidHeld_A, hand_valid_o && !hand_ready_i, hand_valid_o, clk_i, !rst_ni)
   `ASSERT_STABLE(HandDataStable_A, hand_valid_o && !hand_ready_i,
                  {hand_tag_o, hand_px_o, hand_py_o, hand_sx_neg_o, hand_x_major_o, hand_dmaj_o,
                   hand_dmin_o, hand_d0_o}, clk_i, !rst_ni)

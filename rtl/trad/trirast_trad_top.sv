@@ -95,9 +95,9 @@ module trirast_trad_top #(
   // and observation strobes always, a tag when its strobe is high.
   `ASSERT_KNOWN(StrobesKnown_A, {tri_ready_o, setup_retire_o, walk_busy_o, walk_stall_o, walk_last_o,
                                 walk_retire_o, setup_state_o, handoff_o}, clk_i, !rst_ni)
-  `ASSERT(HandPixelsKnown_A, handoff_o |-> !$isunknown({hand_px_o, hand_py_o}), clk_i, !rst_ni)
-  `ASSERT(RetireTagKnown_A, setup_retire_o |-> !$isunknown(setup_retire_tag_o), clk_i, !rst_ni)
-  `ASSERT(WalkTagKnown_A, walk_busy_o |-> !$isunknown(walk_tag_o), clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(HandPixelsKnown_A, handoff_o, {hand_px_o, hand_py_o}, clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(RetireTagKnown_A, setup_retire_o, setup_retire_tag_o, clk_i, !rst_ni)
+  `ASSERT_KNOWN_IF(WalkTagKnown_A, walk_busy_o, walk_tag_o, clk_i, !rst_ni)
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"; the vertices only: this
   // port has no edge functions and the unit no box), simulation only.
