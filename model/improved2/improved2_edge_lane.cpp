@@ -6,9 +6,7 @@
 
 namespace trirast {
 
-Improved2LaneWork Improved2EdgeLane::run(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax) {
-  Improved2LaneWork w;
-  w.m = std::max(1, unsigned_bits(uint64_t(Xmax))) + 1;
+int64_t Improved2EdgeLane::traverse(const NormalizedEdge& n, int64_t Ymax) {
   // The traversal: dir - keeps u = ~v, so both directions add s and "entered" is u >= 0.
   int64_t u = n.dir_down ? n.T : -n.T1 - 1;
   int64_t j = 0;
@@ -16,6 +14,15 @@ Improved2LaneWork Improved2EdgeLane::run(const NormalizedEdge& n, int64_t Xmax, 
     u += n.s;
     ++j;
   }
+  return j;
+}
+
+Improved2LaneWork Improved2EdgeLane::from_traversal(const NormalizedEdge& n, int64_t Xmax,
+                                                    int64_t Ymax, int64_t steps) {
+  Improved2LaneWork w;
+  w.m = std::max(1, unsigned_bits(uint64_t(Xmax))) + 1;
+  const int64_t j = steps;
+  const int64_t u = (n.dir_down ? n.T : -n.T1 - 1) + j * n.s;  // the column value after T steps
   w.steps = j;
   w.enters = j <= Ymax;
   if (n.horizontal) {
@@ -33,6 +40,10 @@ Improved2LaneWork Improved2EdgeLane::run(const NormalizedEdge& n, int64_t Xmax, 
   w.iterations = uint64_t(ms + me);
   w.cycles = uint64_t(std::max<int64_t>(ms, j)) + 1 + uint64_t(me);
   return w;
+}
+
+Improved2LaneWork Improved2EdgeLane::run(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax) {
+  return from_traversal(n, Xmax, Ymax, traverse(n, Ymax));
 }
 
 }  // namespace trirast
