@@ -6,6 +6,12 @@
 
 namespace trirast {
 
+namespace {
+// unsigned_bits (fixed_point.hpp) without its loop: at least 1, else the position of the top bit
+// plus one.
+inline int bits_of(uint64_t v) { return v == 0 ? 1 : 64 - __builtin_clzll(v); }
+}  // namespace
+
 int64_t Improved2EdgeLane::traverse(const NormalizedEdge& n, int64_t Ymax) {
   // The traversal: dir - keeps u = ~v, so both directions add s and "entered" is u >= 0.
   int64_t u = n.dir_down ? n.T : -n.T1 - 1;
@@ -20,7 +26,7 @@ int64_t Improved2EdgeLane::traverse(const NormalizedEdge& n, int64_t Ymax) {
 Improved2LaneWork Improved2EdgeLane::from_traversal(const NormalizedEdge& n, int64_t Xmax,
                                                     int64_t Ymax, int64_t steps) {
   Improved2LaneWork w;
-  w.m = std::max(1, unsigned_bits(uint64_t(Xmax))) + 1;
+  w.m = std::max(1, bits_of(uint64_t(Xmax))) + 1;
   const int64_t j = steps;
   const int64_t u = (n.dir_down ? n.T : -n.T1 - 1) + j * n.s;  // the column value after T steps
   w.steps = j;
