@@ -1,42 +1,82 @@
 #!/bin/bash
-# Speed of the SystemC models (docs/sc-model.md): for the built-in benchmark scenes
-# (lowpoly-far, lowpoly-near, highpoly-far, highpoly-near, mixed), triangles per second and
-# simulated cycles per second of the improved unit's model, the traditional unit's model beside
-# it, and the Verilated RTL's time on the same scenes in the same run with the RTL/model wall-time
-# ratio (target: >= 20) and CPU-time ratio. Runs alternate model, trad, RTL, so that the load of a
-# shared machine hits all of them; each time is the best of its runs.
-# Usage: scripts/bench_sim.sh [--doc] [--unit improved|improved2] [--repeat R] [--rtl-repeat R] [scene ...]
-#   --doc  also rewrites the section "Model against RTL wall time" of docs/sc-model.md
-#          (the table of this run, the command and the date); with --unit improved2 the section
-#          "The second generation: model against RTL wall time" (improved2-sc, improved2-rtl)
-# Build directory: $TRIRAST_BUILD_DIR, default build/.
+# Speed of the SystemC models against the Verilated RTL (docs/sc-model.md), process CPU time.
+#
+#   scripts/bench_sim.sh [--doc] [--repeat R] [--rtl-repeat R] [scene ...]
+#     (default) every timed unit -- improved, improved2 in both corner forms (radix-16
+#     digit-serial, DSP products), trad, halfspace -- on each scene (default builtin
+#     highpoly-far and mixed): the SystemC model's and the RTL's cycles per CPU-second and the
+#     ratio model / RTL. Runs alternate model, RTL, model, ...; each time is the best of its
+#     runs (model 5, RTL 3). `uptime` is printed before and after (the machine's load).
+#   scripts/bench_sim.sh [--doc] --unit improved|improved2 [--repeat R] [--rtl-repeat R] [scene ...]
+#     one unit in detail on the five benchmark scenes (lowpoly-far, lowpoly-near, highpoly-far,
+#     highpoly-near, mixed): triangles per second and simulated cycles per wall-second of the
+#     model (and per CPU-second), the timed trad model beside it, the RTL's wall and CPU time and
+#     the RTL/model ratios.
+#   --doc  also rewrites the run's section of docs/sc-model.md (the table, the command, the date
+#          and the load): "Every unit: model and RTL cycles per CPU-second" (default),
+#          "Model against RTL wall time" (--unit improved), "The second generation: model
+#          against RTL wall time" (--unit improved2)
+#   -h, --help  this text
+# Build directory: $TRIRAST_BUILD_DIR, default build/ (configured and built here if needed: the
+# target trirast_sc_bench; its RTL engines need the Verilated models of that build).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${TRIRAST_BUILD_DIR:-$root/build}"
 doc=0
 args=()
-head="## Model against RTL wall time"
+head="## Every unit: model and RTL cycles per CPU-second"
+units=1
 prev=""
 for a in "$@"; do
-  if [ "$a" = --doc ]; then doc=1; else args+=("$a"); fi
+  case "$a" in
+    -h|--help) awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"; exit 0 ;;
+    --doc) doc=1 ;;
+    *) args+=("$a") ;;
+  esac
+  if [ "$a" = --unit ]; then units=0; head="## Model against RTL wall time"; fi
   [ "$prev" = --unit ] && [ "$a" = improved2 ] && head="## The second generation: model against RTL wall time"
   prev="$a"
 done
+[ "$units" = 1 ] && args=(--units ${args[@]+"${args[@]}"})
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
 cmake --build "$build" -j2 --target trirast_sc_bench >/dev/null
 export SYSTEMC_DISABLE_COPYRIGHT_MESSAGE=1
 if [ "$doc" = 0 ]; then
-  exec "$build/trirast_sc_bench" ${args[@]+"${args[@]}"}
+  echo "uptime before: $(uptime)"
+  status=0
+  "$build/trirast_sc_bench" ${args[@]+"${args[@]}"} || status=$?
+  echo "uptime after: $(uptime)"
+  exit "$status"
 fi
 
 md="$(mktemp)"
 trap 'rm -f "$md"' EXIT
+load_before="$(cut -d' ' -f1-3 /proc/loadavg)"
 "$build/trirast_sc_bench" ${args[@]+"${args[@]}"} --md "$md"
-cmd="scripts/bench_sim.sh --doc${args[*]:+ ${args[*]}}"
+load_after="$(cut -d' ' -f1-3 /proc/loadavg)"
+shown=("${args[@]}")
+[ "$units" = 1 ] && shown=("${args[@]:1}")
+cmd="scripts/bench_sim.sh --doc${shown[*]:+ ${shown[*]}}"
 section="$(mktemp)"
 trap 'rm -f "$md" "$section"' EXIT
+if [ "$units" = 1 ]; then
+{
+  echo "$head"
+  echo
+  echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores shared with other jobs; load"
+  echo "averages (1, 5, 15 min) $load_before before and $load_after after; Release build, 1024x768,"
+  echo "S=8, N=1, FIFO 8, sink always ready). For every timed unit, its SystemC model (\`UNIT-sc\`)"
+  echo "and its Verilated RTL (\`UNIT-rtl\`) on the same set-up scene in the same process,"
+  echo "alternating; each time is the best of its runs in process CPU time (model 5, RTL 3 unless"
+  echo "--repeat / --rtl-repeat say otherwise), so the ratio model / RTL holds under load better"
+  echo "than either speed. The RTL's cycles equal the model's (the bench checks it)."
+  echo
+  cat "$md"
+  echo
+} > "$section"
+else
 {
   echo "$head"
   echo
@@ -55,6 +95,7 @@ trap 'rm -f "$md" "$section"' EXIT
   cat "$md"
   echo
 } > "$section"
+fi
 /usr/bin/python3 - "$root/docs/sc-model.md" "$section" "$head" <<'EOF'
 import sys
 path, sec, head = sys.argv[1], open(sys.argv[2]).read(), sys.argv[3]

@@ -7,6 +7,10 @@
 // measured: on a shared machine the CPU-time ratio is the steadier of the two.
 // Usage: trirast_sc_bench [--unit improved|improved2] [--repeat R] [--rtl-repeat R] [--model-only]
 //                         [--md FILE] [scene ...]
+//        trirast_sc_bench --units [--repeat R] [--rtl-repeat R] [--md FILE] [scene ...]
+//        (--units: every timed unit -- improved, improved2 in both corner forms, trad, halfspace --
+//        its model's and its RTL's cycles per CPU-second and the ratio; default scenes
+//        highpoly-far and mixed)
 //        (default: the improved unit, the five seed-000 benchmark scenes, R = 5, RTL R = 3; --md
 //        also writes the table as Markdown, for docs/sc-model.md; --unit improved2: the
 //        second-generation unit's model improved2-sc and RTL improved2-rtl, the trad model beside)
@@ -60,11 +64,92 @@ void time_once(Engine& e, const SetupResult& setup, const RasterConfig& cfg, Tim
   ++t.runs;
 }
 
+// --units: for each unit (improved, improved2 in its radix-16 and DSP corner forms, trad,
+// halfspace) and scene, the SystemC model's and the Verilated RTL's cycles per CPU-second and
+// their ratio, runs alternating model, RTL, model, RTL, ...; each the best of its runs.
+int every_unit(const std::vector<std::string>& scenes, int repeat, int rtl_repeat,
+               const std::string& md_path) {
+  struct UnitRow {
+    const char* label;
+    const char* base;  // engines base-sc, base-rtl
+    int corner_form;   // improved2's corner form (1 radix-16 digit-serial, 0 DSP products)
+  };
+  const UnitRow units[] = {{"improved", "improved", 1},
+                           {"improved2 (radix-16)", "improved2", 1},
+                           {"improved2 (DSP)", "improved2", 0},
+                           {"trad", "trad", 1},
+                           {"halfspace", "halfspace", 1}};
+  std::printf("SystemC models against the Verilated RTL, every timed unit: cycles per CPU-second "
+              "(process CPU time), 1024x768, S=8, N=1, FIFO 8, sink ready; best of %d model and %d "
+              "RTL runs, alternating\n",
+              repeat, rtl_repeat);
+  std::printf("%-22s %-14s %9s %9s %11s %9s %11s %9s\n", "unit", "scene", "cycles", "model cpu",
+              "model cyc/s", "rtl cpu", "rtl cyc/s", "model/rtl");
+  std::ofstream md;
+  if (!md_path.empty()) {
+    md.open(md_path);
+    md << "| unit | scene | cycles | model CPU s | model cycles/CPU-s | RTL CPU s | RTL cycles/CPU-s | "
+          "model / RTL |\n|---|---|---:|---:|---:|---:|---:|---:|\n";
+  }
+  auto num = [](double v, const char* fmt) {
+    char b[64];
+    std::snprintf(b, sizeof b, fmt, v);
+    return std::string(b);
+  };
+  int status = 0;
+  for (const UnitRow& u : units) {
+    const EngineInfo* sc = find_engine(std::string(u.base) + "-sc");
+    const EngineInfo* rtl = find_engine(std::string(u.base) + "-rtl");
+    if (!sc) {
+      std::fprintf(stderr, "trirast_sc_bench: no engine %s-sc\n", u.base);
+      return 2;
+    }
+    for (const std::string& name : scenes) {
+      RasterConfig cfg;
+      cfg.improved2.corner_form = u.corner_form;
+      const Scene scene = make_builtin(name, cfg, CameraOptions{});
+      const SetupResult setup = setup_scene(scene.tris, cfg);
+      auto model = sc->make();
+      std::unique_ptr<Engine> r = rtl ? rtl->make() : nullptr;
+      Timing m, rt;
+      for (int i = 0; i < std::max(repeat, r ? rtl_repeat : 0); ++i) {
+        if (i < repeat) time_once(*model, setup, cfg, m);
+        if (r && i < rtl_repeat) time_once(*r, setup, cfg, rt);
+      }
+      if (r && rt.cycles != m.cycles) {
+        std::fprintf(stderr, "trirast_sc_bench: %s %s: rtl cycles %llu != model cycles %llu\n",
+                     u.label, name.c_str(), (unsigned long long)rt.cycles,
+                     (unsigned long long)m.cycles);
+        status = 1;
+      }
+      const double mc = double(m.cycles) / m.cpu * 1e-6;
+      std::printf("%-22s %-14s %9llu %9.4f %10.3gM", u.label, name.c_str(),
+                  (unsigned long long)m.cycles, m.cpu, mc);
+      if (r)
+        std::printf(" %9.4f %10.3gM %9.1f\n", rt.cpu, double(rt.cycles) / rt.cpu * 1e-6,
+                    rt.cpu / m.cpu);
+      else
+        std::printf(" %9s %11s %9s\n", "-", "-", "-");
+      std::fflush(stdout);
+      if (md.is_open()) {
+        md << "| " << u.label << " | " << name << " | " << m.cycles << " | " << num(m.cpu, "%.4f")
+           << " | " << num(mc, "%.3g M") << " | ";
+        if (r)
+          md << num(rt.cpu, "%.4f") << " | " << num(double(rt.cycles) / rt.cpu * 1e-6, "%.3g M")
+             << " | " << num(rt.cpu / m.cpu, "%.1f") << " |\n";
+        else
+          md << "- | - | - |\n";
+      }
+    }
+  }
+  return status;
+}
+
 }  // namespace
 
 int sc_main(int argc, char** argv) {
   int repeat = 5, rtl_repeat = 3;
-  bool model_only = false;
+  bool model_only = false, units = false;
   std::string md_path, unit = "improved";
   std::vector<std::string> scenes;
   for (int i = 1; i < argc; ++i) {
@@ -73,6 +158,8 @@ int sc_main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[++i]));
     else if (a == "--rtl-repeat" && i + 1 < argc)
       rtl_repeat = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--units")  // every timed unit, model and RTL cycles per CPU-second
+      units = true;
     else if (a == "--model-only")  // for profiling: no trad, no rtl
       model_only = true;
     else if (a == "--md" && i + 1 < argc)
@@ -85,6 +172,10 @@ int sc_main(int argc, char** argv) {
     } else
       scenes.push_back(a);
   }
+  if (units) {
+    if (scenes.empty()) scenes = {"highpoly-far", "mixed"};
+    return every_unit(scenes, repeat, rtl_repeat, md_path);
+  }
   if (scenes.empty())
     scenes = {"lowpoly-far", "lowpoly-near", "highpoly-far", "highpoly-near", "mixed"};
   if (unit != "improved" && unit != "improved2") {
@@ -96,8 +187,8 @@ int sc_main(int argc, char** argv) {
   std::printf("SystemC model speed (%s-sc), 1024x768, S=8, N=1, FIFO 8, sink ready; best of %d runs "
               "(RTL %d), runs alternating\n",
               unit.c_str(), repeat, rtl ? rtl_repeat : 0);
-  std::printf("%-14s %7s %9s %8s %9s %10s %8s %10s", "scene", "tris", "cycles", "model s",
-              "model tri/s", "model cyc/s", "trad s", "trad cyc/s");
+  std::printf("%-14s %7s %9s %8s %9s %10s %11s %8s %10s", "scene", "tris", "cycles", "model s",
+              "model tri/s", "model cyc/s", "cyc/cpu-s", "trad s", "trad cyc/s");
   if (rtl)
     std::printf(" %8s %10s %8s %10s %9s %8s", "rtl s", "rtl cyc/s", "rtl cpu", "cyc/cpu-s",
                 "rtl/model", "cpu ratio");
@@ -131,9 +222,9 @@ int sc_main(int argc, char** argv) {
       if (r && i < rtl_repeat) time_once(*r, setup, cfg, rt);
     }
     const double tris = double(setup.tris.size());
-    std::printf("%-14s %7zu %9llu %8.4f %9.3gM %9.3gM", name.c_str(), setup.tris.size(),
+    std::printf("%-14s %7zu %9llu %8.4f %9.3gM %9.3gM %10.3gM", name.c_str(), setup.tris.size(),
                 (unsigned long long)m.cycles, m.wall, tris / m.wall * 1e-6,
-                double(m.cycles) / m.wall * 1e-6);
+                double(m.cycles) / m.wall * 1e-6, double(m.cycles) / m.cpu * 1e-6);
     if (model_only)
       std::printf(" %8s %10s", "-", "-");
     else

@@ -48,22 +48,21 @@ int hs_edge_bits(const RasterConfig& cfg, int unit_side) {
   return bits + 1;  // magnitude bits + sign
 }
 
-namespace {
+// Out-of-line copies of the inline checks, for code compiled against the header's older,
+// non-inline declarations (the Verilated RTL models a build may take prebuilt from another tree,
+// TRIRAST_RTL_MODELS_FROM).
+[[maybe_unused]] __attribute__((used)) void (*const keep_check_signed)(int64_t, int, uint32_t,
+                                                                       const char*, const char*) =
+    &check_signed;
+[[maybe_unused]] __attribute__((used)) void (*const keep_check_unsigned)(int64_t, int, uint32_t,
+                                                                         const char*,
+                                                                         const char*) =
+    &check_unsigned;
 
-[[noreturn]] void throw_width(int64_t v, int bits, uint32_t tri, const char* name, const char* kind,
-                              const char* what) {
+void throw_width(int64_t v, int bits, uint32_t tri, const char* name, const char* kind,
+                 const char* what) {
   throw WidthError("triangle " + std::to_string(tri) + ": " + name + " = " + std::to_string(v) +
                    " does not fit " + std::to_string(bits) + "-bit " + kind + " " + what);
-}
-
-}  // namespace
-
-void check_signed(int64_t v, int bits, uint32_t tri, const char* name, const char* what) {
-  if (!fits_signed(v, bits)) throw_width(v, bits, tri, name, "signed", what);
-}
-
-void check_unsigned(int64_t v, int bits, uint32_t tri, const char* name, const char* what) {
-  if (!fits_unsigned(v, bits)) throw_width(v, bits, tri, name, "unsigned", what);
 }
 
 }  // namespace trirast

@@ -8,6 +8,12 @@
 
 namespace trirast {
 
+namespace {
+// unsigned_bits (fixed_point.hpp) without its loop: at least 1, else the position of the top bit
+// plus one.
+inline int bits_of(uint64_t v) { return v == 0 ? 1 : 64 - __builtin_clzll(v); }
+}  // namespace
+
 Improved2CornerUnit::Improved2CornerUnit(const RasterConfig& cfg) : cfg_(cfg) {}
 
 int64_t Improved2CornerUnit::corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const {
@@ -25,7 +31,7 @@ int Improved2CornerUnit::digits(const TriangleSetup& t, int64_t x0, int64_t y0) 
     const int64_t dy = pixel_centre(y0, cfg_) - t.v[v].y;
     any |= uint64_t(dx < 0 ? ~dx : dx) | uint64_t(dy < 0 ? ~dy : dy);
   }
-  const int bits = unsigned_bits(any) + 1;  // the sign bit
+  const int bits = bits_of(any) + 1;  // the sign bit
   return (bits + kDigitBits - 1) / kDigitBits;
 }
 

@@ -31,7 +31,16 @@ struct Improved2LaneWork {
 
 class Improved2EdgeLane {
  public:
+  // The lane's own traversal, then its cycles: traverse() + from_traversal().
   static Improved2LaneWork run(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax);
+  // The traversal's row steps T (Ymax + 1 when the edge never enters the box), one step per
+  // loop iteration as the lane takes them.
+  static int64_t traverse(const NormalizedEdge& n, int64_t Ymax);
+  // The lane's work and cycles given its traversal's row steps T (the column value after them is
+  // u0 + T*s, u0 the start value): Improved2Unit takes T from gen1's walker, which traverses the
+  // same rows, and compares it with traverse() when it cross-checks (Improved2Unit's check).
+  static Improved2LaneWork from_traversal(const NormalizedEdge& n, int64_t Xmax, int64_t Ymax,
+                                          int64_t steps);
 };
 
 }  // namespace trirast

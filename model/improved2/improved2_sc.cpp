@@ -1,6 +1,8 @@
 #include "improved2/improved2_sc.hpp"
 
 #include <algorithm>
+#include <cstdlib>
+#include <string>
 
 #include "common/sc_engine.hpp"
 #include "improved2/improved2_unit.hpp"
@@ -25,7 +27,10 @@ void Improved2UnitSc::begin_stream() {
   RunState& r = state_;
   sink.begin_run(&r);
   fifo.begin_run(&r, r.trace ? add_trace(*r.trace) : SpanTraceSignals{});
-  unit_ = std::make_unique<Improved2Unit>(r.cfg);
+  // The per-triangle cross-check of the gen2 parts against gen1's (Improved2Unit) runs in the
+  // untimed improved2-datapath engine and here only on request: TRIRAST_IMPROVED2_CHECK=1.
+  const char* check = std::getenv("TRIRAST_IMPROVED2_CHECK");
+  unit_ = std::make_unique<Improved2Unit>(r.cfg, check && std::string(check) == "1");
   corner_stage.configure(r.cfg.improved2.corner_form);
   box_stage.counters = {};
   job_stage.counters = {};
@@ -161,21 +166,22 @@ void Improved2UnitSc::trace_job(VcdRecorder& tr, uint32_t tag, uint64_t a, uint6
     }
 }
 
-uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t h,
-                               TriangleCycles& rec, VcdRecorder* tr) {
+uint64_t Improved2UnitSc::walk(const TriangleSetup& tri, Improved2Triangle& x, size_t pos,
+                               uint64_t h, TriangleCycles& rec, VcdRecorder* tr) {
   if (tr) {
     tr->value(sig_.w_state, h + 1, x.tiny ? kWalkTiny : kWalkLanes);
     tr->value(sig_.w_tri, h + 1, rec.tri);
   }
-  // Groups of N rows (--endpoints): rows g*N .. g*N + N - 1 of x.rows (a prefix of rows 0, 1, ...)
-  // go in one cycle and their spans are pushed together.
-  const int64_t N = int64_t(state_.cfg.endpoints);
+  // Groups of N rows (--endpoints): rows g*N .. g*N + N - 1 (of a tiny job's x.rows, or of a lane
+  // job's rows 0 .. Ymax, which the unit's walkers produce one by one) go in one cycle and their
+  // spans are pushed together.
+  const uint64_t N = uint64_t(state_.cfg.endpoints);
+  const uint64_t n_rows = x.tiny ? uint64_t(x.rows.size()) : uint64_t(x.box.Ymax) + 1;
   uint64_t t = h + 1, last = h, groups = 0;
-  for (size_t i = 0; i < x.rows.size();) {
+  for (uint64_t i = 0; i < n_rows;) {
     // The admission test: the FIFO's entries plus the spans in flight (pushed in cycle t, which
     // the FIFO model already holds) leave room for N more.
-    const int64_t group = x.rows[i].row / N;
-    const uint64_t go = fifo.first_room(t, uint64_t(N));
+    const uint64_t go = fifo.first_room(t, N);
     rec.stall_cycles += go - t;
     bool pushed = false;
     if (tr) {
@@ -183,13 +189,15 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
         tr->value(sig_.w_stall, t, 1);
         tr->value(sig_.w_stall, go, 0);
       }
-      tr->value(sig_.w_row, go, uint64_t(group * N));
+      tr->value(sig_.w_row, go, i);  // the group's first row, g*N
     }
-    for (; i < x.rows.size() && x.rows[i].row / N == group; ++i)
-      if (x.rows[i].valid) {
-        fifo.push(x.rows[i].span, pos, go + 1);  // registered, pushed in go + 1
+    for (const uint64_t end = std::min(i + N, n_rows); i < end; ++i) {
+      const Improved2Row row = x.tiny ? x.rows[i] : unit_->walk_row(tri, x, int64_t(i));
+      if (row.valid) {
+        fifo.push(row.span, pos, go + 1);  // registered, pushed in go + 1
         pushed = true;
       }
+    }
     if (tr && pushed) {
       tr->value(sig_.w_push, go + 1, 1);
       tr->value(sig_.w_push, go + 2, 0);  // overridden by the next group's push in go + 2
@@ -205,7 +213,7 @@ uint64_t Improved2UnitSc::walk(const Improved2Triangle& x, size_t pos, uint64_t 
   }
   walk_stage.counters.busy += groups;
   walk_stage.counters.stall += rec.stall_cycles;
-  rows_ += x.rows.size();
+  rows_ += n_rows;
   return last;
 }
 
@@ -216,7 +224,7 @@ uint64_t Improved2UnitSc::accept(const TriangleSetup& t, size_t pos, uint64_t a)
   r.records.push_back(TriangleCycles{t.index, a, 0, 0, 0, 0, 0});
   TriangleCycles& rec = r.tri(pos);
   rec.setup_start_cycle = a + 1;
-  unit_->run_triangle(t, x_);
+  unit_->set_up(t, x_);  // the walk stage runs the lane job's rows (walk)
   // The trace: past the window's last cycle every report would be dropped (the recorder keeps
   // the window), so the process stops reporting there.
   VcdRecorder* tr = r.trace && a <= r.trace->window_last() ? r.trace : nullptr;
@@ -266,7 +274,7 @@ uint64_t Improved2UnitSc::accept(const TriangleSetup& t, size_t pos, uint64_t a)
     rec.setup_done_cycle = ready;
     rec.handoff_cycle = h;
     rec.walk_start_cycle = h + 1;
-    const uint64_t last = walk(x_, pos, h, rec, tr);
+    const uint64_t last = walk(t, x_, pos, h, rec, tr);
     rec.walk_end_cycle = last;
     // A job without spans retires in its last walk cycle.
     if (rec.spans == 0) rec.first_span_cycle = rec.done_cycle = last;

@@ -126,10 +126,11 @@ class Improved2UnitSc : public RasterUnitSc {
   void add_counters(std::map<std::string, uint64_t>& work) const override;
 
  private:
-  // Walks job x (setup position pos) loaded in h; returns its last row's cycle. Reports the walk
-  // stage's signals to tr when not null.
-  uint64_t walk(const Improved2Triangle& x, size_t pos, uint64_t h, TriangleCycles& rec,
-                VcdRecorder* tr);
+  // Walks job x of triangle tri (setup position pos) loaded in h; returns its last row's cycle.
+  // A lane job's rows come from the unit's walkers (Improved2Unit::walk_row) as they go.
+  // Reports the walk stage's signals to tr when not null.
+  uint64_t walk(const TriangleSetup& tri, Improved2Triangle& x, size_t pos, uint64_t h,
+                TriangleCycles& rec, VcdRecorder* tr);
   // Declares the unit's trace signals (scopes box_stage .. walk_stage, then span, span_fifo,
   // span_sink); returns the span port's handles for the FIFO.
   SpanTraceSignals add_trace(VcdRecorder& tr);

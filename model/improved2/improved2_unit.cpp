@@ -23,27 +23,31 @@ const RasterConfig& checked(const RasterConfig& cfg) {
 }
 }  // namespace
 
-Improved2Unit::Improved2Unit(const RasterConfig& cfg)
+Improved2Unit::Improved2Unit(const RasterConfig& cfg, bool cross_check)
     : cfg_(gen2_config(checked(cfg))),
+      cross_check_(cross_check),
       box_stage_(cfg_),
       corner_(cfg_),
       normalizer_(cfg_),
       divider_(cfg_),
       walker_{{cfg_, divider_}, {cfg_, divider_}, {cfg_, divider_}} {}
 
-void Improved2Unit::run_triangle(const TriangleSetup& t, Improved2Triangle& r) {
+void Improved2Unit::set_up(const TriangleSetup& t, Improved2Triangle& r) {
   r.rows.clear();
   r.tiny = false;
   r.corner_digits_l = r.corner_digits_r = 0;
   r.lane_cycles = 0;
   r.spans = r.pixels = r.rows_stepped = 0;
   for (Improved2LaneWork& l : r.lane) l = Improved2LaneWork{};
-  // B: the box (gen1's interface computes the same one; its E_L, E_R check the corner stage's).
-  const BoxStageOut gen1 = box_stage_.run(t);
-  r.box = gen1;
-  if (gen1.empty) return;
-  // C: vertex-relative corner values; the digit-serial unit's run lengths.
-  corner_.run(t, r.box, gen1);
+  // B: the box (gen1's interface computes the same one, E_L and E_R included).
+  r.box = box_stage_.run(t);
+  if (r.box.empty) return;
+  // C: vertex-relative corner values (checked against the box stage's, which r.box holds); the
+  // digit-serial unit's run lengths.
+  if (cross_check_) {
+    const BoxStageOut gen1 = r.box;
+    corner_.run(t, r.box, gen1);
+  }
   const BoxStageOut& b = r.box;
   r.corner_digits_l = corner_.digits(t, b.x0, b.y0);
   r.tiny = Improved2DirectTest2x2::takes(b);
@@ -64,32 +68,44 @@ void Improved2Unit::run_triangle(const TriangleSetup& t, Improved2Triangle& r) {
     return;
   }
   r.corner_digits_r = corner_.digits(t, b.x0 + b.Xmax, b.y0);
-  // L: three lanes (gen1's normalizer and walker registers; the gen2 lane's cycles).
-  NormalizedEdge norm[3];
+  // L: three lanes (gen1's normalizer and walker registers; the gen2 lane's cycles from the
+  // traversal's steps, which the walker takes as the lane does).
   for (int k = 0; k < 3; ++k) {
-    norm[k] = normalizer_.run(b.edge[k], b.Xmax, t.index);
-    walker_[k].start(norm[k], b.Xmax, b.Ymax, t.index);
-    r.lane[k] = Improved2EdgeLane::run(norm[k], b.Xmax, b.Ymax);
-    if (uint64_t(r.lane[k].steps) != walker_[k].work().boundary_steps ||
-        r.lane[k].enters != walker_[k].state().enters)
-      throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " + std::to_string(k) +
-                             ": the gen2 lane's traversal differs from gen1's");
+    norm_[k] = normalizer_.run(b.edge[k], b.Xmax, t.index);
+    walker_[k].start(norm_[k], b.Xmax, b.Ymax, t.index);
+    const int64_t steps = int64_t(walker_[k].work().boundary_steps);
+    if (cross_check_) {
+      const int64_t own = Improved2EdgeLane::traverse(norm_[k], b.Ymax);
+      if (own != steps || (own <= b.Ymax) != walker_[k].state().enters)
+        throw std::logic_error("triangle " + std::to_string(t.index) + ": edge " +
+                               std::to_string(k) +
+                               ": the gen2 lane's traversal differs from gen1's");
+    }
+    r.lane[k] = Improved2EdgeLane::from_traversal(norm_[k], b.Xmax, b.Ymax, steps);
     r.lane_cycles = std::max(r.lane_cycles, r.lane[k].cycles);
   }
-  // W: one row per step, the three walkers in lock step.
-  for (int64_t j = 0; j <= b.Ymax; ++j) {
-    const WalkerRow bound[3] = {walker_[0].row(), walker_[1].row(), walker_[2].row()};
-    const SpanGenOut g = ImprovedSpanGenerator::row(norm, bound, b.Xmax);
-    Improved2Row row{j, g.valid, Span{}};
-    if (g.valid) {
-      row.span = ImprovedSpanGenerator::to_span(g, t.index, b.x0, b.y0, j);
-      ++r.spans;
-      r.pixels += uint64_t(g.end - g.begin);
-    }
-    r.rows.push_back(row);
-    if (j < b.Ymax)
-      for (ImprovedEdgeWalker& w : walker_) w.advance();
+}
+
+Improved2Row Improved2Unit::walk_row(const TriangleSetup& t, Improved2Triangle& r, int64_t j) {
+  const BoxStageOut& b = r.box;
+  const WalkerRow bound[3] = {walker_[0].row(), walker_[1].row(), walker_[2].row()};
+  const SpanGenOut g = ImprovedSpanGenerator::row(norm_, bound, b.Xmax);
+  Improved2Row row{j, g.valid, Span{}};
+  if (g.valid) {
+    row.span = ImprovedSpanGenerator::to_span(g, t.index, b.x0, b.y0, j);
+    ++r.spans;
+    r.pixels += uint64_t(g.end - g.begin);
   }
+  if (j < b.Ymax)
+    for (ImprovedEdgeWalker& w : walker_) w.advance();
+  return row;
+}
+
+void Improved2Unit::run_triangle(const TriangleSetup& t, Improved2Triangle& r) {
+  set_up(t, r);
+  if (r.box.empty || r.tiny) return;
+  // W: one row per step, the three walkers in lock step.
+  for (int64_t j = 0; j <= r.box.Ymax; ++j) r.rows.push_back(walk_row(t, r, j));
   for (const ImprovedEdgeWalker& w : walker_) r.rows_stepped += w.work().rows_stepped;
 }
 

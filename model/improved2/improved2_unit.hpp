@@ -52,9 +52,23 @@ struct Improved2Triangle {
 class Improved2Unit {
  public:
   // Throws WidthError when the configuration's widths exceed what the 64-bit model holds.
-  explicit Improved2Unit(const RasterConfig& cfg);
-  // Runs one set-up triangle through the stages into r (r.rows reused between calls).
+  // cross_check: per triangle, compare the gen2 parts with gen1's, which compute the same values
+  // (std::logic_error on a difference, a model bug): the corner stage's E_L, E_R with the box
+  // stage's, and each lane's own traversal (Improved2EdgeLane::traverse) with gen1's walker's
+  // steps and entry. Without it the lanes' cycles take the walker's steps
+  // (Improved2EdgeLane::from_traversal) and the corner values are the box stage's: the same
+  // results whenever the check would pass. The untimed engine improved2-datapath (and so
+  // test_improved2_unit's scenes) runs with it; the SystemC model improved2-sc without it
+  // unless TRIRAST_IMPROVED2_CHECK=1 is set in the environment (improved2_sc.cpp).
+  explicit Improved2Unit(const RasterConfig& cfg, bool cross_check = true);
+  // Runs one set-up triangle through the stages into r (r.rows reused between calls):
+  // set_up(), then every walk_row() of a lane job into r.rows, and r.rows_stepped.
   void run_triangle(const TriangleSetup& t, Improved2Triangle& r);
+  // B, C and L (or T: a tiny job's rows into r.rows; a lane job's r.rows is left empty).
+  void set_up(const TriangleSetup& t, Improved2Triangle& r);
+  // Row j of the lane job set up last (j = 0, 1, .., Ymax, in order): the span generator on the
+  // walkers' rows, which then step to row j + 1; counts r.spans and r.pixels.
+  Improved2Row walk_row(const TriangleSetup& t, Improved2Triangle& r, int64_t j);
 
   Improved2Unit(const Improved2Unit&) = delete;  // the walkers hold a reference to the divider
   Improved2Unit& operator=(const Improved2Unit&) = delete;
@@ -64,6 +78,8 @@ class Improved2Unit {
 
  private:
   RasterConfig cfg_;
+  bool cross_check_;
+  NormalizedEdge norm_[3];
   BoxStage box_stage_;
   Improved2CornerUnit corner_;
   ImprovedEdgeNormalizer normalizer_;

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -97,6 +98,46 @@ TEST(ScImproved2, EmptyBoxRetiresInTheBoxStage) {
     EXPECT_EQ(r.cycles[i].spans, 0u);
   }
   EXPECT_EQ(r.total_cycles, 4u);
+}
+
+// TRIRAST_IMPROVED2_CHECK=1 turns on the unit's cross-check of the gen2 parts against gen1's
+// (Improved2Unit's cross_check; improved2-datapath always runs it): the run must not throw and
+// must give the same spans, per-triangle cycles, total and work counters as the normal run, at
+// N = 1 and 4 (with a stalling sink and a 4-entry FIFO) in both corner forms.
+TEST(ScImproved2, CrossCheckOnRequestChangesNothing) {
+  for (int form : {0, 1})
+    for (int n : {1, 4}) {
+      RasterConfig cfg;
+      cfg.improved2.corner_form = form;
+      cfg.endpoints = n;
+      if (n == 4) {
+        cfg.sink_stall = "random:7:30";
+        cfg.fifo_depth = 4;
+      }
+      const SetupResult setup = builtin_setup("mixed", cfg);
+      const EngineResult plain = run_model(setup, cfg);
+      ASSERT_EQ(setenv("TRIRAST_IMPROVED2_CHECK", "1", 1), 0);
+      EngineResult checked;
+      EXPECT_NO_THROW(checked = run_model(setup, cfg)) << "form " << form << " N " << n;
+      unsetenv("TRIRAST_IMPROVED2_CHECK");
+      EXPECT_TRUE(plain.spans == checked.spans);
+      EXPECT_EQ(plain.total_cycles, checked.total_cycles);
+      // Every counter but the run's own speed (sim_wall_microseconds, sim_cycles_per_second).
+      auto counters = [](std::map<std::string, uint64_t> w) {
+        w.erase("sim_wall_microseconds");
+        w.erase("sim_cycles_per_second");
+        return w;
+      };
+      EXPECT_EQ(counters(plain.work), counters(checked.work));
+      EXPECT_GT(plain.work.at("lane_boxes"), 1000u);
+      ASSERT_EQ(plain.cycles.size(), checked.cycles.size());
+      EXPECT_GT(plain.cycles.size(), 10000u);
+      for (size_t i = 0; i < plain.cycles.size(); ++i) {
+        EXPECT_EQ(plain.cycles[i].done_cycle, checked.cycles[i].done_cycle) << i;
+        EXPECT_EQ(plain.cycles[i].setup_done_cycle, checked.cycles[i].setup_done_cycle) << i;
+        EXPECT_EQ(plain.cycles[i].divider_iterations, checked.cycles[i].divider_iterations) << i;
+      }
+    }
 }
 
 // The walk stage's N rule: a job walks one cycle per group of N rows besides its stall cycles,
