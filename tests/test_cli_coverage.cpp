@@ -41,7 +41,7 @@ void summary(const std::string& text, long long& hit, long long& total, long lon
 // the zigzag build and stays 0 on the row build, and both reports list every point with its count.
 TEST(CliCoverage, RasterReportsEveryPointOfTheRun) {
   TempDir dir;
-  const std::string scene = " --scene builtin:mixed:objects=2:tess=8 --width 128 --height 96";
+  const std::string scene = " --scene builtin:mixed:objects=2,tess=8 --width 320 --height 240";
   const CommandResult zig = run_command(kBin + " raster --engine halfspace-rtl" + scene +
                                         " --stamp 2 --tile 8 --hs-walk zigzag --coverage " +
                                         dir.file("zig.md"));

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <mutex>
 #include <sstream>
+#include <utility>
 #include <stdexcept>
 
 namespace trirast::rtl {
@@ -61,6 +62,10 @@ std::map<std::string, uint64_t> parse_coverage_dat(const std::string& text, cons
     const size_t dut = hier.find("u_dut");
     if (dut != std::string::npos) hier = hier.substr(dut + 5);
     if (!hier.empty() && hier[0] == '.') hier = hier.substr(1);
+    // Verilator spells a generate block's index brackets __BRA__, __KET__ in some names.
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"__BRA__", "["}, {"__KET__", "]"}})
+      for (size_t at = hier.find(from); at != std::string::npos; at = hier.find(from, at))
+        hier.replace(at, from.size(), to);
     const std::string label = kv.count("o") ? kv["o"] : "";
     if (label.empty()) throw bad("a user cover point without a label ('o')");
     // Verilator's 'h' is the point's full name (its scope and label); the label once otherwise.

@@ -179,10 +179,12 @@ TEST(RtlCoverage, ParseNamesPointsBelowTheUnitTop) {
   // Verilator's form: 'h' ends in the label; other pages (line, toggle coverage) are left out.
   const auto p = rtl::parse_coverage_dat(
       "C '\001t\002user\001page\002v_user/m\001h\002t.top_sim.u_dut.u_a.Q_C\001o\002Q_C' 3\n"
-      "C '\001page\002v_line/m\001h\002t.top_sim.u_dut.u_a\001o\002L' 9\n",
+      "C '\001page\002v_line/m\001h\002t.top_sim.u_dut.u_a\001o\002L' 9\n"
+      "C '\001page\002v_user/m\001h\002t.top_sim.u_dut.g__BRA__*__KET__.R_C\001o\002R_C' 4\n",
       "t");
-  ASSERT_EQ(p.size(), 1u);
+  ASSERT_EQ(p.size(), 2u);
   EXPECT_EQ(p.at("u_a.Q_C"), 3u);
+  EXPECT_EQ(p.at("g[*].R_C"), 4u);
 }
 
 TEST(RtlCoverage, ParseRejectsAMalformedLineNamingIt) {
