@@ -325,4 +325,6 @@ ${_list_improved2}  });
 }  // namespace trirast::rtl
 ")
   target_sources(${A_TARGET} PRIVATE ${_gen}/rtl_builds_list.cpp)
+  # The cover points' counts, which the cycle loop (tb/common/cycle_loop.hpp) adds after each run.
+  target_sources(${A_TARGET} PRIVATE ${A_ROOT}/tb/common/rtl_coverage.cpp)
 endfunction()
