@@ -41,6 +41,13 @@ set(TRIRAST_RTL_WIDTH_CONFIGS default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:
 # (scripts/demo.sh's, when build/ is new) and refuses other widths with the build it lacks.
 option(TRIRAST_RTL_EXTRA_WIDTHS "Verilate the non-default width configurations too" ON)
 
+# TRIRAST_RTL_COVERAGE (ON by default): the cover points of rtl/ (`COVER, trirast_assert.svh) in
+# every Verilated build: Verilator --coverage-user with TRIRAST_COVERAGE defined, and VM_COVERAGE=1
+# for the harnesses, which read each run's counts from the model's coverage database
+# (tb/common/rtl_coverage.hpp; `trirast raster|fuzz --coverage FILE`, docs/coverage.md). OFF
+# builds the models without them (simulation speed: docs/coverage.md) and --coverage is refused.
+option(TRIRAST_RTL_COVERAGE "Cover points in the Verilated builds (--coverage-user)" ON)
+
 function(trirast_rtl_build_specs out_var endpoints depth)
   set(_extra_widths small wide tiny)
   if(NOT TRIRAST_RTL_EXTRA_WIDTHS)
@@ -87,8 +94,16 @@ function(trirast_add_rtl_builds)
   endif()
   # What verilate(... TRACE_FST) defines for the models' own sources, for every source that
   # includes their headers (the harness).
+  # VM_COVERAGE follows TRIRAST_RTL_COVERAGE (verilate() defines it from --coverage-user).
+  if(TRIRAST_RTL_COVERAGE)
+    set(_vm_coverage 1)
+    set(_coverage_args --coverage-user +define+TRIRAST_COVERAGE)
+  else()
+    set(_vm_coverage 0)
+    set(_coverage_args)
+  endif()
   target_compile_definitions(${A_MODELS_TARGET} INTERFACE
-    VM_COVERAGE=0 VM_SC=0 VM_TRACE=1 VM_TRACE_VCD=0 VM_TRACE_FST=1)
+    VM_COVERAGE=${_vm_coverage} VM_SC=0 VM_TRACE=1 VM_TRACE_VCD=0 VM_TRACE_FST=1)
   find_package(Python3 REQUIRED COMPONENTS Interpreter)
   set(_gen ${A_GEN_DIR})
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${A_ROOT}/scripts/gen_params.py)
@@ -219,6 +234,7 @@ function(trirast_add_rtl_builds)
     # (trirast_assert.svh) run, and a failing one stops the model with its name.
     # --x-initial/--x-assign unique: X values are random from the seed the harness sets
     # (RtlRunOptions::x_seed, TRIRAST_RTL_SEED; reported as work "rtl_x_seed").
+    # --coverage-user +define+TRIRAST_COVERAGE (TRIRAST_RTL_COVERAGE): the cover points.
     if(A_PREBUILT)
       set(_vdir ${A_PREBUILT}/CMakeFiles/${A_MODELS_TARGET}.dir/${_prefix}.dir)
       if(NOT EXISTS ${_vdir}/${_prefix}.h)
@@ -232,7 +248,8 @@ function(trirast_add_rtl_builds)
         TOP_MODULE ${_top}_sim
         SOURCES ${_sources} ${_gen}/${_top}_sim.sv
         INCLUDE_DIRS ${A_INCLUDE_DIR}
-        VERILATOR_ARGS -Wall --assert --x-initial unique --x-assign unique ${_params}
+        VERILATOR_ARGS -Wall --assert --x-initial unique --x-assign unique ${_coverage_args}
+                       ${_params}
         OPT_SLOW -O1
         OPT_FAST -O2
         OPT_GLOBAL -O2)
@@ -308,4 +325,6 @@ ${_list_improved2}  });
 }  // namespace trirast::rtl
 ")
   target_sources(${A_TARGET} PRIVATE ${_gen}/rtl_builds_list.cpp)
+  # The cover points' counts, which the cycle loop (tb/common/cycle_loop.hpp) adds after each run.
+  target_sources(${A_TARGET} PRIVATE ${A_ROOT}/tb/common/rtl_coverage.cpp)
 endfunction()

@@ -130,7 +130,7 @@ TEST(FuzzRegressions, ReproducerFormatReadsBackBitForBit) {
 TEST(FuzzGenerator, ConfigurationsAreValidAndCoverEveryParameter) {
   RngDraws d(1);
   std::set<int> s_values, endpoints, box_bits;
-  std::set<std::string> modes, culls, sinks;
+  std::set<std::string> modes, dividers, culls, sinks;
   int big = 0, tiny = 0, narrow = 0;
   for (int i = 0; i < 5000; ++i) {
     const RasterConfig cfg = draw_fuzz_config(d);
@@ -141,6 +141,7 @@ TEST(FuzzGenerator, ConfigurationsAreValidAndCoverEveryParameter) {
     endpoints.insert(cfg.endpoints);
     box_bits.insert(cfg.box_bits);
     modes.insert(boundary_mode_name(cfg.boundary));
+    dividers.insert(divider_mode_name(cfg.divider));
     culls.insert(cull_mode_name(cfg.cull));
     sinks.insert(cfg.sink_stall.substr(0, cfg.sink_stall.find(':')));
     big += std::max(cfg.width, cfg.height) == kMaxViewport;
@@ -151,6 +152,7 @@ TEST(FuzzGenerator, ConfigurationsAreValidAndCoverEveryParameter) {
   EXPECT_EQ(endpoints.size(), 3u);
   EXPECT_GE(box_bits.size(), 10u);
   EXPECT_EQ(modes.size(), 2u);
+  EXPECT_EQ(dividers.size(), 2u);
   EXPECT_EQ(culls.size(), 3u);
   // none, periodic, random (and queue when the fuzzer draws reacting downstreams).
   EXPECT_EQ(sinks.size(), kFuzzDrawsQueueDownstreams ? 4u : 3u);

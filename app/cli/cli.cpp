@@ -326,6 +326,8 @@ int cmd_raster(int argc, char** argv) {
                    "a unit's -rtl or -sc engine: write the testbench kit's stimulus and expected "
                    "spans and cycles into DIR (tb/kit, docs/port.md)",
                    ""});
+  specs.push_back({"--coverage", "FILE",
+                   "RTL engines: every cover point of the unit with its count (docs/coverage.md)", ""});
   add_diag_options(specs, false);
   Args a("raster", "--scene SCENE [--engine NAME] [options]", specs);
   a.parse(argc, argv, 2);
@@ -364,6 +366,7 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
   if (a.has("--vectors")) check_kit_vectors(info.name, cfg, a.get("--vectors"));
+  if (a.has("--coverage")) check_coverage_option(a.get("--coverage"), {info.name}, "raster");
   const DiagOptions diag = diag_options_from(a, false);
 
   auto t0 = Clock::now();
@@ -371,7 +374,7 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--trace-tris"))
     check_trace_window(cfg.trace_first, cfg.trace_last, ls.scene.tris.size(), "raster");
   OutputStamps stamps;  // what was at the output paths before this run
-  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
+  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace", "--coverage"})
     if (a.has(opt)) stamps.note(a.get(opt));
   if (a.has("--trace")) stamps.note(gtkw_path(a.get("--trace")));
   const GoldenOptions golden_options = golden_options_from(a);
@@ -399,6 +402,11 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--vectors"))
     write_kit_vectors(a.get("--vectors"), info.name, a.get("--scene"), ls.setup, cfg, run.result,
                       output_order);
+  std::string coverage_summary;
+  if (a.has("--coverage"))
+    coverage_summary = write_coverage_report(a.get("--coverage"), {info.name},
+                                             "trirast raster --engine " + info.name + " --scene " +
+                                                 a.get("--scene"));
   if (a.has("--image"))
     write_png(coverage_image(run.result.spans, cfg.width, cfg.height), a.get("--image"), "--image");
   if (!diag.heatmap_path.empty()) {
@@ -459,8 +467,9 @@ int cmd_raster(int argc, char** argv) {
   }
   std::printf("  time       %.3f s (load %.3f, setup %.3f, engine %.3f)\n", seconds_since(t0),
               ls.load_seconds, ls.setup_seconds, run.seconds);
+  if (!coverage_summary.empty()) std::printf("  %s\n", coverage_summary.c_str());
   // Only files this run wrote: a stale save file from an earlier run is not reported.
-  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace"})
+  for (const char* opt : {"--spans", "--image", "--report", "--cycles", "--trace", "--coverage"})
     if (a.has(opt) && stamps.written(a.get(opt)))
       std::printf("  wrote      %s (%s)\n", a.get(opt).c_str(), opt + 2);
   if (!diag.heatmap_path.empty())

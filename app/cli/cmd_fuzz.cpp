@@ -16,6 +16,7 @@
 
 #include "cli/args.hpp"
 #include "cli/commands.hpp"
+#include "cli/option_checks.hpp"
 #include "common/engine.hpp"
 #include "engines.hpp"
 #include "fuzz/fuzz_scene.hpp"
@@ -143,6 +144,10 @@ int cmd_fuzz(int argc, char** argv) {
              {"--scenes", "N", "stop after N scenes (0: no limit)", "0"},
              {"--max-triangles", "N", "largest scene, in triangles", "400"},
              {"--max-reproducers", "N", "write at most N reproducers (the count goes on)", "20"},
+             {"--coverage", "FILE",
+              "write the RTL engines' cover points with their counts over the whole run "
+              "(docs/coverage.md)",
+              ""},
              {"--inject-fault", "ENGINE",
               "self-test: ENGINE drops one pixel per scene, so the checker must report it", ""},
              {"--calibrate", "", "measure the --engines' cost constants (the schedule's table), print them, exit", ""},
@@ -235,6 +240,7 @@ int cmd_fuzz(int argc, char** argv) {
     return out_dir + "/fuzz-" + std::to_string(seed) + "-" + std::to_string(scene) + ".tri";
   };
   check_output_path(repro_path(0), "--out");
+  if (a.has("--coverage")) check_coverage_option(a.get("--coverage"), names, "fuzz");
 
   std::string engine_list;
   for (const std::string& n : names) engine_list += (engine_list.empty() ? "" : ",") + n;
@@ -460,6 +466,14 @@ int cmd_fuzz(int argc, char** argv) {
     if (skips[i])
       std::printf("  skipped    %s: %llu of %llu scenes had a configuration its build does not cover\n",
                   names[i].c_str(), (unsigned long long)skips[i], (unsigned long long)scenes);
+  if (a.has("--coverage")) {
+    const std::string summary = write_coverage_report(
+        a.get("--coverage"), names,
+        "trirast fuzz --seed " + std::to_string(seed) + " (" + std::to_string(scenes) + " scenes, " +
+            std::to_string(triangles) + " triangles, " + std::to_string(long(total)) + " s)");
+    std::printf("%s\n", summary.c_str());
+    std::printf("  wrote      %s (coverage)\n", a.get("--coverage").c_str());
+  }
   std::printf("  result     %llu disagreements%s\n", (unsigned long long)disagreements,
               disagreements ? (", " + std::to_string(written) + " reproducers in " + out_dir).c_str()
                             : "");

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "cli/args.hpp"
+#include "common/rtl_coverage.hpp"
 #include "io/output_file.hpp"
 #include "units.hpp"
 
@@ -69,6 +70,44 @@ void check_trace_window(int64_t first, int64_t last, uint64_t triangles, const s
                      std::to_string(last) + " holds no triangle: the scene has " +
                      std::to_string(triangles) + " (indices 0.." +
                      (triangles ? std::to_string(triangles - 1) : std::string("none")) + ")");
+}
+
+namespace {
+bool is_rtl_engine(const std::string& engine) {
+  const EngineDescriptor* d = find_engine_descriptor(engine);
+  return d && d->rtl_builds;
+}
+}  // namespace
+
+void check_coverage_option(const std::string& path, const std::vector<std::string>& engines,
+                           const std::string& cmd) {
+  std::string rtl;  // every RTL engine, for the message
+  for (const EngineDescriptor& d : engine_descriptors())
+    if (d.rtl_builds) rtl += (rtl.empty() ? "" : ", ") + d.info.name;
+  if (std::none_of(engines.begin(), engines.end(), is_rtl_engine)) {
+    std::string names;
+    for (const std::string& e : engines) names += (names.empty() ? "'" : ", '") + e + "'";
+    throw UsageError("trirast " + cmd + ": --coverage: engine " + names +
+                     " has no cover points (it applies to the RTL engines: " + rtl + ")");
+  }
+  if (!rtl::rtl_coverage_built())
+    throw UsageError("trirast " + cmd + ": --coverage: this build's Verilated models have no cover "
+                     "points (configured with -DTRIRAST_RTL_COVERAGE=OFF)");
+  check_output_path(path, "--coverage");
+  rtl::reset_rtl_coverage();
+}
+
+std::string write_coverage_report(const std::string& path, const std::vector<std::string>& engines,
+                                  const std::string& title) {
+  std::vector<std::string> rtl_engines;
+  for (const std::string& e : engines)
+    if (is_rtl_engine(e)) rtl_engines.push_back(e);
+  uint64_t hit = 0, total = 0;
+  const std::string report = rtl::rtl_coverage_report(rtl_engines, title, hit, total);
+  OutputFile out(path, "--coverage");
+  out.write(report);
+  out.commit();
+  return "coverage: " + std::to_string(hit) + " of " + std::to_string(total) + " cover points hit";
 }
 
 OutputStamps::Stamp OutputStamps::stamp(const std::string& path) {

@@ -38,6 +38,17 @@ void check_png_path(const std::string& path, const std::string& cmd, const std::
 // holds no triangle of a scene of `triangles` triangles.
 void check_trace_window(int64_t first, int64_t last, uint64_t triangles, const std::string& cmd);
 
+// --coverage FILE (docs/coverage.md): the cover points of the RTL engines among `engines` (a view
+// with Verilated builds, units.hpp). Refuses it when none of them is an RTL engine, or when the
+// build has no cover points (TRIRAST_RTL_COVERAGE=OFF), and an unwritable FILE; clears the counts
+// collected so far.
+void check_coverage_option(const std::string& path, const std::vector<std::string>& engines,
+                           const std::string& cmd);
+// Writes the report of the RTL engines among `engines` to `path`; returns its summary line
+// "coverage: H of T cover points hit".
+std::string write_coverage_report(const std::string& path, const std::vector<std::string>& engines,
+                                  const std::string& title);
+
 // What was at each output path before a run: a path counts as written by the run when it exists
 // afterwards and did not before, or is another file now (writers rename a new file over it).
 class OutputStamps {

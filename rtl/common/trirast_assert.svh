@@ -131,3 +131,28 @@
 `endif
 
 `endif  // TRIRAST_ASSERT_SVH
+
+// Cover points (functional coverage, docs/coverage.md), beside the logic they watch:
+//
+//   `COVER(Name, Prop, Clk, Rst)         counts the rising edges of Clk at which Prop holds
+//                                        while Rst is 0 (a `cover property`)
+//
+// Simulation-only and switchable: they exist only under Verilator with TRIRAST_COVERAGE defined
+// (the Verilated builds of cmake/trirast_rtl_builds.cmake, which also pass --coverage-user, so the
+// counts land in the model's coverage database); every other tool and build sees nothing.
+`ifndef TRIRAST_COVER_SVH
+`define TRIRAST_COVER_SVH
+`ifdef VERILATOR
+`ifdef TRIRAST_COVERAGE
+`define TRIRAST_COVERAGE_ON
+`endif
+`endif
+`ifdef TRIRAST_COVERAGE_ON
+`define COVER(__name, __prop, __clk, __rst)                                     \
+  /* verilator lint_off SYNCASYNCNET */                                          \
+  __name: cover property (@(posedge __clk) disable iff (__rst) (__prop));        \
+  /* verilator lint_on SYNCASYNCNET */
+`else
+`define COVER(__name, __prop, __clk, __rst)
+`endif
+`endif  // TRIRAST_COVER_SVH

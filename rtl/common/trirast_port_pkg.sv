@@ -29,7 +29,8 @@
 // vertices, to check a port triangle against its vertices).
 // Simulation only: a synthesis tool (which defines SYNTHESIS) reads nothing of it (Yosys 0.23
 // also refuses one package's names in another's parameters).
-`ifndef SYNTHESIS
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+`ifndef FORMAL
 
 package trirast_port_pkg;
 
@@ -141,4 +142,5 @@ package trirast_port_pkg;
 
 endpackage
 
+`endif  // FORMAL
 `endif  // SYNTHESIS

@@ -101,4 +101,10 @@ module trirast_span_fifo #(
   `ASSERT(FifoCountInRange_A, 32'(count_q) <= FifoDepth, clk_i, !rst_ni)
   `ASSERT_INIT(FifoDepthPow2_A, FifoDepth >= 1 && (FifoDepth & (FifoDepth - 1)) == 0)
 
+  // Cover points (docs/coverage.md): empty, full (FifoDepth entries: reachable when the run's
+  // DEPTH is the build's), and a pop in two cycles in a row.
+  `COVER(SpanFifoEmpty_C, count_q == '0, clk_i, !rst_ni)
+  `COVER(SpanFifoFull_C, 32'(count_q) == FifoDepth, clk_i, !rst_ni)
+  `COVER(SpanFifoPopBackToBack_C, pop && $past(pop), clk_i, !rst_ni)
+
 endmodule

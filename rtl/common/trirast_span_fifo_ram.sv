@@ -12,6 +12,7 @@
 // word at its address only when that address is the head of an empty FIFO in t: not shown. The
 // written slot is free: the push in t has room, so the FIFO holds fewer than FifoDepth entries
 // then, and the tail is not the head of a non-empty FIFO.)
+`include "trirast_assert.svh"
 module trirast_span_fifo_ram #(
   parameter int FifoDepth = 8,     // entries (a power of two)
   parameter int EntryBits = 8,     // bits of one span
@@ -76,5 +77,11 @@ module trirast_span_fifo_ram #(
     assign f_mem_o[k*EntryBits +: EntryBits] = mem[k];
   end
 `endif
+
+  // Cover points (docs/coverage.md), as trirast_span_fifo's: empty, full (FifoDepth entries), and
+  // a pop in two cycles in a row.
+  `COVER(SpanFifoEmpty_C, count_q == '0, clk_i, !rst_ni)
+  `COVER(SpanFifoFull_C, 32'(count_q) == FifoDepth, clk_i, !rst_ni)
+  `COVER(SpanFifoPopBackToBack_C, pop && $past(pop), clk_i, !rst_ni)
 
 endmodule

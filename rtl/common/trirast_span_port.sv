@@ -66,4 +66,9 @@ module trirast_span_port #(
   `ASSERT_KNOWN(FifoCountKnown_A, count_o, clk_i, !rst_ni)
   `ASSERT_KNOWN_IF(SpanDataKnown_A, span_valid_o, head, clk_i, !rst_ni)
 
+  // Cover points (docs/coverage.md): a span waiting (valid, not ready), and ready low for two
+  // cycles or more in a row (the downstream's back-pressure).
+  `COVER(SpanPortStall_C, span_valid_o && !span_ready_i, clk_i, !rst_ni)
+  `COVER(SpanReadyLow2_C, !span_ready_i && !$past(span_ready_i), clk_i, !rst_ni)
+
 endmodule

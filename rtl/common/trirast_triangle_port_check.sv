@@ -21,7 +21,8 @@
 // The arithmetic is trirast_port_pkg's, the same a testbench forms its triangles with.
 // Simulation only: a synthesis tool (which defines SYNTHESIS) reads nothing of it (Yosys 0.23
 // also refuses one package's names in another's parameters).
-`ifndef SYNTHESIS
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+`ifndef FORMAL
 
 `include "trirast_assert.svh"
 
@@ -114,4 +115,5 @@ module trirast_triangle_port_check #(
 
 endmodule
 
+`endif  // FORMAL
 `endif  // SYNTHESIS

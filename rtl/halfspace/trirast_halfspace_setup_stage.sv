@@ -113,4 +113,17 @@ module trirast_halfspace_setup_stage #(
   `ASSERT_NEXT(HalfspaceHandHeld_A, hand_valid_o && !hand_ready_i,
           hand_valid_o && $stable(hand_tag_o), clk_i, !rst_ni)
   `ASSERT_KNOWN(HalfspaceHandValidKnown_A, {tri_ready_o, hand_valid_o, box_retire_o}, clk_i, !rst_ni)
+  // Cover points (docs/coverage.md): every state; the empty box retired in StBox; the triangle
+  // port waiting, taking a triangle, and taking the next one as early as the FSM allows (an empty
+  // box: StIdle -> StBox -> StIdle, two cycles after the previous accept).
+  `COVER(SetupStIdle_C, state_q == StIdle, clk_i, !rst_ni)
+  `COVER(SetupStBox_C, state_q == StBox, clk_i, !rst_ni)
+  `COVER(SetupStEdge_C, state_q == StEdge, clk_i, !rst_ni)
+  `COVER(SetupStHold_C, state_q == StHold, clk_i, !rst_ni)
+  `COVER(SetupEmptyBoxRetired_C, box_retire_o, clk_i, !rst_ni)
+  `COVER(SetupHoldWaitsForWalk_C, hand_valid_o && !hand_ready_i, clk_i, !rst_ni)
+  `COVER(TriAccept_C, accept, clk_i, !rst_ni)
+  `COVER(TriPortStall_C, tri_valid_i && !tri_ready_o, clk_i, !rst_ni)
+  `COVER(TriAcceptBackToBack_C, accept && $past(accept, 2), clk_i, !rst_ni)
+
 endmodule

@@ -314,4 +314,21 @@ module trirast_halfspace_tile_walker #(
   `ASSERT_IMPLIES(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o, state_q == WIdle, clk_i,
           !rst_ni)
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)
+  // Cover points (docs/coverage.md): every state and the walk's cases: a unit (tile or stamp)
+  // rejected (outside an edge), accepted whole (inside all three: tiles only), partial (stamps
+  // walked: tiles only); a band ended early (zigzag: a rejected unit after a covered one), a band
+  // walked right to left (zigzag), a band's hand-off waiting for the emitter, and a triangle
+  // retired without a span.
+  `COVER(WalkWIdle_C, state_q == WIdle, clk_i, !rst_ni)
+  `COVER(WalkWUnit_C, state_q == WUnit, clk_i, !rst_ni)
+  `COVER(WalkWStamp_C, state_q == WStamp, clk_i, !rst_ni)
+  `COVER(WalkWWait_C, state_q == WWait, clk_i, !rst_ni)
+  `COVER(WalkWDrain_C, state_q == WDrain, clk_i, !rst_ni)
+  `COVER(WalkUnitRejected_C, state_q == WUnit && reject, clk_i, !rst_ni)
+  `COVER(WalkUnitAccepted_C, state_q == WUnit && accept, clk_i, !rst_ni)
+  `COVER(WalkUnitPartial_C, state_q == WUnit && !reject && !accept && Tiles, clk_i, !rst_ni)
+  `COVER(WalkBandEndEarly_C, band_end && !last_unit, clk_i, !rst_ni)
+  `COVER(WalkBandBackward_C, state_q == WUnit && back_q, clk_i, !rst_ni)
+  `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)
+
 endmodule

@@ -134,11 +134,13 @@ module trirast_halfspace_top #(
   `ASSERT_NEXT(TriValidHeld_A, tri_valid_i && !tri_ready_o, tri_valid_i, clk_i, !rst_ni)
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"), simulation only.
-`ifndef SYNTHESIS
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+`ifndef FORMAL
   trirast_triangle_port_check #(.HasEdges (1'b1), .ReadsC (1'b1), .HasBox (1'b1)) u_port_check (
     .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
     .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
     .tri_a_i (tri_a_i), .tri_b_i (tri_b_i), .tri_c_i (tri_c_i), .tri_bias_i (tri_bias_i));
-`endif
+`endif  // FORMAL
+`endif  // SYNTHESIS
 
 endmodule

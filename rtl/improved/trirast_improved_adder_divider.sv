@@ -9,6 +9,7 @@
 // model's compare n >> m >= d without a second shifter.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_improved_adder_divider (
   input  logic                               clk_i,
   input  logic                               rst_ni,
@@ -96,5 +97,14 @@ module trirast_improved_adder_divider (
   always_ff @(posedge clk_i) begin
     {rem_q, shift_q, quot_q, bits_q} <= {rem_d, shift_d, quot_d, bits_d};
   end
+
+  // Cover points (docs/coverage.md): divisions by their iteration count m (at the last
+  // iteration), in buckets up to the longest, m = Q (fixed mode, or adaptive with a box of
+  // 2^(Q-1) or more pixels).
+  `COVER(DivLen2to4_C, last && bits_in <= IterBits'(4), clk_i, !rst_ni)
+  `COVER(DivLen5to8_C, last && bits_in >= IterBits'(5) && bits_in <= IterBits'(8), clk_i, !rst_ni)
+  `COVER(DivLen9toQm1_C, last && bits_in >= IterBits'(9) && bits_in < IterBits'(QuotBits), clk_i,
+         !rst_ni)
+  `COVER(DivLenQ_C, last && bits_in == IterBits'(QuotBits), clk_i, !rst_ni)
 
 endmodule

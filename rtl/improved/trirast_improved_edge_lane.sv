@@ -7,6 +7,7 @@
 // Its result registers are what the walk stage loads at the hand-off.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_improved_edge_lane (
   input  logic                                 clk_i,
   input  logic                                 rst_ni,
@@ -232,5 +233,20 @@ module trirast_improved_edge_lane (
   assign entry_state_o = horiz_q ? (dir_q ? RowClear : RowOut) : est_q;
   assign entry_x_o  = ex_q;
   assign entry_e_o  = ee_q;
+
+  // Cover points (docs/coverage.md): the phase worked in this cycle (cur), each boundary step
+  // kind (a column step down or up the box; an entry-row division, saturated: never enters), the
+  // saturated slope and entry-x divisions, and a horizontal edge (no slope division).
+  `COVER(LanePhSlope_C, cur == PhSlope, clk_i, !rst_ni)
+  `COVER(LanePhTrav_C, cur == PhTrav, clk_i, !rst_ni)
+  `COVER(LanePhEntry_C, cur == PhEntry, clk_i, !rst_ni)
+  `COVER(LanePhDone_C, cur == PhDone, clk_i, !rst_ni)
+  `COVER(LaneStepDown_C, cur == PhTrav && !divide_i && dir_q, clk_i, !rst_ni)
+  `COVER(LaneStepUp_C, cur == PhTrav && !divide_i && !dir_q, clk_i, !rst_ni)
+  `COVER(LaneEntryRowDivided_C, cur == PhTrav && divide_i && div_last && !div_sat, clk_i, !rst_ni)
+  `COVER(LaneEntryRowSaturated_C, cur == PhTrav && divide_i && div_last && div_sat, clk_i, !rst_ni)
+  `COVER(LaneSlopeSaturated_C, cur == PhSlope && div_last && div_sat, clk_i, !rst_ni)
+  `COVER(LaneEntryXSaturated_C, cur == PhEntry && div_last && div_sat, clk_i, !rst_ni)
+  `COVER(LaneHorizontalEdge_C, load_i && horiz_i, clk_i, !rst_ni)
 
 endmodule

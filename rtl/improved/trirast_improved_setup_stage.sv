@@ -176,4 +176,18 @@ module trirast_improved_setup_stage (
   `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StBox || state_q == StEdge ||
           state_q == StLanes || state_q == StHold, clk_i, !rst_ni)
 
+  // Cover points (docs/coverage.md): every state; the empty box retired in StBox; the triangle
+  // port waiting (valid, not ready), taking a triangle, and taking the next one as early as the
+  // FSM allows (an empty box: StIdle -> StBox -> StIdle, two cycles after the previous accept).
+  `COVER(SetupStIdle_C, state_q == StIdle, clk_i, !rst_ni)
+  `COVER(SetupStBox_C, state_q == StBox, clk_i, !rst_ni)
+  `COVER(SetupStEdge_C, state_q == StEdge, clk_i, !rst_ni)
+  `COVER(SetupStLanes_C, state_q == StLanes, clk_i, !rst_ni)
+  `COVER(SetupStHold_C, state_q == StHold, clk_i, !rst_ni)
+  `COVER(SetupEmptyBoxRetired_C, box_retire_o, clk_i, !rst_ni)
+  `COVER(SetupHoldWaitsForWalk_C, hand_valid_o && !hand_ready_i, clk_i, !rst_ni)
+  `COVER(TriAccept_C, accept, clk_i, !rst_ni)
+  `COVER(TriPortStall_C, tri_valid_i && !tri_ready_o, clk_i, !rst_ni)
+  `COVER(TriAcceptBackToBack_C, accept && $past(accept, 2), clk_i, !rst_ni)
+
 endmodule

@@ -4,6 +4,7 @@
 // when the FIFO held at most DEPTH - n spans at the start of the cycle, else it stalls.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_improved_walk_stage #(
   parameter int NumEndpoints = 1,
   parameter int CountBits = 4,      // bits of the FIFO occupancy and of the runtime depth
@@ -163,5 +164,18 @@ module trirast_improved_walk_stage #(
   assign stall_o      = (state_q == StWalk) && !room;
   assign tag_o        = tag_q;
   assign row_o        = row_q;
+
+  // Cover points (docs/coverage.md): both states, a stall (no room for a group in the FIFO), a
+  // triangle retired without a span, and what each edge says about the group's first row
+  // (out, bound, clear) while it goes.
+  `COVER(WalkStWalkIdle_C, state_q == StWalkIdle, clk_i, !rst_ni)
+  `COVER(WalkStWalk_C, state_q == StWalk, clk_i, !rst_ni)
+  `COVER(WalkStall_C, stall_o, clk_i, !rst_ni)
+  `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)
+  for (genvar k = 0; k < 3; k++) begin : g_cover_edge
+    `COVER(WalkRowOut_C, go && wst[k][1:0] == RowOut, clk_i, !rst_ni)
+    `COVER(WalkRowBound_C, go && wst[k][1:0] == RowBound, clk_i, !rst_ni)
+    `COVER(WalkRowClear_C, go && wst[k][1:0] == RowClear, clk_i, !rst_ni)
+  end
 
 endmodule

@@ -37,6 +37,7 @@
 // (a saturated division stops after 2 of its m + P iterations). gen1: T, T + 2m, T + m.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_improved2_edge_lane #(
   parameter int FixedM = 0,  // 0: m from m_i (adaptive divider); else m = FixedM (fixed divider)
   // 1: every division starts with a pre-iteration that tests R_0 = n >> m against D through the
@@ -297,5 +298,26 @@ module trirast_improved2_edge_lane #(
   // (E's, kept in elo_q), the complement flag without the pre-iteration.
   logic unused;
   assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl, xsum[0], tsum[0], rdsum[0]};
+
+  // Cover points (docs/coverage.md): every operation state; each boundary step kind (a row step
+  // of a column value growing or falling down the box); divisions started (slope or entry x) by
+  // their iteration count m, in buckets up to the longest (m = Q); the saturated slope and
+  // entry-x divisions (they stop after two cycles); a horizontal edge (no slope division).
+  `COVER(LaneOpSlopeSet_C, op_q == OpSlopeSet, clk_i, !rst_ni)
+  `COVER(LaneOpSlope_C, op_q == OpSlope, clk_i, !rst_ni)
+  `COVER(LaneOpWait_C, op_q == OpWait, clk_i, !rst_ni)
+  `COVER(LaneOpEntry_C, op_q == OpEntry, clk_i, !rst_ni)
+  `COVER(LaneOpDone_C, op_q == OpDone, clk_i, !rst_ni)
+  `COVER(LaneStepDown_C, step_o && dir_q, clk_i, !rst_ni)
+  `COVER(LaneStepUp_C, step_o && !dir_q, clk_i, !rst_ni)
+  `COVER(DivLen2to4_C, (op_q == OpSlopeSet || set_entry) && m <= IB'(4), clk_i, !rst_ni)
+  `COVER(DivLen5to8_C, (op_q == OpSlopeSet || set_entry) && m >= IB'(5) && m <= IB'(8), clk_i,
+         !rst_ni)
+  `COVER(DivLen9toQm1_C, (op_q == OpSlopeSet || set_entry) && m >= IB'(9) && m < IB'(QB), clk_i,
+         !rst_ni)
+  `COVER(DivLenQ_C, (op_q == OpSlopeSet || set_entry) && m == IB'(QB), clk_i, !rst_ni)
+  `COVER(LaneSlopeSaturated_C, op_q == OpSlope && last && sat_q, clk_i, !rst_ni)
+  `COVER(LaneEntryXSaturated_C, op_q == OpEntry && last && sat_q, clk_i, !rst_ni)
+  `COVER(LaneHorizontalEdge_C, load_i && horiz_n, clk_i, !rst_ni)
 
 endmodule

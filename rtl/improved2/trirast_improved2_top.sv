@@ -344,6 +344,9 @@ module trirast_improved2_top #(
     `ASSERT_IMPLIES(CRamReadLate_A, UseCRam && $past(b_take), !(c_full_q && c_ready) && !start2_q,
             clk_i, !rst_ni)
     assign c_ready = done && (second_q || c_tiny);
+    // Cover points (docs/coverage.md): run 1 (E_L at x0) and run 2 (a lane job's E_R) under way.
+    `COVER(CornerRun1_C, run_q && busy && !second_q, clk_i, !rst_ni)
+    `COVER(CornerRun2_C, run_q && (busy || start2_q) && second_q, clk_i, !rst_ni)
   end
 
   // The direct 2x2 test (box-relative: x0 = y0 = 0). TestHi: E_L + A*u (u = 2^F) >= 0 exactly
@@ -523,11 +526,35 @@ module trirast_improved2_top #(
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"; C is not read here, so
   // not checked), simulation only.
-`ifndef SYNTHESIS
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+`ifndef FORMAL
   trirast_triangle_port_check #(.HasEdges (1'b1), .ReadsC (1'b0), .HasBox (1'b1)) u_port_check (
     .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
     .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
     .tri_a_i (tri_a_i), .tri_b_i (tri_b_i), .tri_c_i (tri_c_i), .tri_bias_i (tri_bias_i));
-`endif
+`endif  // FORMAL
+`endif  // SYNTHESIS
+  // Cover points (docs/coverage.md). The triangle port: waiting, taking a triangle, taking one in
+  // two cycles in a row (the box stage passes or retires its triangle in the cycle it takes the
+  // next). The box stage (B): an empty box retired, a box waiting for the corner stage. The
+  // corner stage (C): a tiny box (at most 2 x 2) moving to L
+  // with its 2x2 direct test, a lane job moving to L, a finished triangle waiting for L. The job
+  // stage (L): a lane job waiting for its lanes, a job waiting for the walk stage. (The serial
+  // corner form's runs: in g_msb.)
+  `COVER(TriAccept_C, tri_valid_i && tri_ready_o, clk_i, !rst_ni)
+  `COVER(TriPortStall_C, tri_valid_i && !tri_ready_o, clk_i, !rst_ni)
+  `COVER(TriAcceptBackToBack_C, tri_valid_i && tri_ready_o && $past(tri_valid_i && tri_ready_o),
+         clk_i, !rst_ni)
+  `COVER(BoxEmptyRetired_C, b_retire, clk_i, !rst_ni)
+  `COVER(BoxWaitsForCorner_C, box_stall_o, clk_i, !rst_ni)
+  `COVER(CornerTinyToJob_C, c_move && c_tiny, clk_i, !rst_ni)
+  `COVER(CornerLaneJobToJob_C, c_move && !c_tiny, clk_i, !rst_ni)
+  `COVER(CornerWaitsForJob_C, c_full_q && c_ready && !l_free, clk_i, !rst_ni)
+  `COVER(JobWaitsForLanes_C, l_full_q && !hand_valid, clk_i, !rst_ni)
+  `COVER(JobWaitsForWalk_C, hand_valid && !hand_ready, clk_i, !rst_ni)
+  // The span port (its FIFO is the walk stage's): a span waiting (valid, not ready), and ready
+  // low for two cycles or more in a row.
+  `COVER(SpanPortStall_C, span_valid_o && !span_ready_i, clk_i, !rst_ni)
+  `COVER(SpanReadyLow2_C, !span_ready_i && !$past(span_ready_i), clk_i, !rst_ni)
 
 endmodule

@@ -27,6 +27,7 @@
 // and read from then on instead of being copied at the load.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_improved2_walk_stage #(
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,
   parameter bit FifoRam   = 1'b0,
@@ -275,5 +276,15 @@ module trirast_improved2_walk_stage #(
   assign hand_ready_o = !walk_q;
   // A job walks, or its last spans are in the push register.
   assign busy_o = walk_q || (push_q != '0);
+
+  // Cover points (docs/coverage.md): both states (idle, walking), a stall (no room in the FIFO),
+  // a tiny job walked (its rows from the 2x2 test), with a span in its second row, and a job
+  // retired without a span.
+  `COVER(WalkIdle_C, !walk_q, clk_i, !rst_ni)
+  `COVER(WalkWalk_C, walk_q, clk_i, !rst_ni)
+  `COVER(WalkStall_C, stall_o, clk_i, !rst_ni)
+  `COVER(WalkTinyJob_C, load && hand_tiny_i, clk_i, !rst_ni)
+  `COVER(WalkTinyJobRow1Span_C, load && hand_tiny_i && hand_tiny_valid_i[1], clk_i, !rst_ni)
+  `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)
 
 endmodule

@@ -130,4 +130,17 @@ module trirast_trad_setup_stage (
   `ASSERT(SetupStateLegal_A, state_q == StIdle || state_q == StSort || state_q == StLine ||
           state_q == StHold, clk_i, !rst_ni)
 
+  // Cover points (docs/coverage.md): every state; collinear integer vertices retired in StSort;
+  // the triangle port waiting, taking a triangle, and taking the next one as early as the FSM
+  // allows (collinear: StIdle -> StSort -> StIdle, two cycles after the previous accept).
+  `COVER(SetupStIdle_C, state_q == StIdle, clk_i, !rst_ni)
+  `COVER(SetupStSort_C, state_q == StSort, clk_i, !rst_ni)
+  `COVER(SetupStLine_C, state_q == StLine, clk_i, !rst_ni)
+  `COVER(SetupStHold_C, state_q == StHold, clk_i, !rst_ni)
+  `COVER(SetupCollinearRetired_C, retire_o, clk_i, !rst_ni)
+  `COVER(SetupHoldWaitsForWalk_C, hand_valid_o && !hand_ready_i, clk_i, !rst_ni)
+  `COVER(TriAccept_C, accept, clk_i, !rst_ni)
+  `COVER(TriPortStall_C, tri_valid_i && !tri_ready_o, clk_i, !rst_ni)
+  `COVER(TriAcceptBackToBack_C, accept && $past(accept, 2), clk_i, !rst_ni)
+
 endmodule

@@ -101,11 +101,13 @@ module trirast_trad_top #(
 
   // The triangle port's preconditions (docs/port.md, "Preconditions"; the vertices only: this
   // port has no edge functions and the unit no box), simulation only.
-`ifndef SYNTHESIS
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+`ifndef FORMAL
   trirast_triangle_port_check #(.HasEdges (1'b0), .ReadsC (1'b0), .HasBox (1'b0)) u_port_check (
     .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
     .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
     .tri_a_i ('0), .tri_b_i ('0), .tri_c_i ('0), .tri_bias_i ('0));
-`endif
+`endif  // FORMAL
+`endif  // SYNTHESIS
 
 endmodule

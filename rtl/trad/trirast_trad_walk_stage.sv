@@ -8,6 +8,7 @@
 // So row y takes max(1, s_long(y), s_short(y)) cycles.
 `include "trirast_ports.svh"
 
+`include "trirast_assert.svh"
 module trirast_trad_walk_stage #(
   parameter int CountBits = 4,  // bits of the FIFO occupancy and of the runtime depth
   parameter int EntryBits = 8,  // bits of one FIFO entry {tag, y, x_begin, x_end}
@@ -217,5 +218,15 @@ module trirast_trad_walk_stage #(
   // walker's last step needs no action, its line ends with the triangle's last row.)
   logic unused_p2x;
   assign unused_p2x = ^hand_px_i[2*CoordIntBits +: CoordIntBits];
+
+  // Cover points (docs/coverage.md): both states, a stall (no room in the FIFO), each walker
+  // stepping, the short walker's switch to p1 -> p2, and a triangle retired without a span.
+  `COVER(WalkStWalkIdle_C, state_q == StWalkIdle, clk_i, !rst_ni)
+  `COVER(WalkStWalk_C, state_q == StWalk, clk_i, !rst_ni)
+  `COVER(WalkStall_C, stall, clk_i, !rst_ni)
+  `COVER(WalkLongStep_C, long_step, clk_i, !rst_ni)
+  `COVER(WalkShortStep_C, short_step, clk_i, !rst_ni)
+  `COVER(WalkShortSwitch_C, short_switch, clk_i, !rst_ni)
+  `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)
 
 endmodule

@@ -51,6 +51,7 @@
 #include "common/span_downstream.hpp"
 #include "common/harness_util.hpp"
 #include "common/rtl_gtkw.hpp"
+#include "common/rtl_coverage.hpp"
 
 namespace trirast {
 namespace rtl {
@@ -353,6 +354,8 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   out.work["busy_cycles.span_fifo"] += mods.busy[kModSpanFifo];
   out.work["busy_cycles.span_sink"] += mods.busy[kModSpanSink];
   out.work["stall_cycles.span_sink"] += mods.stall[kModSpanSink];
+  // The cover points' counts of this run (common/rtl_coverage.hpp; none in a build without them).
+  collect_rtl_coverage(who, *ctx);
   return counts;
 }
 

@@ -133,6 +133,10 @@ RasterConfig draw_fuzz_config(FuzzDraws& d, const std::vector<FuzzWidths>& width
   } else {
     cfg.sink_stall = "random:" + std::to_string(d.below(1000)) + ":" + std::to_string(d.range(0, 90));
   }
+  // The divider's iterations: adaptive (bits the box needs) or fixed (Q = box_bits + 1 on every
+  // division: the longest, which adaptive reaches only on boxes of 2^(Q-2) pixels or more; the
+  // RTL's cover point DivLenQ_C, docs/coverage.md).
+  cfg.divider = d.chance(30) ? DividerMode::Fixed : DividerMode::Adaptive;
   cfg.validate();
   return cfg;
 }
@@ -432,7 +436,8 @@ std::string config_options(const RasterConfig& cfg) {
   return "--width " + std::to_string(cfg.width) + " --height " + std::to_string(cfg.height) +
          " --subpixel-bits " + std::to_string(cfg.subpixel_bits) + " --coord-bits " +
          std::to_string(cfg.coord_int_bits) + " --box-bits " + std::to_string(cfg.box_bits) +
-         " --boundary " + boundary_mode_name(cfg.boundary) + " --cull " + cull_mode_name(cfg.cull) +
+         " --boundary " + boundary_mode_name(cfg.boundary) + " --divider " +
+         divider_mode_name(cfg.divider) + " --cull " + cull_mode_name(cfg.cull) +
          " --endpoints " + std::to_string(cfg.endpoints) + " --fifo-depth " +
          std::to_string(cfg.fifo_depth) + " --sink-stall " + cfg.sink_stall + hs_options(cfg);
 }
@@ -485,6 +490,7 @@ RasterConfig parse_config_options(const std::string& options) {
     else if (key == "--coord-bits") cfg.coord_int_bits = to_int(key, value);
     else if (key == "--box-bits") cfg.box_bits = to_int(key, value);
     else if (key == "--boundary") cfg.boundary = parse_boundary_mode(value);
+    else if (key == "--divider") cfg.divider = parse_divider_mode(value);
     else if (key == "--cull") cfg.cull = parse_cull_mode(value);
     else if (key == "--endpoints") cfg.endpoints = to_int(key, value);
     else if (key == "--fifo-depth") cfg.fifo_depth = to_int(key, value);
