@@ -478,7 +478,8 @@ TEST(ScImproved2, TraceShowsTheCornerRuns) {
   EXPECT_EQ(r.cycles[0].setup_done_cycle, run[3].first + 1 + L);
 }
 
-// --trace-tris: the trace starts at the window's first accept and holds the values the run has
+// --trace-tris: the trace starts in the cycle the window's first triangle is on the port (the
+// cycle after its predecessor's accept, as the RTL's trace does), holds the values the run has
 // there (a triangle already in the unit), and ends by the window's last done.
 TEST(ScImproved2, TraceWindow) {
   RasterConfig cfg;
@@ -489,24 +490,28 @@ TEST(ScImproved2, TraceWindow) {
   cfg.trace_last = 3099;
   const EngineResult r = run_model(setup, cfg);
   EXPECT_EQ(r.total_cycles, plain.total_cycles);
-  uint64_t lo = ~uint64_t(0), hi = 0;
-  for (const TriangleCycles& c : r.cycles)
+  uint64_t lo = ~uint64_t(0), acc = ~uint64_t(0), hi = 0;
+  size_t pos = r.cycles.size();  // the window's first triangle (setup order)
+  for (size_t i = 0; i < r.cycles.size(); ++i) {
+    const TriangleCycles& c = r.cycles[i];
     if (c.tri >= 3000 && c.tri <= 3099) {
-      lo = std::min(lo, c.accept_cycle);
+      if (pos == r.cycles.size()) pos = i;
       hi = std::max(hi, c.done_cycle);
     }
+  }
+  ASSERT_GT(pos, 0u);
+  ASSERT_LT(pos, r.cycles.size());
+  lo = r.cycles[pos - 1].accept_cycle + 1;  // on the port from here
+  acc = r.cycles[pos].accept_cycle;
   ASSERT_LT(lo, hi);
   const Vcd v = read_vcd(cfg.trace_path);
   EXPECT_EQ(v.first_time, lo);
   EXPECT_LE(v.last_time, hi + 1);
-  // The values at the window's first cycle are the run's: the triangle accepted there is the
+  // The values in the window's first accept are the run's: the triangle accepted there is the
   // port's, and the box stage still holds the one before it (it leaves B in that cycle).
-  EXPECT_EQ(value_at(v, "box_stage.tri_accept", lo), "1");
-  size_t pos = 0;
-  while (r.cycles[pos].accept_cycle != lo) ++pos;
-  ASSERT_GT(pos, 0u);
-  EXPECT_EQ(value_at(v, "box_stage.tri", lo), vcd_bin(r.cycles[pos - 1].tri));
-  EXPECT_EQ(value_at(v, "box_stage.busy", lo), "1");
+  EXPECT_EQ(value_at(v, "box_stage.tri_accept", acc), "1");
+  EXPECT_EQ(value_at(v, "box_stage.tri", acc), vcd_bin(r.cycles[pos - 1].tri));
+  EXPECT_EQ(value_at(v, "box_stage.busy", acc), "1");
   size_t checked = 0;
   for (const TriangleCycles& c : r.cycles)
     if (c.tri >= 3000 && c.tri <= 3099 && c.spans) {
