@@ -50,9 +50,9 @@ module trirast_triangle_port_check #(
   localparam int PB = trirast_pkg::PixBits;
   localparam int AB = trirast_port_pkg::AreaBits;
 
-  // Every check is an implication from the take (ASSERT_IMPLIES): the products and extents are
-  // in functions called inside the assertions, not continuous assignments on the port, so the
-  // simulation evaluates them only in the cycle a triangle is taken.
+  // Every check is evaluated in the cycle a triangle is taken and only then (ASSERT_IF: an
+  // immediate assertion in a clocked block): the products and extents are in functions called
+  // inside the assertions, not continuous assignments on the port.
   logic take;
   assign take = tri_valid_i && tri_ready_i;
 
@@ -85,27 +85,27 @@ module trirast_triangle_port_check #(
                     ext_y[AB-1:0] < (AB'(1) << trirast_pkg::BoxBits));
   endfunction
 
-  `ASSERT_IMPLIES(TriNonDegenerate_A, take, area2(tri_vx_i, tri_vy_i) != '0, clk_i, !rst_ni)
-  `ASSERT_IMPLIES(TriOrientation_A, take, area2(tri_vx_i, tri_vy_i) >= 0, clk_i, !rst_ni)
+  `ASSERT_IF(TriNonDegenerate_A, take, area2(tri_vx_i, tri_vy_i) != '0, clk_i, !rst_ni)
+  `ASSERT_IF(TriOrientation_A, take, area2(tri_vx_i, tri_vy_i) >= 0, clk_i, !rst_ni)
   if (HasEdges) begin : g_edges
-    `ASSERT_IMPLIES(TriEdgesFromVertices_A, take,
+    `ASSERT_IF(TriEdgesFromVertices_A, take,
                tri_a_i == trirast_port_pkg::edge_a(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
-    `ASSERT_IMPLIES(TriEdgesFromVertices_B, take,
+    `ASSERT_IF(TriEdgesFromVertices_B, take,
                tri_b_i == trirast_port_pkg::edge_b(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
-    `ASSERT_IMPLIES(TriEdgesFromVertices_Bias, take,
+    `ASSERT_IF(TriEdgesFromVertices_Bias, take,
                tri_bias_i == trirast_port_pkg::edge_bias(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
     if (ReadsC) begin : g_c
-      `ASSERT_IMPLIES(TriEdgesFromVertices_C, take,
+      `ASSERT_IF(TriEdgesFromVertices_C, take,
                  tri_c_i == trirast_port_pkg::edge_c(tri_vx_i, tri_vy_i), clk_i, !rst_ni)
     end
   end
   if (F > S) begin : g_grid
-    `ASSERT_IMPLIES(TriVertexOnGrid_A, take, tri_vx_i[0] == 1'b0 && tri_vx_i[P] == 1'b0 &&
+    `ASSERT_IF(TriVertexOnGrid_A, take, tri_vx_i[0] == 1'b0 && tri_vx_i[P] == 1'b0 &&
                tri_vx_i[2*P] == 1'b0 && tri_vy_i[0] == 1'b0 && tri_vy_i[P] == 1'b0 &&
                tri_vy_i[2*P] == 1'b0, clk_i, !rst_ni)
   end
   if (HasBox) begin : g_box
-    `ASSERT_IMPLIES(TriBoxInRange_A, take,
+    `ASSERT_IF(TriBoxInRange_A, take,
                box_in_range(axis_extent(tri_vx_i, cfg_vp_xmax_i), axis_extent(tri_vy_i, cfg_vp_ymax_i)),
                clk_i, !rst_ni)
   end
