@@ -92,8 +92,8 @@
 
 // ASSERT_IMPLIES for an expensive Cons of no $past: an immediate assertion in a clocked block, so
 // Cons is evaluated only at the edges where Cond holds (Verilator evaluates a concurrent
-// property's consequent at every edge: the triangle port's checks cost the improved unit's RTL
-// about a third of its simulation time that way).
+// property's consequent at every edge; the triangle port's checks, products of the vertices, are
+// the case).
 `define ASSERT_IF(__name, __cond, __prop, __clk, __rst)                         \
   /* verilator lint_off SYNCASYNCNET */                                          \
   always_ff @(posedge __clk) begin                                                \
