@@ -3,15 +3,18 @@
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
 #include <vector>
+
+#include <unistd.h>
 
 #include "cli/args.hpp"
 #include "common/sink_pattern.hpp"
 #include "common/span_downstream.hpp"
 #include "common/trirast_rtl_params.hpp"
+#include "io/output_file.hpp"
 #include "units.hpp"
 
 namespace trirast {
@@ -95,11 +98,12 @@ int pow2_at_least(int n) {
   return p;
 }
 
-std::ofstream open_in(const std::string& dir, const char* name) {
-  const std::string path = dir + "/" + name;
-  std::ofstream f(path);
-  if (!f) refuse(dir, "cannot write " + path);
-  return f;
+// The folder's nearest existing ancestor (itself when it exists): where it would be created.
+std::filesystem::path existing_ancestor(const std::string& dir) {
+  std::filesystem::path p = std::filesystem::absolute(dir);
+  while (!std::filesystem::exists(p) && p.has_parent_path() && p != p.parent_path())
+    p = p.parent_path();
+  return p;
 }
 
 }  // namespace
@@ -125,10 +129,11 @@ void check_kit_vectors(const std::string& engine, const RasterConfig& cfg, const
                     ": a downstream that reacts to the spans it takes cannot be replayed by the "
                     "kit's downstream (it plays none, periodic:READY:STALL or random:SEED:PERCENT)");
   (void)SinkPattern::parse(cfg.sink_stall);  // a malformed pattern names --sink-stall
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    refuse(dir, "cannot create the directory" + (ec ? " (" + ec.message() + ")" : std::string()));
+  // Checked before the run, created only when the files are written (write_kit_vectors), so a
+  // refused or interrupted run leaves no folder behind.
+  const std::filesystem::path base = existing_ancestor(dir);
+  if (!std::filesystem::is_directory(base) || access(base.c_str(), W_OK) != 0)
+    refuse(dir, "cannot create the directory (" + base.string() + " is not a writable directory)");
 }
 
 void write_kit_vectors(const std::string& dir, const std::string& engine, const std::string& scene,
@@ -153,8 +158,9 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
   if (last >= (uint64_t(1) << 32))
     refuse(dir, "cycle " + std::to_string(last) + " does not fit expect.hex's 32-bit cycles");
 
-  std::ofstream tris = open_in(dir, "tris.hex"), spans = open_in(dir, "spans.hex"),
-                expect = open_in(dir, "expect.hex");
+  // Every file is formed in memory and written whole through OutputFile (a temporary file
+  // renamed on commit, removed on failure and on SIGINT / SIGTERM).
+  std::ostringstream tris, spans, expect, params, args, readme;
   const bool vertices_only = name == "trad";
   uint64_t first = 0;
   for (size_t p = 0; p < n; ++p) {
@@ -192,7 +198,6 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
 
   // The top's parameters: the smallest hardware that holds the run's --endpoints and
   // --fifo-depth (FifoDepth a power of two), as the synthesized unit is built.
-  std::ofstream params = open_in(dir, "params.txt");
   params << "unit " << name << "\n";
   if (name == "improved" || name == "improved2") params << "NumEndpoints " << cfg.endpoints << "\n";
   params << "FifoDepth " << pow2_at_least(cfg.fifo_depth) << "\n";
@@ -205,7 +210,6 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
   const char* kind = sink.kind() == SinkPattern::Kind::Periodic ? "periodic"
                      : sink.kind() == SinkPattern::Kind::Random ? "random"
                                                                 : "none";
-  std::ofstream args = open_in(dir, "plusargs.txt");
   args << "+kit_format=" << kKitFormat << " +ntris=" << n << " +nspans=" << first << " +vp_xmax=" << cfg.width - 1
        << " +vp_ymax=" << cfg.height - 1 << " +fifo_depth=" << cfg.fifo_depth
        << " +endpoints=" << cfg.endpoints
@@ -215,13 +219,20 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
        << " +sink_seed=" << sink.seed() << " +sink_percent=" << sink.percent() << " +last=" << last
        << "\n";
 
-  std::ofstream readme = open_in(dir, "README.txt");
   readme << "engine " << engine << ", scene " << scene << ", --sink-stall " << cfg.sink_stall
          << ": " << n << " triangles, " << first << " spans, last done cycle " << last << "\n\n"
          << kReadme;
-  for (std::ofstream* f : {&tris, &spans, &expect, &params, &args, &readme}) {
-    f->flush();
-    if (!*f) refuse(dir, "write failed");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir))
+    refuse(dir, "cannot create the directory" + (ec ? " (" + ec.message() + ")" : std::string()));
+  const std::pair<const char*, const std::ostringstream*> files[] = {
+      {"tris.hex", &tris},     {"spans.hex", &spans},      {"expect.hex", &expect},
+      {"params.txt", &params}, {"plusargs.txt", &args},    {"README.txt", &readme}};
+  for (const auto& [file, text] : files) {
+    OutputFile out(dir + "/" + file, "--vectors");
+    out.write(text->str());
+    out.commit();
   }
 }
 
