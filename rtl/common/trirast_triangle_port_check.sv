@@ -16,12 +16,11 @@
 //                              viewport) is at most 2^BoxBits pixels on each axis (HasBox)
 // The viewport needs no check: its last pixel (PixBits = CoordIntBits - 1 bits) is always inside
 // the coordinate range, as the CLI's --coord-bits check asks.
-// Simulation only: a top instantiates it outside synthesis (`ifndef SYNTHESIS`), and its
-// assertions are Verilator's alone (trirast_assert.svh), so netlists and cycles do not change.
-// The arithmetic is trirast_port_pkg's, the same a testbench forms its triangles with.
-// Simulation only: a synthesis tool (which defines SYNTHESIS) reads nothing of it (Yosys 0.23
-// also refuses one package's names in another's parameters).
-`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
+// Simulation only: neither synthesis (SYNTHESIS) nor the formal flow (FORMAL: Yosys 0.23 refuses
+// one package's names in another's parameters) reads it, and the tops instantiate it under the
+// same two guards, so netlists and cycles do not change. The arithmetic is trirast_port_pkg's,
+// the same a testbench forms its triangles with.
+`ifndef SYNTHESIS
 `ifndef FORMAL
 
 `include "trirast_assert.svh"
