@@ -10,12 +10,12 @@
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
 #include "Vtrirast_improved_top.h"
 #include "common/harness_util.hpp"
 #include "common/setup.hpp"
 #include "default/params.hpp"
+#include "rtl_direct_top.hpp"
 
 int main(int argc, char** argv) {
   const char* mode = argc > 1 ? argv[1] : "";
@@ -26,33 +26,12 @@ int main(int argc, char** argv) {
                  mode);
     return 2;
   }
-  auto ctx = std::make_unique<VerilatedContext>();
-  ctx->randReset(2);
-  ctx->randSeed(1);
-  auto top = std::make_unique<Vtrirast_improved_top>(ctx.get(), "top");
-
   // A legal configuration but for the broken input of the mode.
-  top->cfg_vp_xmax_i = 63;
-  top->cfg_vp_ymax_i = 63;
-  top->cfg_divide_i = 0;
-  top->cfg_adaptive_i = 1;
-  top->cfg_endpoints_i = endpoints ? 5 : 1;
-  top->cfg_fifo_depth_i = 8;
-  top->tri_valid_i = 0;
-  top->span_ready_i = 1;
-  top->clk_i = 0;
-  top->rst_ni = 0;
-  top->eval();
-  auto tick = [&] {
-    top->clk_i = 1;
-    top->eval();
-    top->clk_i = 0;
-    top->eval();
-  };
-  tick();
-  tick();
-  top->rst_ni = 1;
-  top->eval();
+  trirast::rtl::DirectTop<Vtrirast_improved_top> top([&](Vtrirast_improved_top& t) {
+    t.cfg_divide_i = 0;
+    t.cfg_adaptive_i = 1;
+    t.cfg_endpoints_i = endpoints ? 5 : 1;
+  });
 
   // tri-data: a triangle is offered from cycle 0 and taken then; the next one is offered from
   // cycle 1 (the setup stage is busy, tri_ready_o low) and changes in cycle 2 before its handshake.
@@ -65,15 +44,14 @@ int main(int argc, char** argv) {
   if (!trirast::setup_triangle(in, 0, cfg, t, &why)) return 2;
   trirast::rtl::drive_edge_triangle<trirast::rtl::Params_default>(*top, t);
   const int cycles = 20;
-  for (int c = 0; c < cycles && !ctx->gotFinish(); ++c) {
+  for (int c = 0; c < cycles && !top.finished(); ++c) {
     if (tri_data) {
       top->tri_valid_i = 1;
       top->tri_tag_i = uint32_t(c < 2 ? c : 2);
     }
     top->eval();
-    tick();
+    top.tick();
   }
-  top->final();
   std::printf("trirast_rtl_assert_demo %s: no assertion fired in %d cycles\n", mode, cycles);
   return 0;
 }

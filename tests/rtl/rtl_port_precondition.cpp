@@ -18,7 +18,6 @@
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <string>
 
 #include "Vtrirast_halfspace_top_s2t8z.h"
@@ -28,6 +27,7 @@
 #include "common/harness_util.hpp"
 #include "common/setup.hpp"
 #include "default/params.hpp"
+#include "rtl_direct_top.hpp"
 
 namespace {
 
@@ -48,49 +48,28 @@ void edges_from_vertices(TriangleSetup& t) {
   }
 }
 
-// Resets the top, offers t until it is taken, then clocks until the unit is idle; returns the
-// spans it sent. cfg sets the unit's own configuration inputs.
+// Resets the top (rtl_direct_top.hpp), offers t until it is taken, then clocks until the unit is
+// idle; returns the spans it sent. cfg sets the unit's own configuration inputs.
 template <class Top, class Config, class Offer>
 long run(const char* name, const Config& cfg, const Offer& offer) {
-  auto ctx = std::make_unique<VerilatedContext>();
-  ctx->randReset(2);
-  ctx->randSeed(1);
-  auto top = std::make_unique<Top>(ctx.get(), "top");
-  top->cfg_vp_xmax_i = 63;
-  top->cfg_vp_ymax_i = 63;
-  top->cfg_fifo_depth_i = 8;
-  cfg(*top);
-  top->tri_valid_i = 0;
-  top->tri_tag_i = 7;
-  top->span_ready_i = 1;
-  top->clk_i = 0;
-  top->rst_ni = 0;
-  top->eval();
-  auto tick = [&] {
-    top->clk_i = 1;
-    top->eval();
-    top->clk_i = 0;
-    top->eval();
-  };
-  tick();
-  tick();
-  top->rst_ni = 1;
-  top->eval();
+  trirast::rtl::DirectTop<Top> top([&](Top& t) {
+    cfg(t);
+    t.tri_tag_i = 7;
+  });
   offer(*top);
   top->tri_valid_i = 1;
   long spans = 0;
   bool taken = false;
-  for (int c = 0; c < 400 && !ctx->gotFinish(); ++c) {
+  for (int c = 0; c < 400 && !top.finished(); ++c) {
     top->eval();
     const bool take = top->tri_valid_i && top->tri_ready_o;
     if (top->span_valid_o) ++spans;
-    tick();
+    top.tick();
     if (take) {
       taken = true;
       top->tri_valid_i = 0;
     }
   }
-  top->final();
   if (!taken) {
     std::fprintf(stderr, "trirast_rtl_port_precondition %s: the triangle was never taken\n", name);
     std::exit(3);
