@@ -200,6 +200,7 @@ const std::vector<EngineDescriptor>& engine_descriptors() {
         d.unit = &u;
         d.options = v.timed ? plus(u.options, u.timed_options) : u.options;
         d.rtl_builds = v.rtl_builds;
+        if (v.rtl_builds) d.options.push_back("--rtl-checked");
         out.push_back(d);
       }
     out.push_back(reference(
@@ -225,7 +226,8 @@ const UnitDescriptor* unit_of(const std::string& engine) {
 const std::vector<std::string>& engine_options() {
   static const std::vector<std::string> list = {
       "--box-bits",    "--boundary",  "--divider",    "--stamp",      "--tile",      "--hs-walk",
-      "--corner-form", "--endpoints", "--fifo-depth", "--sink-stall", "--traversal", "--threads"};
+      "--corner-form", "--endpoints", "--fifo-depth", "--sink-stall", "--traversal", "--threads",
+      "--rtl-checked"};
   return list;
 }
 

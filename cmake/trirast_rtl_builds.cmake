@@ -17,6 +17,13 @@
 #     "The half-space unit"; not a synthesis configuration), at DEPTH.
 # The maximal default build keeps the plain prefix (Vtrirast_improved_top, Vtrirast_trad_top):
 # tests/rtl/rtl_assert_demo.cpp uses it.
+# Every build above is a checked build: assertions (--assert), cover points (TRIRAST_RTL_COVERAGE)
+# and trace support (--trace-fst). An entry "speed:SPEC" is the speed build of the checked build
+# SPEC (prefix suffix _speed): the same RTL and parameters without assertions, cover points and
+# trace support. The builds a default run picks have one (each unit's default configuration at
+# N = 1, DEPTH = 8; improved2 in its default corner form): a run takes it unless it asks for the
+# checked build (RasterConfig::rtl_checked: --rtl-checked, --coverage) or a trace (rtl_builds.hpp,
+# run_build; docs/rtl.md, "Speed and checked builds").
 #
 # trirast_add_rtl_builds(TARGET ROOT GEN_DIR INCLUDE_DIR [MODELS_TARGET M [PREBUILT DIR]] BUILDS ...):
 # verilates each listed build into M (default TARGET), adds its harness instance
@@ -84,6 +91,11 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1")
   endif()
+  list(APPEND _builds
+    "speed:improved:trirast_improved_top:TRIRAST_RTL_SOURCES:_n1:default:1:8"
+    "speed:trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
+    "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
+    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1")
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()
 
@@ -134,6 +146,7 @@ function(trirast_add_rtl_builds)
   # the probes the harness counts busy cycles from), generated like the packages.
   set(_unit_tops "")
   foreach(_b ${A_BUILDS})
+    string(REGEX REPLACE "^speed:" "" _b "${_b}")
     string(REPLACE ":" ";" _f "${_b}")
     list(GET _f 1 _t)
     list(APPEND _unit_tops ${_t})
@@ -185,12 +198,28 @@ function(trirast_add_rtl_builds)
   endforeach()
   set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${A_ROOT}/scripts/gen_sim_top.py)
 
+  # The checked builds that have a speed build ("speed:SPEC" entries; the checked one's entry in
+  # the list names its speed build's run).
+  foreach(_b ${A_BUILDS})
+    if(_b MATCHES "^speed:")
+      string(REPLACE ":" ";" _f "${_b}")
+      list(GET _f 2 _top)
+      list(GET _f 4 _suffix)
+      set(_has_speed_V${_top}${_suffix} TRUE)
+    endif()
+  endforeach()
+
   set(_list_improved "")
   set(_list_trad "")
   set(_list_halfspace "")
   set(_list_improved2 "")
   set(_decls "")
   foreach(_b ${A_BUILDS})
+    set(_speed FALSE)
+    if(_b MATCHES "^speed:")
+      set(_speed TRUE)
+      string(REGEX REPLACE "^speed:" "" _b "${_b}")
+    endif()
     string(REPLACE ":" ";" _f "${_b}")
     list(GET _f 0 _unit)
     list(GET _f 1 _top)
@@ -215,6 +244,13 @@ function(trirast_add_rtl_builds)
       endif()
     endif()
     set(_prefix V${_top}${_suffix})
+    set(_run_speed nullptr)
+    if(_has_speed_${_prefix})
+      set(_run_speed &run${_prefix}_speed)
+    endif()
+    if(_speed)
+      set(_prefix ${_prefix}_speed)
+    endif()
     set(_sources ${${_srcvar}})
     if(NOT _sources)
       message(FATAL_ERROR "trirast_add_rtl_builds: ${_srcvar} is empty (read rtl/*/*.f first)")
@@ -235,6 +271,16 @@ function(trirast_add_rtl_builds)
     # --x-initial/--x-assign unique: X values are random from the seed the harness sets
     # (RtlRunOptions::x_seed, TRIRAST_RTL_SEED; reported as work "rtl_x_seed").
     # --coverage-user +define+TRIRAST_COVERAGE (TRIRAST_RTL_COVERAGE): the cover points.
+    # A speed build has neither assertions nor cover points nor trace support.
+    if(_speed)
+      set(_assert)
+      set(_cover)
+      set(_trace)
+    else()
+      set(_assert --assert)
+      set(_cover ${_coverage_args})
+      set(_trace TRACE_FST)
+    endif()
     if(A_PREBUILT)
       set(_vdir ${A_PREBUILT}/CMakeFiles/${A_MODELS_TARGET}.dir/${_prefix}.dir)
       if(NOT EXISTS ${_vdir}/${_prefix}.h)
@@ -243,12 +289,12 @@ function(trirast_add_rtl_builds)
       endif()
       target_include_directories(${A_MODELS_TARGET} SYSTEM INTERFACE ${_vdir})
     else()
-      verilate(${A_MODELS_TARGET} TRACE_FST
+      verilate(${A_MODELS_TARGET} ${_trace}
         PREFIX ${_prefix}
         TOP_MODULE ${_top}_sim
         SOURCES ${_sources} ${_gen}/${_top}_sim.sv
         INCLUDE_DIRS ${A_INCLUDE_DIR}
-        VERILATOR_ARGS -Wall --assert --x-initial unique --x-assign unique ${_coverage_args}
+        VERILATOR_ARGS -Wall ${_assert} --x-initial unique --x-assign unique ${_cover}
                        ${_params}
         OPT_SLOW -O1
         OPT_FAST -O2
@@ -276,6 +322,7 @@ function(trirast_add_rtl_builds)
     file(CONFIGURE OUTPUT ${_gen}/build${_prefix}.cpp CONTENT "\
 // Generated by cmake/trirast_rtl_builds.cmake: the ${_unit} unit's harness for ${_prefix}.
 #include \"${_prefix}.h\"
+#include \"${_prefix}___024root.h\"
 #include \"${_gen}/${_cfg}/params.hpp\"
 #include \"${_unit}/${_harness}\"
 namespace trirast::rtl {
@@ -286,7 +333,9 @@ void run${_prefix}(const SetupResult& s, const RasterConfig& c, uint32_t seed, E
 ")
     target_sources(${A_TARGET} PRIVATE ${_gen}/build${_prefix}.cpp)
     string(APPEND _decls "void run${_prefix}(const SetupResult&, const RasterConfig&, uint32_t, EngineResult&);\n")
-    string(APPEND _list_${_unit} "      {\"${_prefix}\", ${_s}, ${_coord}, ${_box}, ${_n}, ${_depth}, &run${_prefix}, ${_stamp}, ${_tile}, ${_zigzag}, ${_form}},\n")
+    if(NOT _speed)
+      string(APPEND _list_${_unit} "      {\"${_prefix}\", ${_s}, ${_coord}, ${_box}, ${_n}, ${_depth}, &run${_prefix}, ${_stamp}, ${_tile}, ${_zigzag}, ${_form}, ${_run_speed}},\n")
+    endif()
   endforeach()
   file(CONFIGURE OUTPUT ${_gen}/rtl_builds_list.cpp CONTENT "\
 // Generated by cmake/trirast_rtl_builds.cmake: the Verilated builds (rtl_builds.hpp).

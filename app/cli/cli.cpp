@@ -94,6 +94,7 @@ std::vector<OptionSpec> scene_options() {
       {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "the downstream of the span output: a ready pattern none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99), or queue:RATE:CAPACITY, a pixel queue that reacts to what it took (consumes RATE pixels per cycle; ready while fewer than CAPACITY pixels are queued)", "none"},
+      {"--rtl-checked", "", "the checked Verilated builds (assertions, cover points, trace support) where a speed build covers the run (--coverage and --trace take them anyway; docs/rtl.md)", ""},
   };
   for (OptionSpec& spec : engine_specs)
     if (std::find(engine_options().begin(), engine_options().end(), spec.name) !=
@@ -113,6 +114,7 @@ RasterConfig config_from(const Args& a) {
   cfg.endpoints = int(a.get_int("--endpoints", 1, 4));
   cfg.fifo_depth = int(a.get_int("--fifo-depth", 1, 1024));
   cfg.sink_stall = a.get("--sink-stall");
+  cfg.rtl_checked = a.has("--rtl-checked");
   cfg.halfspace.stamp = int(a.get_int("--stamp", 1, 4));
   try {
     const std::string tile = a.get("--tile");
@@ -203,6 +205,7 @@ Json config_json(const RasterConfig& cfg, const GoldenOptions& golden,
       {"--sink-stall", {"sink_stall", Json::string(cfg.sink_stall)}},
       {"--traversal", {"traversal", Json::string(traversal_name(golden.traversal))}},
       {"--threads", {"threads", Json::integer(golden.threads)}},
+      {"--rtl-checked", {"rtl_checked", Json::boolean(cfg.rtl_checked)}},
   };
   for (const std::string& option : engine_options())
     if (std::any_of(engines.begin(), engines.end(),
@@ -366,7 +369,10 @@ int cmd_raster(int argc, char** argv) {
   if (a.has("--image")) check_png_path(a.get("--image"), "raster", "--image");
   if (a.has("--report")) check_output_path(a.get("--report"), "--report");
   if (a.has("--vectors")) check_kit_vectors(info.name, cfg, a.get("--vectors"));
-  if (a.has("--coverage")) check_coverage_option(a.get("--coverage"), {info.name}, "raster");
+  if (a.has("--coverage")) {
+    check_coverage_option(a.get("--coverage"), {info.name}, "raster");
+    cfg.rtl_checked = true;  // the cover points are in the checked builds
+  }
   const DiagOptions diag = diag_options_from(a, false);
 
   auto t0 = Clock::now();

@@ -148,6 +148,10 @@ int cmd_fuzz(int argc, char** argv) {
               "write the RTL engines' cover points with their counts over the whole run "
               "(docs/coverage.md)",
               ""},
+             {"--rtl-checked", "",
+              "the RTL engines run their checked Verilated builds (assertions, cover points) where "
+              "a speed build covers the configuration (--coverage implies it; docs/rtl.md)",
+              ""},
              {"--inject-fault", "ENGINE",
               "self-test: ENGINE drops one pixel per scene, so the checker must report it", ""},
              {"--calibrate", "", "measure the --engines' cost constants (the schedule's table), print them, exit", ""},
@@ -241,6 +245,14 @@ int cmd_fuzz(int argc, char** argv) {
   };
   check_output_path(repro_path(0), "--out");
   if (a.has("--coverage")) check_coverage_option(a.get("--coverage"), names, "fuzz");
+  if (a.has("--rtl-checked") &&
+      std::none_of(names.begin(), names.end(), [](const std::string& n) {
+        const EngineDescriptor* d = find_engine_descriptor(n);
+        return d && d->rtl_builds;
+      }))
+    throw UsageError("trirast fuzz: --rtl-checked: applies to none of the engines run (it applies "
+                     "to the RTL engines)");
+  const bool rtl_checked = a.has("--rtl-checked") || a.has("--coverage");
 
   std::string engine_list;
   for (const std::string& n : names) engine_list += (engine_list.empty() ? "" : ",") + n;
@@ -311,6 +323,7 @@ int cmd_fuzz(int argc, char** argv) {
     const uint64_t n = scenes;
     RngDraws draws(scene_seed(seed, n));
     RasterConfig cfg = draw_fuzz_config(draws, widths);
+    cfg.rtl_checked = rtl_checked;
     std::vector<FuzzClass> classes;
     const std::vector<InputTriangle> tris = draw_fuzz_scene(draws, cfg, int(max_tris), &classes);
     // The half-space unit's stamp, tile and walk: among halfspace-rtl's builds of these widths

@@ -70,6 +70,7 @@ const std::map<std::string, std::string>& table() {
       {"work.rows_visited", "rows of a bounding box the engine visited"},
       {"work.rtl_build_endpoints", "NumEndpoints of the Verilated RTL build the run used"},
       {"work.rtl_build_fifo_depth", "FifoDepth of the Verilated RTL build the run used"},
+      {"work.rtl_build_checked", "1: the run used a checked Verilated build (assertions, cover points, trace support); 0: a speed build"},
       {"work.rtl_x_seed", "seed of the RTL's random initial values (Verilator --x-initial unique)"},
       {"work.rtl_x_zero_fill", "1: a traced run without TRIRAST_RTL_SEED filled the RTL's initial values with zeros (the trace shows no random numbers)"},
       {"work.sim_cycles_per_second", "simulated clock cycles per wall-clock second"},

@@ -93,6 +93,11 @@ struct RasterConfig {
   int64_t trace_first = 0;          // record only triangles trace_first..trace_last (scene
   int64_t trace_last = -1;          // indices); trace_last < 0: to the end
 
+  // ---- the RTL engines' Verilated builds (docs/rtl.md, "Speed and checked builds") ----
+  // Run the checked builds (assertions, cover points, trace support) where a speed build would
+  // cover the run; a trace or --coverage run takes them anyway.
+  bool rtl_checked = false;
+
   // Fractional bits used for the arithmetic: S, or 1 when S == 0 so that pixel centres
   // (px + 0.5) stay integers (docs/coverage-rule.md, "S = 0").
   int frac_bits() const { return subpixel_bits > 0 ? subpixel_bits : 1; }

@@ -30,9 +30,13 @@
 //   bool idle(const Top&)                         no triangle inside the unit (the run's end)
 //
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
-// applied and the model is evaluated, so the handshakes and the observation outputs of cycle c
-// can be sampled; then the rising edge c is evaluated. Cycle 0 is the first rising edge after
-// rst_ni went high.
+// applied, the handshakes and the observation outputs of cycle c are sampled, and the rising edge
+// c is evaluated. Cycle 0 is the first rising edge after rst_ni went high. The tops have no
+// combinational path from an input to an output (docs/port.md), so the outputs of cycle c are
+// those the rising edge c - 1 left, and one evaluation per cycle serves: the clock's fall is
+// written into the model's edge memory (Verilator 5's __Vtrigrprev__TOP__clk_i) instead of being
+// evaluated. A traced run, or a model without that member, also evaluates with the clock low (the
+// trace then shows each cycle's inputs and their combinational fan-out).
 #pragma once
 
 #include <verilated.h>
@@ -82,6 +86,21 @@ struct has_pipelined_setup : std::false_type {};
 template <class Unit>
 struct has_pipelined_setup<Unit, std::void_t<decltype(Unit::kPipelinedSetup)>> : std::true_type {};
 
+// Whether Top was verilated with trace support (--trace-fst: a checked build, rtl_builds.hpp).
+template <class Top, class = void>
+struct has_fst_trace : std::false_type {};
+template <class Top>
+struct has_fst_trace<Top, std::void_t<decltype(std::declval<Top&>().trace(
+                              static_cast<VerilatedFstC*>(nullptr), 0))>> : std::true_type {};
+
+// Whether Top's edge memory of clk_i is reachable (one evaluation per cycle; see above).
+template <class Top, class = void>
+struct has_clock_edge_memory : std::false_type {};
+template <class Top>
+struct has_clock_edge_memory<Top,
+                             std::void_t<decltype(std::declval<Top&>().rootp->__Vtrigrprev__TOP__clk_i)>>
+    : std::true_type {};
+
 template <class Top, class Unit>
 CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32_t x_seed,
                        const char* engine, const char* top_name, Unit& unit, EngineResult& out) {
@@ -113,7 +132,9 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   std::unique_ptr<VerilatedFstC> fst;
   std::string fst_path;
   RecordingTemporaries recording;  // removed unless finish_trace() moved them to the trace
-  if (tracing) {
+  if constexpr (!has_fst_trace<Top>::value) {
+    if (tracing) throw std::logic_error(who + ": a trace of a build without trace support");
+  } else if (tracing) {
     fst = std::make_unique<VerilatedFstC>();
     // The model's time base: cycle c from c ns (the rising edge that starts it) to c + 1 ns. The
     // recording counts in 100 ps: registers change at 10c (clock high), the harness drives the
@@ -197,10 +218,11 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
   // with `static constexpr uint64_t kWatchdogCycles`.
   uint64_t watchdog = uint64_t(1) << 22;
   if constexpr (has_watchdog<Unit>::value) watchdog = std::max(watchdog, Unit::kWatchdogCycles);
+  const bool one_eval = has_clock_edge_memory<Top>::value && !tracing;
   uint64_t c = 0;
   for (;; ++c) {
     top->span_ready_i = ds->ready(c);
-    top->eval();
+    if (!one_eval) top->eval();
     // Stop once every triangle went in and the unit is empty (cycle c is not part of the run).
     if constexpr (has_pipelined_setup<Unit>::value) {
       if (next == n && unit.idle(*top)) break;
@@ -306,6 +328,8 @@ CycleCounts run_cycles(const SetupResult& setup, const RasterConfig& cfg, uint32
     top->eval();
     dump(10 * (c + 1));
     top->clk_i = 0;
+    if constexpr (has_clock_edge_memory<Top>::value)
+      if (one_eval) top->rootp->__Vtrigrprev__TOP__clk_i = 0;
     if (accept) offer(++next);
 
     // The window's last triangle is done when it went through the walk stage (or retired) and

@@ -3,6 +3,9 @@
 // FifoDepth 1024), and the default configuration also at its synthesized size (N = 1, DEPTH = 8),
 // which simulates several times faster; the half-space unit at the stamp/tile/walk configurations
 // that file lists. A run takes the smallest build that covers its options.
+// Each is a checked build (assertions, cover points, trace support); the builds a default run
+// picks also have a speed build, the same RTL without them, which a run takes unless it asks for
+// the checked one (RasterConfig::rtl_checked) or a trace (run_build).
 #pragma once
 #include <algorithm>
 #include <cstdint>
@@ -27,6 +30,8 @@ struct RtlBuild {
   bool zigzag;
   // The second-generation unit's CornerForm (RasterConfig::improved2.corner_form; 0 otherwise).
   int corner_form;
+  // The run of its speed build (no assertions, cover points or trace support); nullptr: none.
+  void (*run_speed)(const SetupResult&, const RasterConfig&, uint32_t x_seed, EngineResult&);
 };
 
 // Smallest first (by FIFO depth, then endpoints). Defined in the generated rtl_builds_list.cpp.
@@ -35,14 +40,18 @@ const std::vector<RtlBuild>& trad_builds();
 const std::vector<RtlBuild>& halfspace_builds();
 const std::vector<RtlBuild>& improved2_builds();
 
-// Runs `build` (every RTL engine's run once it picked its build): a bad --sink-stall (a pattern
-// or queue:RATE:CAPACITY; span_downstream.hpp) fails before anything runs; reports the build's
-// FIFO depth (work "rtl_build_fifo_depth").
+// Runs `build` (every RTL engine's run once it picked its build), its speed build when it has one
+// and the run asks neither for the checked build (cfg.rtl_checked) nor for a trace: a bad
+// --sink-stall (a pattern or queue:RATE:CAPACITY; span_downstream.hpp) fails before anything
+// runs; reports the build's FIFO depth and whether it was the checked one (work
+// "rtl_build_fifo_depth", "rtl_build_checked").
 inline void run_build(const RtlBuild& build, const SetupResult& setup, const RasterConfig& cfg,
                       uint32_t x_seed, EngineResult& out) {
   (void)make_span_downstream(cfg.sink_stall);  // parsed only: a program's factory is not called
-  build.run(setup, cfg, x_seed, out);
+  const bool speed = build.run_speed && !cfg.rtl_checked && cfg.trace_path.empty();
+  (speed ? build.run_speed : build.run)(setup, cfg, x_seed, out);
   out.work["rtl_build_fifo_depth"] = uint64_t(build.fifo_depth);
+  out.work["rtl_build_checked"] = speed ? 0 : 1;
 }
 
 // Whether build b has the widths of cfg (S, coordinate and box bits).

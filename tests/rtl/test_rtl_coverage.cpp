@@ -28,8 +28,10 @@ namespace {
 using test::tri;
 using Counts = std::map<std::string, uint64_t>;
 
+// The checked builds: the speed builds have no cover points.
 RasterConfig default_cfg() {
   RasterConfig cfg;
+  cfg.rtl_checked = true;
   cfg.validate();
   return cfg;
 }
