@@ -115,20 +115,31 @@ module trirast_improved2_edge_lane #(
   logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----
-  logic [CB-1:0] abs_a, abs_b;
   logic horiz_n, mirror_n, dir_n;
-  logic signed [EB-1:0] u_load;
-  // |x| = (x - s) ^ s for the sign s (x - 1 complemented when negative): one adder whose carry
-  // chain takes s as its other operand and whose sum LUTs absorb the complement (a negation and
-  // a select map to three LUT4 per bit).
-  assign abs_a    = (a_i + {CB{a_i[CB-1]}}) ^ {CB{a_i[CB-1]}};
-  assign abs_b    = (b_i + {CB{b_i[CB-1]}}) ^ {CB{b_i[CB-1]}};
   assign horiz_n  = a_i == '0;
   assign mirror_n = !a_i[CB-1] && !horiz_n;
   assign dir_n    = !b_i[CB-1];
+  // |x| = (x - s) ^ s for the sign s (x - 1 complemented when negative): one adder whose carry
+  // chain takes s as its other operand and whose sum LUTs absorb the complement (a negation and
+  // a select map to three LUT4 per bit). |A|, |B| < 2^p: MB bits (a function, so that a
+  // Verilated model forms them at the load only).
+  function automatic logic [MB-1:0] abs_low(input logic signed [CB-1:0] x);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [CB-1:0] ax;
+    /* verilator lint_on UNUSEDSIGNAL */
+    ax = (x + {CB{x[CB-1]}}) ^ {CB{x[CB-1]}};
+    abs_low = ax[MB-1:0];
+  endfunction
   // dir +: v = T (E_R when mirrored, else E_L); dir -: ~T1 (T1 = E_L when mirrored, else E_R):
-  // in both cases e_i, the value at the column the lane traverses.
-  assign u_load   = dir_n ? e_i : ~e_i;
+  // in both cases e_i, the value at the column the lane traverses (without its F low bits).
+  function automatic logic signed [EB-F-1:0] u_load(input logic signed [EB-1:0] e,
+                                                   input logic dir);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [EB-1:0] u;
+    /* verilator lint_on UNUSEDSIGNAL */
+    u = dir ? e : ~e;
+    u_load = u[EB-1:F];
+  endfunction
 
   // ---- traversal: registers only decide ----
   logic entered, in_box, trav_done, need_entry;
@@ -244,9 +255,9 @@ module trirast_improved2_edge_lane #(
       horiz_q  <= horiz_n;
       mirror_q <= mirror_n;
       dir_q    <= dir_n;
-      dhn_q    <= ~abs_a[MB-1:0];
-      sh_q     <= abs_b[MB-1:0];
-      u_q      <= u_load[EB-1:F];
+      dhn_q    <= ~abs_low(a_i);
+      sh_q     <= abs_low(b_i);
+      u_q      <= u_load(e_i, dir_n);
       elo_q    <= e_i[F-1:0];
       j_q      <= '0;
     end else if (!trav_done) begin
@@ -294,10 +305,9 @@ module trirast_improved2_edge_lane #(
     assign entry_e_o = {rh_q, dir_q ? elo_q : ~elo_q};
   end
 
-  // Bits no result reads: |A|, |B|'s top bit (they are < 2^p), the column value's F low bits
-  // (E's, kept in elo_q), the complement flag without the pre-iteration.
+  // Bits no result reads: the complement flag without the pre-iteration, the carry-ins' sum bits.
   logic unused;
-  assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl, xsum[0], tsum[0], rdsum[0]};
+  assign unused = ^{cmpl, xsum[0], tsum[0], rdsum[0]};
 
   // Cover points (docs/coverage.md): every operation state; each boundary step kind (a row step
   // of a column value growing or falling down the box); divisions started (slope or entry x) by
