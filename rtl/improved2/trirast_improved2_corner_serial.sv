@@ -89,12 +89,7 @@ module trirast_improved2_corner_serial #(
   // bits m - 1 and up are 0): group k (k >= 1) holds z's bits D*k - 1 .. D*k + D - 2, so a value
   // needs more than k digits exactly when a group k or above is not 0.
   function automatic logic [ND-1:1] groups(input logic [DW-2:0] z);
-    for (int k = 1; k < ND; k++) begin
-      groups[k] = 1'b0;
-      for (int j = DB * k - 1; j < DB * k + DB - 1; j++) begin
-        if (j <= DW - 2) groups[k] = groups[k] | z[j];
-      end
-    end
+    for (int k = 1; k < ND; k++) groups[k] = |((z >> (DB * k - 1)) & (DW-1)'((1 << DB) - 1));
   endfunction
 
   // ---- the operands of the two vertices (v0: edges 0 and 2; v1: edge 1) ----
@@ -128,11 +123,9 @@ module trirast_improved2_corner_serial #(
     always_comb begin
       dgx_d = '0;
       dgy_d = '0;
-      for (int i = 0; i < ND; i++) begin
-        for (int j = 0; j < DB; j++) begin
-          dgx_d[j] = dgx_d[j] | (ptr_d[i] & ox[i*DB + j]);
-          dgy_d[j] = dgy_d[j] | (ptr_d[i] & oy[i*DB + j]);
-        end
+      for (int i = 0; i < ND; i++) begin   // word-wide, not bit by bit (Verilator's cost)
+        dgx_d = dgx_d | ({DB{ptr_d[i]}} & ox[i*DB +: DB]);
+        dgy_d = dgy_d | ({DB{ptr_d[i]}} & oy[i*DB +: DB]);
       end
       if (start_i) begin   // the first digit: its top bit is the flipped sign
         dgx_d[DB-1] = !ox[SW-1];
@@ -150,13 +143,28 @@ module trirast_improved2_corner_serial #(
   assign unused_v2 = ^{vx_i[2*P +: P], vy_i[2*P +: P]};
 
   // ---- the three edges: P, M, the digit terms, accumulators ----
+  // A digit cycle's sum: the terms, P or M by the bit pair, complemented when the x bit is 0,
+  // added in a tree for DB = 4 (a function, so a Verilated model forms it in digit cycles only).
+  function automatic logic signed [TW-1:0] digit_sum(input logic [DB-1:0] dgx,
+      input logic [DB-1:0] dgy, input logic signed [MW-1:0] pn, input logic signed [MW-1:0] m);
+    logic signed [MW-1:0] u [DB];
+    logic signed [MW+1:0] lo, hi;
+    for (int j = 0; j < DB; j++) u[j] = ((dgx[j] == dgy[j]) ? ~pn : m) ^ {MW{!dgx[j]}};
+    if (DB == 4) begin
+      lo = (MW+2)'(u[0]) + ((MW+2)'(u[1]) <<< 1);
+      hi = (MW+2)'(u[2]) + ((MW+2)'(u[3]) <<< 1);
+      digit_sum = TW'(lo) + (TW'(hi) <<< 2);
+    end else begin
+      digit_sum = '0;
+      for (int j = 0; j < DB; j++) digit_sum = digit_sum + (TW'(u[j]) <<< j);
+    end
+  endfunction
   for (genvar k = 0; k < 3; k++) begin : g_edge
     localparam int V = (k == 1) ? 1 : 0;   // the edge's vertex
     logic run_q, run_d;   // reset: AccParity_A reads it
     logic signed [MW-1:0] ak, bk, pn_q, m_q;   // pn_q: ~P (no inverters at E's subtraction)
     logic [AW-1:0] acc_q, acc_d;
     logic [DB-1:0] dgx, dgy;
-    logic signed [TW-1:0] tsum;
     assign dgx = dgx_v[V*DB +: DB];
     assign dgy = dgy_v[V*DB +: DB];
     assign ak  = MW'($signed(a_i[k*CB +: CB]));
@@ -167,29 +175,13 @@ module trirast_improved2_corner_serial #(
         m_q <= ak - bk;
       end
     end
-    // The terms: P or M by the bit pair, complemented when the x bit is 0.
-    logic signed [MW-1:0] u [DB];
-    for (genvar j = 0; j < DB; j++) begin : g_term
-      assign u[j] = ((dgx[j] == dgy[j]) ? ~pn_q : m_q) ^ {MW{!dgx[j]}};
-    end
-    if (DB == 4) begin : g_tree4
-      logic signed [MW+1:0] lo, hi;
-      assign lo = (MW+2)'(u[0]) + ((MW+2)'(u[1]) <<< 1);
-      assign hi = (MW+2)'(u[2]) + ((MW+2)'(u[3]) <<< 1);
-      assign tsum = TW'(lo) + (TW'(hi) <<< 2);
-    end else begin : g_chain
-      always_comb begin
-        tsum = '0;
-        for (int j = 0; j < DB; j++) tsum = tsum + (TW'(u[j]) <<< j);
-      end
-    end
     always_comb begin
       acc_d = acc_q;  run_d = run_q;
       if (start_i) begin
         run_d = run_i[k];
         if (run_i[k]) acc_d = '0;
       end else if (ptr_q != '0 && run_q) begin
-        acc_d = {acc_q[AW-DB-1:0], ~dgx} + AW'(tsum);
+        acc_d = {acc_q[AW-DB-1:0], ~dgx} + AW'(digit_sum(dgx, dgy, pn_q, m_q));
       end
     end
     always_ff @(posedge clk_i) begin
@@ -213,19 +205,20 @@ module trirast_improved2_corner_serial #(
 
   // The run's top digit (one-hot): the highest group of any operand, digit 0 when none.
   logic [ND-1:1] gx, gy, g;
+  // Formed in the start branch only (read nowhere else; gy only by gy_q at a first start).
   always_comb begin
-    gx = groups(zx_v[0] | zx_v[1]);
-    gy = second_i ? gy_q : groups(zy_v[0] | zy_v[1]);
-    g = gx | gy;
-    top = '0;
-    top[0] = g == '0;
-    for (int k = 1; k < ND; k++) begin
-      logic above;   // a group above k
-      above = 1'b0;
-      for (int i = k + 1; i < ND; i++) above = above | g[i];
-      top[k] = g[k] && !above;
+    gx = 'x;  g = 'x;  top = 'x;
+    gy = gy_q;
+    ptr_d = ptr_q >> 1;
+    if (start_i) begin
+      gx = groups(zx_v[0] | zx_v[1]);
+      if (!second_i) gy = groups(zy_v[0] | zy_v[1]);
+      g = gx | gy;
+      top = '0;
+      top[0] = g == '0;
+      for (int k = 1; k < ND; k++) top[k] = g[k] && (g >> k) == '0;   // no group above k
+      ptr_d = top;
     end
-    ptr_d = start_i ? top : (ptr_q >> 1);
   end
   always_ff @(posedge clk_i) begin
     if (start_i && !second_i) gy_q <= gy;

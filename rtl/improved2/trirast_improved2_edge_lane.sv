@@ -115,20 +115,31 @@ module trirast_improved2_edge_lane #(
   logic ld_q;                                // the cycle after the load (Xmax is valid)
 
   // ---- normalizer (gen1's, folded into the load) ----
-  logic [CB-1:0] abs_a, abs_b;
   logic horiz_n, mirror_n, dir_n;
-  logic signed [EB-1:0] u_load;
-  // |x| = (x - s) ^ s for the sign s (x - 1 complemented when negative): one adder whose carry
-  // chain takes s as its other operand and whose sum LUTs absorb the complement (a negation and
-  // a select map to three LUT4 per bit).
-  assign abs_a    = (a_i + {CB{a_i[CB-1]}}) ^ {CB{a_i[CB-1]}};
-  assign abs_b    = (b_i + {CB{b_i[CB-1]}}) ^ {CB{b_i[CB-1]}};
   assign horiz_n  = a_i == '0;
   assign mirror_n = !a_i[CB-1] && !horiz_n;
   assign dir_n    = !b_i[CB-1];
+  // |x| = (x - s) ^ s for the sign s (x - 1 complemented when negative): one adder whose carry
+  // chain takes s as its other operand and whose sum LUTs absorb the complement (a negation and
+  // a select map to three LUT4 per bit). |A|, |B| < 2^p: MB bits (a function, so that a
+  // Verilated model forms them at the load only).
+  function automatic logic [MB-1:0] abs_low(input logic signed [CB-1:0] x);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [CB-1:0] ax;
+    /* verilator lint_on UNUSEDSIGNAL */
+    ax = (x + {CB{x[CB-1]}}) ^ {CB{x[CB-1]}};
+    abs_low = ax[MB-1:0];
+  endfunction
   // dir +: v = T (E_R when mirrored, else E_L); dir -: ~T1 (T1 = E_L when mirrored, else E_R):
-  // in both cases e_i, the value at the column the lane traverses.
-  assign u_load   = dir_n ? e_i : ~e_i;
+  // in both cases e_i, the value at the column the lane traverses (without its F low bits).
+  function automatic logic signed [EB-F-1:0] u_load(input logic signed [EB-1:0] e,
+                                                   input logic dir);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic signed [EB-1:0] u;
+    /* verilator lint_on UNUSEDSIGNAL */
+    u = dir ? e : ~e;
+    u_load = u[EB-1:F];
+  endfunction
 
   // ---- traversal: registers only decide ----
   logic entered, in_box, trav_done, need_entry;
@@ -148,35 +159,9 @@ module trirast_improved2_edge_lane #(
   logic [MB+1:0] trial;
   logic pre, cmpl, qbit;
   localparam bit Pre = PreIter != 0;
-  // The set-up aligns n >> F (s's F low bits are zero): R[RB-1:F] = (n >> F) >> m.
-  assign num     = (op_q == OpSlopeSet) ? HB'(sh_q) : u_q[HB-1:0];
-  // With the pre-iteration, R = n >> (m + 1) and the pre-iteration shifts in n's bit m.
-  assign shifted = Pre ? (num >> 1) >> m : num >> m;
-  assign rh_set  = shifted[MB-1:0];
-  assign stk_set = |shifted[HB-1:MB];
-  // R's bit F - 1 in the iteration that makes quotient bit c is the numerator's bit c + F:
-  // s's (bit c of |B|) or the column value's, which stays put while the entry division runs (the
-  // traversal is over).
-  assign nbit    = (op_q == OpSlope) ? sh_q[$clog2(MB)'(cnt_q)] : u_q[$clog2(EB - F)'(cnt_q)];
-  logic [MB+2:0] tsum;   // {R, bit} + ~D + 1, the carry-in from the low bit
-  assign tsum    = {1'b0, x_hi, 1'b1} + {2'b11, dhn_q, 1'b1};
-  assign trial   = tsum[MB+2:1];
-  assign fits    = !trial[MB+1];
-  if (Pre) begin : g_pre
-    assign pre    = first_q;
-    assign cmpl   = (op_q == OpEntry) && !dir_q;  // dividing D - 1 - R (dir - entry)
-    assign x_hi   = {rh_q, nbit ^ (cmpl && !pre)};
-    assign qbit   = fits ^ cmpl;  // the quotient bit (complemented when dividing D - 1 - R)
-    assign rh_iter = (pre && cmpl) ? ~trial[MB-1:0]
-                   : pre ? x_hi[MB-1:0]
-                   : fits ? trial[MB-1:0] : x_hi[MB-1:0];
-  end else begin : g_plain
-    assign pre    = 1'b0;
-    assign cmpl   = 1'b0;
-    assign x_hi   = {rh_q, nbit};
-    assign qbit   = fits;
-    assign rh_iter = fits ? trial[MB-1:0] : x_hi[MB-1:0];
-  end
+  // With the pre-iteration: its cycle, and a dir - entry dividing D - 1 - R.
+  assign pre  = Pre && first_q;
+  assign cmpl = Pre && (op_q == OpEntry) && !dir_q;
   // R - D on R's high bits: its sign is the saturation test (first iteration) and, in the
   // end, ~(r - D) = D - 1 - r is a dir - edge's e.
   logic [MB:0] r_minus_d;
@@ -184,55 +169,79 @@ module trirast_improved2_edge_lane #(
   assign rdsum     = {1'b0, rh_q, 1'b1} + {1'b1, dhn_q, 1'b1};
   assign r_minus_d = rdsum[MB+1:1];
   assign sat_now = stk_q || !r_minus_d[MB];
-  assign xbit    = (32'(cnt_q) < BB) ? xmax_i[cnt_q] : 1'b0;
 
+  logic [MB+2:0] tsum;   // {R, bit} + ~D + 1, the carry-in from the low bit
   logic last, set_entry;
+  // The divider's set-up and iteration are formed while the lane works only (op_q != OpDone;
+  // 'x otherwise, where nothing reads them), so that a Verilated model skips them in idle cycles.
   always_comb begin
     op_d   = op_q;
     cnt_d  = cnt_q - 1'b1;
     first_d = 1'b0;
     rh_d   = rh_q;
     stk_d  = stk_q;
-    sat_d  = first_q ? (Pre ? stk_q || fits : sat_now) : sat_q;
     {qs_d, qe_d, rsh_d, ssat_d, gt_d, eq_d} = {qs_q, qe_q, rsh_q, ssat_q, gt_q, eq_q};
-    last      = (cnt_q == '0) || (!first_q && sat_q);
     set_entry = 1'b0;
-    unique case (op_q)
-      OpSlopeSet: begin
-        rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
-        qs_d = '0;
-        op_d = OpSlope;
-      end
-      OpSlope: begin
-        rh_d = rh_iter;
-        if (!pre) qs_d = {qs_q[QB-2:0], qbit};
-        if (last) begin
-          rsh_d  = rh_iter;
-          ssat_d = sat_q;
-          op_d   = trav_done ? (need_entry ? OpEntry : OpDone) : OpWait;
+    {num, shifted, rh_set, stk_set, nbit, tsum, trial, fits, x_hi, qbit, rh_iter, xbit, last} = 'x;
+    if (op_q != OpDone) begin
+      // The set-up aligns n >> F (s's F low bits are zero): R[RB-1:F] = (n >> F) >> m.
+      num     = (op_q == OpSlopeSet) ? HB'(sh_q) : u_q[HB-1:0];
+      // With the pre-iteration, R = n >> (m + 1) and the pre-iteration shifts in n's bit m.
+      shifted = Pre ? (num >> 1) >> m : num >> m;
+      rh_set  = shifted[MB-1:0];
+      stk_set = |shifted[HB-1:MB];
+      // R's bit F - 1 in the iteration that makes quotient bit c is the numerator's bit c + F:
+      // s's (bit c of |B|) or the column value's, which stays put while the entry division runs
+      // (the traversal is over).
+      nbit    = (op_q == OpSlope) ? sh_q[$clog2(MB)'(cnt_q)] : u_q[$clog2(EB - F)'(cnt_q)];
+      x_hi    = {rh_q, nbit ^ (cmpl && !pre)};
+      tsum    = {1'b0, x_hi, 1'b1} + {2'b11, dhn_q, 1'b1};
+      trial   = tsum[MB+2:1];
+      fits    = !trial[MB+1];
+      qbit    = fits ^ cmpl;  // the quotient bit (complemented when dividing D - 1 - R)
+      rh_iter = (pre && cmpl) ? ~trial[MB-1:0]
+              : pre ? x_hi[MB-1:0]
+              : fits ? trial[MB-1:0] : x_hi[MB-1:0];
+      xbit    = (32'(cnt_q) < BB) ? xmax_i[cnt_q] : 1'b0;
+      last    = (cnt_q == '0) || (!first_q && sat_q);
+      unique case (op_q)
+        OpSlopeSet: begin
+          rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
+          qs_d = '0;
+          op_d = OpSlope;
+        end
+        OpSlope: begin
+          rh_d = rh_iter;
+          if (!pre) qs_d = {qs_q[QB-2:0], qbit};
+          if (last) begin
+            rsh_d  = rh_iter;
+            ssat_d = sat_q;
+            op_d   = trav_done ? (need_entry ? OpEntry : OpDone) : OpWait;
+            set_entry = trav_done && need_entry;
+          end
+        end
+        OpWait: begin
+          op_d = trav_done ? (need_entry ? OpEntry : OpDone) : OpWait;
           set_entry = trav_done && need_entry;
         end
-      end
-      OpWait: begin
-        op_d = trav_done ? (need_entry ? OpEntry : OpDone) : OpWait;
-        set_entry = trav_done && need_entry;
-      end
-      OpEntry: begin
-        rh_d = rh_iter;
-        if (!pre) qe_d = {qe_q[QB-2:0], qbit};
-        // While equal so far: the first differing bit decides (gt is read only once eq is 0).
-        if (eq_q && !pre) begin
-          gt_d = qbit;
-          eq_d = qbit == xbit;
+        OpEntry: begin
+          rh_d = rh_iter;
+          if (!pre) qe_d = {qe_q[QB-2:0], qbit};
+          // While equal so far: the first differing bit decides (gt is read only once eq is 0).
+          if (eq_q && !pre) begin
+            gt_d = qbit;
+            eq_d = qbit == xbit;
+          end
+          if (last) op_d = OpDone;
         end
-        if (last) op_d = OpDone;
+        default: op_d = OpDone;
+      endcase
+      if (set_entry) begin
+        rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
+        qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
       end
-      default: op_d = OpDone;
-    endcase
-    if (set_entry) begin
-      rh_d = rh_set; stk_d = stk_set; cnt_d = Pre ? m : m - 1'b1; first_d = 1'b1;
-      qe_d = '0; gt_d = 1'b0; eq_d = 1'b1;
     end
+    sat_d  = first_q ? (Pre ? stk_q || fits : sat_now) : sat_q;
     if (load_i) op_d = horiz_n ? OpWait : OpSlopeSet;
   end
 
@@ -244,9 +253,9 @@ module trirast_improved2_edge_lane #(
       horiz_q  <= horiz_n;
       mirror_q <= mirror_n;
       dir_q    <= dir_n;
-      dhn_q    <= ~abs_a[MB-1:0];
-      sh_q     <= abs_b[MB-1:0];
-      u_q      <= u_load[EB-1:F];
+      dhn_q    <= ~abs_low(a_i);
+      sh_q     <= abs_low(b_i);
+      u_q      <= u_load(e_i, dir_n);
       elo_q    <= e_i[F-1:0];
       j_q      <= '0;
     end else if (!trav_done) begin
@@ -294,10 +303,9 @@ module trirast_improved2_edge_lane #(
     assign entry_e_o = {rh_q, dir_q ? elo_q : ~elo_q};
   end
 
-  // Bits no result reads: |A|, |B|'s top bit (they are < 2^p), the column value's F low bits
-  // (E's, kept in elo_q), the complement flag without the pre-iteration.
+  // Bits no result reads: the complement flag without the pre-iteration, the carry-ins' sum bits.
   logic unused;
-  assign unused = ^{abs_a[CB-1], abs_b[CB-1], u_load[F-1:0], cmpl, xsum[0], tsum[0], rdsum[0]};
+  assign unused = ^{cmpl, xsum[0], tsum[0], rdsum[0]};
 
   // Cover points (docs/coverage.md): every operation state; each boundary step kind (a row step
   // of a column value growing or falling down the box); divisions started (slope or entry x) by

@@ -76,6 +76,24 @@ module trirast_improved2_edge_walker #(
   logic [EW-2:0] ee_q;
 
   // ---- the step: all in parallel; row r + 1 from row r (row 0: the registers) ----
+  // CarrySelect 0: X' + inc + t and the bound + inc_m + t as one adder each, the carry-in t
+  // from the low bit of {.., 1} + {.., t}.
+  function automatic logic signed [XB-1:0] step_ci(input logic signed [XB-1:0] x,
+      input logic signed [XB-1:0] inc, input logic t);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [XB:0] sum;
+    /* verilator lint_on UNUSEDSIGNAL */
+    sum = {x, 1'b1} + {inc, t};
+    step_ci = $signed(sum[XB:1]);
+  endfunction
+  function automatic logic [BB:0] bound_ci(input logic [BB:0] b, input logic [BB:0] inc,
+                                           input logic t);
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [BB+1:0] sum;
+    /* verilator lint_on UNUSEDSIGNAL */
+    sum = {b, 1'b1} + {inc, t};
+    bound_ci = sum[BB+1:1];
+  endfunction
   logic [1:0] st_r [0:NumEndpoints] /* verilator split_var */;
   logic signed [XB-1:0] x_r [0:NumEndpoints] /* verilator split_var */;
   logic [BB:0] bx_r [0:NumEndpoints] /* verilator split_var */;
@@ -90,43 +108,24 @@ module trirast_improved2_edge_walker #(
   assign ent_r[0] = ent_q;
 
   for (genvar r = 0; r < NumEndpoints; r++) begin : g_row
-    logic signed [EW-1:0] ea, eb;
-    logic signed [XB-1:0] xs;
-    logic [BB:0] bs;
-    logic selb, leave;
-    assign ea = e_r[r] + dea_q;
-    assign eb = e_r[r] + deb_q;
-    assign selb = !eb[EW-1];
-    assign leave = ssat_q || !xs[XB-1];   // the stepped offset is >= 0
-    if (CarrySelect) begin : g_cs
-      logic signed [XB-1:0] xa, xb;
-      logic [BB:0] ba, bb;
-      assign xa = x_r[r] + inca_q;
-      assign xb = x_r[r] + incb_q;
-      assign ba = bx_r[r] + binca_q;
-      assign bb = bx_r[r] + bincb_q;
-      assign xs = selb ? xb : xa;
-      assign bs = selb ? bb : ba;
-    end else begin : g_ci
-      // inca_q = q_s, binca_q the bound's inc_m; incb_q / bincb_q are unused (the carry-in below).
-      logic [XB:0] xsum;
-      logic [BB+1:0] bsum;
-      logic tbx;
-      assign tbx  = (dir_q ^ mirror_q) ? selb : !selb;
-      assign xsum = {x_r[r], 1'b1} + {inca_q, selb};
-      assign bsum = {bx_r[r], 1'b1} + {binca_q, tbx};
-      assign xs = $signed(xsum[XB:1]);
-      assign bs = bsum[BB+1:1];
-      logic unused_ci;
-      assign unused_ci = ^{incb_q, bincb_q, xsum[0], bsum[0]};
-    end
-
+    // The step of a bound row, formed in that branch only ('x otherwise, where nothing reads it),
+    // so that a Verilated model skips it for rows that do not step.
     logic [1:0] st_n;
     logic signed [XB-1:0] x_n;
     logic [BB:0] bx_n;
     logic signed [EW-1:0] e_n;
+    logic signed [EW-1:0] ea, eb;
+    logic signed [XB-1:0] xs;
+    logic [BB:0] bs;
+    logic selb, leave;
+    if (!CarrySelect) begin : g_ci
+      // inca_q = q_s, binca_q the bound's inc_m; incb_q / bincb_q are unused (the carry-in below).
+      logic unused_ci;
+      assign unused_ci = ^{incb_q, bincb_q};
+    end
     always_comb begin
       st_n = st_r[r];  x_n = x_r[r];  e_n = e_r[r];  bx_n = bx_r[r];
+      {ea, eb, xs, bs, selb, leave} = 'x;
       if (ent_r[r]) begin
         // CarrySelect 0: X', e and the bound still hold the entry values loaded with the job
         // (before its entry row an edge is out or clear, and only a bound row steps them).
@@ -135,6 +134,17 @@ module trirast_improved2_edge_walker #(
           x_n = ex_q;  e_n = $signed({1'b0, ee_q});  bx_n = bex_q;
         end
       end else if (st_r[r] == RowBound) begin
+        ea = e_r[r] + dea_q;
+        eb = e_r[r] + deb_q;
+        selb = !eb[EW-1];
+        if (CarrySelect) begin
+          xs = selb ? x_r[r] + incb_q : x_r[r] + inca_q;
+          bs = selb ? bx_r[r] + bincb_q : bx_r[r] + binca_q;
+        end else begin
+          xs = step_ci(x_r[r], inca_q, selb);
+          bs = bound_ci(bx_r[r], binca_q, (dir_q ^ mirror_q) ? selb : !selb);
+        end
+        leave = ssat_q || !xs[XB-1];   // the stepped offset is >= 0
         x_n  = xs;
         e_n  = selb ? eb : ea;
         bx_n = bs;

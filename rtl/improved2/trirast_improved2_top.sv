@@ -156,12 +156,6 @@ module trirast_improved2_top #(
     axis_box = {all_neg || past_end || unclipped_empty, PB'(first_neg ? '0 : first), tmax};
   endfunction
 
-  logic [PB-1:0] fx, fy;
-  logic signed [HB-1:0] tx, ty;   // the last pixels, not clipped
-  logic x_empty, y_empty, p_empty;
-  assign {x_empty, fx, tx} = axis_box(tri_vx_i, cfg_vp_xmax_i);
-  assign {y_empty, fy, ty} = axis_box(tri_vy_i, cfg_vp_ymax_i);
-  assign p_empty = x_empty || y_empty;
   logic b_empty_q;
   logic [PB-1:0] b_fx_q, b_fy_q;
   logic signed [HB-1:0] b_tx_q, b_ty_q;
@@ -177,11 +171,17 @@ module trirast_improved2_top #(
     else if (tri_valid_i && tri_ready_o) b_full_q <= 1'b1;
     else if (b_retire || b_take) b_full_q <= 1'b0;
   end
+  // The box is formed inside the accept branch (the same logic): a Verilated model then evaluates
+  // it in accept cycles only, not on every change of the port's inputs.
   always_ff @(posedge clk_i) begin
     if (tri_valid_i && tri_ready_o) begin
+      logic [PB+HB:0] xbox, ybox;   // {empty, first, last} per axis
+      xbox = axis_box(tri_vx_i, cfg_vp_xmax_i);
+      ybox = axis_box(tri_vy_i, cfg_vp_ymax_i);
       b_tag_q <= tri_tag_i;  b_vx_q <= tri_vx_i;  b_vy_q <= tri_vy_i;
-      b_empty_q <= p_empty;
-      b_fx_q <= fx;  b_tx_q <= tx;  b_fy_q <= fy;  b_ty_q <= ty;
+      b_empty_q <= xbox[PB+HB] || ybox[PB+HB];
+      {b_fx_q, b_tx_q} <= xbox[PB+HB-1:0];
+      {b_fy_q, b_ty_q} <= ybox[PB+HB-1:0];
     end
   end
 
@@ -209,7 +209,9 @@ module trirast_improved2_top #(
   logic [3*CB-1:0] b_a, b_b;
   logic [3*(CB+1)-1:0] b_p;   // A + B per edge: the corner unit's multiplicand, the 2x2 test's step
   logic [2:0] b_bias;
-  assign {b_a, b_b, b_bias} = edge_coefs(b_vx_q, b_vy_q);
+  logic [6*CB+2:0] b_coefs;   // one vector: a concatenation on the left is one call per part
+  assign b_coefs = edge_coefs(b_vx_q, b_vy_q);
+  assign {b_a, b_b, b_bias} = b_coefs;
   for (genvar k = 0; k < 3; k++) begin : g_p
     assign b_p[k*(CB+1) +: CB+1] = (CB+1)'($signed(b_a[k*CB +: CB])) +
                                    (CB+1)'($signed(b_b[k*CB +: CB]));
