@@ -24,9 +24,9 @@ void compare_swap(Vec2i& a, Vec2i& b) {
 
 TradVertices TradVertexQuantizer::run(const TriangleSetup& t) const {
   TradVertices out;
-  // Drop the fraction: the integer pixel that contains the vertex.
-  for (int i = 0; i < 3; ++i)
-    out.p[i] = Vec2i{floor_div(t.v[i].x, unit_), floor_div(t.v[i].y, unit_)};
+  // Drop the fraction: the integer pixel that contains the vertex (an arithmetic shift is the
+  // floor).
+  for (int i = 0; i < 3; ++i) out.p[i] = Vec2i{t.v[i].x >> frac_bits_, t.v[i].y >> frac_bits_};
   // Integer area 0: the three pixels lie on one line (or coincide), nothing is drawn (fig. 2.4).
   const int64_t area = (out.p[1].x - out.p[0].x) * (out.p[2].y - out.p[0].y) -
                        (out.p[1].y - out.p[0].y) * (out.p[2].x - out.p[0].x);
@@ -120,8 +120,12 @@ bool BresenhamLine::row_run(int64_t y, RowRun& run) const {
 // ---- stage 3 ----
 
 TradTriangleResult TradSpanFiller::run_triangle(const TriangleSetup& t, SpanList& out) {
+  return fill(t, quantizer_.run(t), out);
+}
+
+TradTriangleResult TradSpanFiller::fill(const TriangleSetup& t, const TradVertices& v, SpanList& out) {
   TradTriangleResult r;
-  r.verts = quantizer_.run(t);
+  r.verts = v;
   if (r.verts.empty) return r;
   const Vec2i* p = r.verts.p;
   // The long edge and the two short ones, each drawn downward.

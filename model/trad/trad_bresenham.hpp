@@ -54,11 +54,11 @@ struct TradVertices {
 
 class TradVertexQuantizer {
  public:
-  explicit TradVertexQuantizer(const RasterConfig& cfg) : unit_(cfg.unit()) {}
+  explicit TradVertexQuantizer(const RasterConfig& cfg) : frac_bits_(cfg.frac_bits()) {}
   TradVertices run(const TriangleSetup& t) const;
 
  private:
-  int64_t unit_;  // one pixel in frac_bits() units
+  int frac_bits_;  // one pixel is 2^frac_bits_ units: the integer pixel is v >> frac_bits_
 };
 
 // ---- stage 2: one Bresenham line ----
@@ -127,6 +127,9 @@ class TradSpanFiller {
  public:
   explicit TradSpanFiller(const RasterConfig& cfg) : cfg_(cfg), quantizer_(cfg) {}
   TradTriangleResult run_triangle(const TriangleSetup& t, SpanList& out);
+  // Stages 2 and 3 on the vertices stage 1 gave for t (the timed model's walk stage, whose
+  // setup stage ran stage 1).
+  TradTriangleResult fill(const TriangleSetup& t, const TradVertices& v, SpanList& out);
 
  private:
   RasterConfig cfg_;

@@ -11,6 +11,12 @@ namespace trirast::sc {
 
 void TradSetupStage::configure(const RasterConfig& cfg) {
   quantizer_ = std::make_unique<TradVertexQuantizer>(cfg);
+  collinear_ = 0;
+}
+
+void TradSetupStage::add_counters(std::map<std::string, uint64_t>& work) const {
+  SetupStageBase<TradSetupTxn>::add_counters(work);
+  if (collinear_ > 0) add_counter(work, "trad_collinear", collinear_);
 }
 
 uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) {
@@ -19,7 +25,7 @@ uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn
   x.tri = &t;
   x.verts = quantizer_->run(t);
   if (x.verts.empty) {
-    ++run_->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
+    ++collinear_;  // never reaches the walk stage's work
     return kRetired;
   }
   // The box the walk stage covers: the integer vertices' bounding box (rows p0.y .. p2.y).
@@ -37,20 +43,27 @@ uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn
 void TradWalkStage::configure(const RasterConfig& cfg) {
   steps_long = steps_short = 0;
   filler_ = std::make_unique<TradSpanFiller>(cfg);
+  work_sum_ = TradTriangleResult{};
+  any_work_ = false;
 }
 
 void TradWalkStage::add_counters(std::map<std::string, uint64_t>& work) const {
   WalkStageBase<TradSetupTxn>::add_counters(work);
   add_counter(work, "busy_cycles.long_walker", steps_long);
   add_counter(work, "busy_cycles.short_walker", steps_short);
+  if (any_work_) add_trad_work(work_sum_, work);
 }
 
 uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
-  RunState& r = *run_;
-  // The datapath: the spans of the rows inside the viewport, in row order.
+  // The datapath (stages 2 and 3 on the setup stage's vertices): the spans of the rows inside the
+  // viewport, in row order.
   row_spans_.clear();
-  const TradTriangleResult res = filler_->run_triangle(*x.tri, row_spans_);
-  add_trad_work(res, r.work);
+  const TradTriangleResult res = filler_->fill(*x.tri, x.verts, row_spans_);
+  for (int e = 0; e < 3; ++e) work_sum_.edge_steps[e] += res.edge_steps[e];
+  work_sum_.rows_visited += res.rows_visited;
+  work_sum_.spans += res.spans;
+  work_sum_.pixels += res.pixels;
+  any_work_ = true;
   const TradWalkTiming timing(x.verts);
   uint64_t t = h + 1;
   size_t next_span = 0;
