@@ -156,9 +156,7 @@ double simulate(int unit, const SetupResult& setup, const RasterConfig& cfg, Eng
   if (!s.producer->finished() || s.unit->records().size() != setup.tris.size())
     throw std::runtime_error("SystemC model: the run stopped before its end");
   out.cycles = s.unit->take_records();
-  uint64_t total = 0;
-  for (const TriangleCycles& c : out.cycles) total = std::max(total, c.done_cycle + 1);
-  out.total_cycles = total;
+  out.total_cycles = s.unit->done_end_cycle();
   return secs;
 }
 

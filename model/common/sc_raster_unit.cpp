@@ -1,5 +1,6 @@
 #include "common/sc_raster_unit.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace trirast::sc {
@@ -26,6 +27,7 @@ void RasterUnitSc::restart(const RasterConfig& cfg, VcdRecorder* trace) {
   state_.trace = trace;
   start_ = now;
   port_ready_ = 0;
+  done_end_ = 0;
   begin_stream();
 }
 
@@ -57,6 +59,8 @@ uint64_t RasterUnitSc::offer(const TriangleSetup& t, uint64_t offered) {
   if (!state_.downstream) state_.downstream = spans.operator->();
   const uint64_t a = std::max(offered, port_ready_);
   port_ready_ = accept(t, state_.records.size(), a);
+  // The triangle's record is complete (accept() ran it through the whole unit).
+  done_end_ = std::max(done_end_, state_.records.back().done_cycle + 1);
   return a;
 }
 

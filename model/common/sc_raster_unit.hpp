@@ -94,6 +94,9 @@ class RasterUnitSc : public sc_core::sc_module {
   const std::vector<TriangleCycles>& records() const { return state_.records; }
   // Moves the records out (a caller done with the stream's records; records() is empty after).
   std::vector<TriangleCycles> take_records() { return std::move(state_.records); }
+  // One past the latest done cycle of the records so far (0 before the first): the stream's
+  // total cycles.
+  uint64_t done_end_cycle() const { return done_end_; }
   // Room for n records, for a caller that knows the stream's length (saves the regrowth).
   void reserve_records(size_t n) { state_.records.reserve(n); }
   // The stream's work counters so far: busy_cycles.* / stall_cycles.* per module, the datapath's
@@ -136,6 +139,7 @@ class RasterUnitSc : public sc_core::sc_module {
   sc_core::sc_time period_;
   sc_core::sc_time start_;  // the SystemC time of the stream's cycle 0
   uint64_t port_ready_ = 0;
+  uint64_t done_end_ = 0;  // done_end_cycle()
 };
 
 }  // namespace trirast::sc

@@ -10,7 +10,6 @@
 #pragma once
 #include <algorithm>
 #include <cstdint>
-#include <deque>
 #include <exception>
 #include <map>
 #include <string>
@@ -100,7 +99,7 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
     run_ = run;
     sig_ = sig;
     depth_ = uint64_t(run->cfg.fifo_depth);
-    pops_.clear();
+    head_ = size_ = 0;
     last_pop_ = 0;
     any_pop_ = false;
     valid_cycles_ = 0;
@@ -109,15 +108,18 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
 
   // Occupancy at the start of cycle t (t never decreases between calls of one run).
   uint64_t count_at(uint64_t t) {
-    while (!pops_.empty() && pops_.front() < t) pops_.pop_front();
-    return pops_.size();
+    while (size_ > 0 && pops_[head_] < t) {
+      head_ = (head_ + 1) & mask_;
+      --size_;
+    }
+    return size_;
   }
   // First cycle >= t whose start-of-cycle occupancy is <= DEPTH - n (room for n pushes).
   uint64_t first_room(uint64_t t, uint64_t n) override {
     const uint64_t c = count_at(t);
     if (c + n <= depth_) return t;
     const uint64_t k = c + n - depth_;  // pops needed
-    return pops_[k - 1] + 1;
+    return pops_[(head_ + k - 1) & mask_] + 1;
   }
   // Pushes a span at the end of cycle t (t >= every earlier push's cycle).
   void push(const Span& s, size_t pos, uint64_t t) override {
@@ -125,7 +127,9 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
     const uint64_t pop = run_->downstream->next_ready(avail);
     last_pop_ = pop;
     any_pop_ = true;
-    pops_.push_back(pop);
+    if (size_ == pops_.size()) grow();
+    pops_[(head_ + size_) & mask_] = pop;
+    ++size_;
     ++pushes_;
     valid_cycles_ += pop - avail + 1;
     if (VcdRecorder* tr = run_->trace) {
@@ -152,7 +156,19 @@ class SpanFifo : public sc_core::sc_module, public SpanPushIf {
   RunState* run_ = nullptr;
   SpanTraceSignals sig_;
   uint64_t depth_ = 8;
-  std::deque<uint64_t> pops_;  // pop cycles of the spans pushed so far and not yet known gone
+  // Doubles the ring, its entries from index 0 on.
+  void grow() {
+    std::vector<uint64_t> bigger(pops_.size() * 2);
+    for (size_t i = 0; i < size_; ++i) bigger[i] = pops_[(head_ + i) & mask_];
+    pops_.swap(bigger);
+    head_ = 0;
+    mask_ = pops_.size() - 1;
+  }
+
+  // Pop cycles of the spans pushed so far and not yet known gone, oldest first: a ring of
+  // pops_.size() (a power of two) entries from head_.
+  std::vector<uint64_t> pops_ = std::vector<uint64_t>(64);
+  size_t head_ = 0, size_ = 0, mask_ = 63;
   uint64_t last_pop_ = 0;
   bool any_pop_ = false;
   uint64_t valid_cycles_ = 0, pushes_ = 0;

@@ -25,6 +25,8 @@ uint64_t HalfspaceSetupStageSc::set_up(const TriangleSetup& t, uint64_t a, Halfs
 void HalfspaceWalkStageSc::configure(const RasterConfig& cfg) {
   unit_ = std::make_unique<HalfspaceUnit>(cfg);
   walker_cycles = walker_wait = emitter_pushes = 0;
+  work_sum_ = HalfspaceWork{};
+  any_work_ = false;
 }
 
 void HalfspaceWalkStageSc::add_counters(std::map<std::string, uint64_t>& work) const {
@@ -32,15 +34,18 @@ void HalfspaceWalkStageSc::add_counters(std::map<std::string, uint64_t>& work) c
   add_counter(work, "busy_cycles.tile_walker", walker_cycles);
   add_counter(work, "stall_cycles.tile_walker", walker_wait);
   add_counter(work, "busy_cycles.span_emitter", emitter_pushes);
+  if (any_work_) add_hs_work(work_sum_, work);
 }
 
 uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
-  RunState& r = *run_;
-  HalfspaceTriangleResult res;
+  HalfspaceTriangleResult& res = res_;
   res.setup = x.setup;
+  res.bands.clear();
+  res.work = HalfspaceWork{};
   spans_.clear();
   unit_->walk(res, spans_);
-  add_hs_work(res.work, r.work);
+  work_sum_ += res.work;
+  any_work_ = true;
   uint64_t t = h + 1;        // the walker's first cycle of the next band
   uint64_t last_push = 0;    // the emitter's last push so far (0: none; every push is > h)
   uint64_t w = h;            // the cycle the last band went to the emitter

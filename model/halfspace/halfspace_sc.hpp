@@ -58,6 +58,10 @@ class HalfspaceWalkStageSc : public WalkStageBase<HalfspaceSetupTxn> {
   uint64_t walk(HalfspaceSetupTxn& x, uint64_t h) override;
   std::unique_ptr<HalfspaceUnit> unit_;
   SpanList spans_;
+  HalfspaceTriangleResult res_;  // the current triangle's datapath result (its bands reused)
+  // The walked triangles' datapath work, summed (add_hs_work once per read of the statistics).
+  HalfspaceWork work_sum_;
+  bool any_work_ = false;  // a triangle was walked
 };
 
 using HalfspaceUnitSc = PipelineUnitSc<HalfspaceSetupStageSc, HalfspaceWalkStageSc, HalfspaceSetupTxn>;

@@ -26,6 +26,18 @@ struct HalfspaceBand {
 struct HalfspaceWork {
   uint64_t units_tested = 0, rejected = 0, accepted = 0, partial = 0;
   uint64_t stamps = 0, spans = 0, pixels = 0, bands = 0;
+
+  HalfspaceWork& operator+=(const HalfspaceWork& o) {
+    units_tested += o.units_tested;
+    rejected += o.rejected;
+    accepted += o.accepted;
+    partial += o.partial;
+    stamps += o.stamps;
+    spans += o.spans;
+    pixels += o.pixels;
+    bands += o.bands;
+    return *this;
+  }
 };
 
 struct HalfspaceTriangleResult {

@@ -24,9 +24,9 @@ void compare_swap(Vec2i& a, Vec2i& b) {
 
 TradVertices TradVertexQuantizer::run(const TriangleSetup& t) const {
   TradVertices out;
-  // Drop the fraction: the integer pixel that contains the vertex.
-  for (int i = 0; i < 3; ++i)
-    out.p[i] = Vec2i{floor_div(t.v[i].x, unit_), floor_div(t.v[i].y, unit_)};
+  // Drop the fraction: the integer pixel that contains the vertex (an arithmetic shift is the
+  // floor).
+  for (int i = 0; i < 3; ++i) out.p[i] = Vec2i{t.v[i].x >> frac_bits_, t.v[i].y >> frac_bits_};
   // Integer area 0: the three pixels lie on one line (or coincide), nothing is drawn (fig. 2.4).
   const int64_t area = (out.p[1].x - out.p[0].x) * (out.p[2].y - out.p[0].y) -
                        (out.p[1].y - out.p[0].y) * (out.p[2].x - out.p[0].x);
@@ -120,39 +120,53 @@ bool BresenhamLine::row_run(int64_t y, RowRun& run) const {
 // ---- stage 3 ----
 
 TradTriangleResult TradSpanFiller::run_triangle(const TriangleSetup& t, SpanList& out) {
+  return fill(t, quantizer_.run(t), out);
+}
+
+TradTriangleResult TradSpanFiller::fill(const TriangleSetup& t, const TradVertices& v, SpanList& out) {
   TradTriangleResult r;
-  r.verts = quantizer_.run(t);
+  r.verts = v;
   if (r.verts.empty) return r;
-  const Vec2i* p = r.verts.p;
+  begin(v, r);
+  // Rows of the triangle inside the viewport only: the rows above and below cost nothing here.
+  const int64_t y_first = std::max<int64_t>(v.p[0].y, 0);
+  const int64_t y_last = std::min<int64_t>(v.p[2].y, int64_t(cfg_.height) - 1);
+  RowRun run[3];
+  bool on[3];
+  for (int64_t y = y_first; y <= y_last; ++y) row(t, y, run, on, r, out);
+  return r;
+}
+
+void TradSpanFiller::begin(const TradVertices& v, TradTriangleResult& r) {
+  r.verts = v;
+  const Vec2i* p = v.p;
   // The long edge and the two short ones, each drawn downward.
   line_[0].start(p[0], p[2]);
   line_[1].start(p[0], p[1]);
   line_[2].start(p[1], p[2]);
   for (int e = 0; e < 3; ++e) r.edge_steps[e] = uint64_t(line_[e].steps());
+}
 
-  // Rows of the triangle inside the viewport only: the rows above and below cost nothing here.
-  const int64_t y_first = std::max<int64_t>(p[0].y, 0);
-  const int64_t y_last = std::min<int64_t>(p[2].y, int64_t(cfg_.height) - 1);
-  for (int64_t y = y_first; y <= y_last; ++y) {
-    ++r.rows_visited;
-    int64_t left = std::numeric_limits<int64_t>::max();
-    int64_t right = std::numeric_limits<int64_t>::min();
-    for (int e = 0; e < 3; ++e) {
-      RowRun run;
-      if (!line_[e].row_run(y, run)) continue;
-      left = std::min(left, run.x_first);
-      right = std::max(right, run.x_last);
-    }
-    if (left > right) continue;  // no edge on the row (cannot happen: the long edge spans all)
-    // Edge pixels included, the interior between them filled, clipped to the viewport.
-    const int64_t begin = std::max<int64_t>(left, 0);
-    const int64_t end = std::min<int64_t>(right + 1, cfg_.width);
-    if (begin >= end) continue;
-    out.push_back(Span{t.index, int32_t(y), int32_t(begin), int32_t(end)});
-    ++r.spans;
-    r.pixels += uint64_t(end - begin);
+void TradSpanFiller::row(const TriangleSetup& t, int64_t y, RowRun run[3], bool on[3],
+                         TradTriangleResult& r, SpanList& out) const {
+  int64_t left = std::numeric_limits<int64_t>::max();
+  int64_t right = std::numeric_limits<int64_t>::min();
+  for (int e = 0; e < 3; ++e) {
+    on[e] = line_[e].row_run(y, run[e]);
+    if (!on[e]) continue;
+    left = std::min(left, run[e].x_first);
+    right = std::max(right, run[e].x_last);
   }
-  return r;
+  if (y < 0 || y >= int64_t(cfg_.height)) return;  // outside the viewport: no span, not counted
+  ++r.rows_visited;
+  if (left > right) return;  // no edge on the row (cannot happen: the long edge spans all)
+  // Edge pixels included, the interior between them filled, clipped to the viewport.
+  const int64_t begin = std::max<int64_t>(left, 0);
+  const int64_t end = std::min<int64_t>(right + 1, cfg_.width);
+  if (begin >= end) return;
+  out.push_back(Span{t.index, int32_t(y), int32_t(begin), int32_t(end)});
+  ++r.spans;
+  r.pixels += uint64_t(end - begin);
 }
 
 void add_trad_work(const TradTriangleResult& r, std::map<std::string, uint64_t>& work) {

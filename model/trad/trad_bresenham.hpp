@@ -54,11 +54,11 @@ struct TradVertices {
 
 class TradVertexQuantizer {
  public:
-  explicit TradVertexQuantizer(const RasterConfig& cfg) : unit_(cfg.unit()) {}
+  explicit TradVertexQuantizer(const RasterConfig& cfg) : frac_bits_(cfg.frac_bits()) {}
   TradVertices run(const TriangleSetup& t) const;
 
  private:
-  int64_t unit_;  // one pixel in frac_bits() units
+  int frac_bits_;  // one pixel is 2^frac_bits_ units: the integer pixel is v >> frac_bits_
 };
 
 // ---- stage 2: one Bresenham line ----
@@ -127,6 +127,16 @@ class TradSpanFiller {
  public:
   explicit TradSpanFiller(const RasterConfig& cfg) : cfg_(cfg), quantizer_(cfg) {}
   TradTriangleResult run_triangle(const TriangleSetup& t, SpanList& out);
+  // Stages 2 and 3 on the vertices stage 1 gave for t.
+  TradTriangleResult fill(const TriangleSetup& t, const TradVertices& v, SpanList& out);
+
+  // fill() a row at a time, for a caller that visits every row p0.y .. p2.y (the timed walk
+  // stage): begin() starts the three lines of non-empty vertices v (r.verts, r.edge_steps);
+  // row() gives the lines' runs on row y (on[e] false: line e does not touch it) and, for a row
+  // inside the viewport, counts it in r and appends its span, if any, to out.
+  void begin(const TradVertices& v, TradTriangleResult& r);
+  void row(const TriangleSetup& t, int64_t y, RowRun run[3], bool on[3], TradTriangleResult& r,
+           SpanList& out) const;
 
  private:
   RasterConfig cfg_;

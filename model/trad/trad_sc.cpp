@@ -11,6 +11,12 @@ namespace trirast::sc {
 
 void TradSetupStage::configure(const RasterConfig& cfg) {
   quantizer_ = std::make_unique<TradVertexQuantizer>(cfg);
+  collinear_ = 0;
+}
+
+void TradSetupStage::add_counters(std::map<std::string, uint64_t>& work) const {
+  SetupStageBase<TradSetupTxn>::add_counters(work);
+  if (collinear_ > 0) add_counter(work, "trad_collinear", collinear_);
 }
 
 uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) {
@@ -19,7 +25,7 @@ uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn
   x.tri = &t;
   x.verts = quantizer_->run(t);
   if (x.verts.empty) {
-    ++run_->work["trad_collinear"];  // never reaches the walk stage's add_trad_work
+    ++collinear_;  // never reaches the walk stage's work
     return kRetired;
   }
   // The box the walk stage covers: the integer vertices' bounding box (rows p0.y .. p2.y).
@@ -37,37 +43,49 @@ uint64_t TradSetupStage::set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn
 void TradWalkStage::configure(const RasterConfig& cfg) {
   steps_long = steps_short = 0;
   filler_ = std::make_unique<TradSpanFiller>(cfg);
+  work_sum_ = TradTriangleResult{};
+  any_work_ = false;
 }
 
 void TradWalkStage::add_counters(std::map<std::string, uint64_t>& work) const {
   WalkStageBase<TradSetupTxn>::add_counters(work);
   add_counter(work, "busy_cycles.long_walker", steps_long);
   add_counter(work, "busy_cycles.short_walker", steps_short);
+  if (any_work_) add_trad_work(work_sum_, work);
 }
 
 uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
-  RunState& r = *run_;
-  // The datapath: the spans of the rows inside the viewport, in row order.
-  row_spans_.clear();
-  const TradTriangleResult res = filler_->run_triangle(*x.tri, row_spans_);
-  add_trad_work(res, r.work);
-  const TradWalkTiming timing(x.verts);
+  // The datapath (stages 2 and 3 on the setup stage's vertices) row by row: the three lines' runs
+  // on every row p0.y .. p2.y, which give the row's steps, and the spans of the rows inside the
+  // viewport.
+  TradTriangleResult res;
+  filler_->begin(x.verts, res);
+  const int64_t first = x.verts.p[0].y, last = x.verts.p[2].y;
+  RowRun run[3];
+  bool on[3];
   uint64_t t = h + 1;
-  size_t next_span = 0;
-  for (int64_t y = timing.first_row(); y <= timing.last_row(); ++y) {
-    t = start_row(t, 1, uint64_t(y - timing.first_row()));
+  for (int64_t y = first; y <= last; ++y) {
+    t = start_row(t, 1, uint64_t(y - first));
+    row_spans_.clear();
+    filler_->row(*x.tri, y, run, on, res, row_spans_);
+    uint64_t steps[3];
+    for (int e = 0; e < 3; ++e) steps[e] = TradWalkTiming::steps_of_run(x.verts, e, y, on[e], run[e]);
     // The row takes as many cycles as the busier walker steps (at least one).
-    const uint64_t l = timing.steps_on_row(0, y);
-    const uint64_t s = timing.steps_on_row(1, y) + timing.steps_on_row(2, y);
+    const uint64_t l = steps[0];
+    const uint64_t s = steps[1] + steps[2];
     steps_long += l;
     steps_short += s;
     const uint64_t c = std::max<uint64_t>(1, std::max(l, s));
     const uint64_t end = t + c - 1;  // the row's span is pushed at the end of its last cycle
-    if (next_span < row_spans_.size() && row_spans_[next_span].y == y)
-      spans->push(row_spans_[next_span++], x.pos, end);
+    if (!row_spans_.empty()) spans->push(row_spans_.front(), x.pos, end);
     counters.busy += c;
     t = end + 1;
   }
+  for (int e = 0; e < 3; ++e) work_sum_.edge_steps[e] += res.edge_steps[e];
+  work_sum_.rows_visited += res.rows_visited;
+  work_sum_.spans += res.spans;
+  work_sum_.pixels += res.pixels;
+  any_work_ = true;
   return t - 1;
 }
 

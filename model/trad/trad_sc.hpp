@@ -35,6 +35,7 @@ enum TradSetupState : uint64_t { StSort = 1, StLine = 2 };
 class TradSetupStage : public SetupStageBase<TradSetupTxn> {
  public:
   explicit TradSetupStage(sc_core::sc_module_name name) : SetupStageBase<TradSetupTxn>(name) {}
+  void add_counters(std::map<std::string, uint64_t>& work) const override;
 
  private:
   void configure(const RasterConfig& cfg) override;
@@ -43,6 +44,7 @@ class TradSetupStage : public SetupStageBase<TradSetupTxn> {
   }
   uint64_t set_up(const TriangleSetup& t, uint64_t a, TradSetupTxn& x) override;
   std::unique_ptr<TradVertexQuantizer> quantizer_;
+  uint64_t collinear_ = 0;  // triangles retired in StSort ("trad_collinear")
 };
 
 // The walk stage: rows p0.y .. p2.y; row y costs max(1, long-edge steps, short-side steps) cycles
@@ -58,6 +60,9 @@ class TradWalkStage : public WalkStageBase<TradSetupTxn> {
   uint64_t walk(TradSetupTxn& x, uint64_t h) override;
   std::unique_ptr<TradSpanFiller> filler_;
   SpanList row_spans_;
+  // The walked triangles' datapath work, summed (add_trad_work once per read of the statistics).
+  TradTriangleResult work_sum_;
+  bool any_work_ = false;  // a triangle was walked
 };
 
 // The whole unit (elaborated once per process).

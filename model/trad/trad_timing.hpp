@@ -22,6 +22,9 @@ class TradWalkTiming {
   // Bresenham steps of line e that land on row y: its pixels on the row, minus its start pixel
   // on its first row (the start is loaded, not stepped to). Summed over all rows: steps().
   uint64_t steps_on_row(int e, int64_t y) const;
+  // The same from line e's run on row y as row_run gives it (on: the line touches the row), for
+  // a caller that has the runs (TradSpanFiller::row); v are the triangle's sorted vertices.
+  static uint64_t steps_of_run(const TradVertices& v, int e, int64_t y, bool on, const RowRun& run);
   // Cycles the walk stage spends on row y: max(1, long steps, short steps) with
   // short steps = steps of p0->p1 + steps of p1->p2 on the row.
   uint64_t row_cycles(int64_t y) const {
@@ -33,8 +36,8 @@ class TradWalkTiming {
   const BresenhamLine& line(int e) const { return line_[e]; }
 
  private:
+  TradVertices v_;
   BresenhamLine line_[3];
-  int64_t start_y_[3];
   int64_t p0y_, p2y_;
 };
 
