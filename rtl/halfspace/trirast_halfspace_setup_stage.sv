@@ -59,7 +59,8 @@ module trirast_halfspace_setup_stage #(
 
   // E_end = E_L + ((Xmax & ~(U-1)) * A) << F: the first unit of a right-to-left band.
   logic [BoxBits-1:0] xlast;
-  assign xlast = hand_xmax_o & ~BoxBits'(UnitSize - 1);
+  // ~(W'(x)), not ~W'(x): Yosys 0.23 reads the latter as W'(x) (docs/formal.md)
+  assign xlast = hand_xmax_o & ~(BoxBits'(UnitSize - 1));
   logic [3*EdgeBits-1:0] eend;
   always_comb begin
     for (int k = 0; k < 3; k++) begin

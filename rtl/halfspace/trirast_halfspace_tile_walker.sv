@@ -209,7 +209,8 @@ module trirast_halfspace_tile_walker #(
           end
           i0_d = '0;
           j0_d = '0;
-          iend_d = {1'b0, hand_xmax_i & ~BoxBits'(U - 1)};
+          // ~(W'(x)), not ~W'(x): Yosys 0.23 reads the latter as W'(x) (docs/formal.md)
+          iend_d = {1'b0, hand_xmax_i & ~(BoxBits'(U - 1))};
           back_d = 1'b0;
           seen_d = 1'b0;
           spans_d = 1'b0;
