@@ -143,28 +143,13 @@ module trirast_improved2_corner_serial #(
   assign unused_v2 = ^{vx_i[2*P +: P], vy_i[2*P +: P]};
 
   // ---- the three edges: P, M, the digit terms, accumulators ----
-  // A digit cycle's sum: the terms, P or M by the bit pair, complemented when the x bit is 0,
-  // added in a tree for DB = 4 (a function, so a Verilated model forms it in digit cycles only).
-  function automatic logic signed [TW-1:0] digit_sum(input logic [DB-1:0] dgx,
-      input logic [DB-1:0] dgy, input logic signed [MW-1:0] pn, input logic signed [MW-1:0] m);
-    logic signed [MW-1:0] u [DB];
-    logic signed [MW+1:0] lo, hi;
-    for (int j = 0; j < DB; j++) u[j] = ((dgx[j] == dgy[j]) ? ~pn : m) ^ {MW{!dgx[j]}};
-    if (DB == 4) begin
-      lo = (MW+2)'(u[0]) + ((MW+2)'(u[1]) <<< 1);
-      hi = (MW+2)'(u[2]) + ((MW+2)'(u[3]) <<< 1);
-      digit_sum = TW'(lo) + (TW'(hi) <<< 2);
-    end else begin
-      digit_sum = '0;
-      for (int j = 0; j < DB; j++) digit_sum = digit_sum + (TW'(u[j]) <<< j);
-    end
-  endfunction
   for (genvar k = 0; k < 3; k++) begin : g_edge
     localparam int V = (k == 1) ? 1 : 0;   // the edge's vertex
     logic run_q, run_d;   // reset: AccParity_A reads it
     logic signed [MW-1:0] ak, bk, pn_q, m_q;   // pn_q: ~P (no inverters at E's subtraction)
     logic [AW-1:0] acc_q, acc_d;
     logic [DB-1:0] dgx, dgy;
+    logic signed [TW-1:0] tsum;
     assign dgx = dgx_v[V*DB +: DB];
     assign dgy = dgy_v[V*DB +: DB];
     assign ak  = MW'($signed(a_i[k*CB +: CB]));
@@ -175,13 +160,29 @@ module trirast_improved2_corner_serial #(
         m_q <= ak - bk;
       end
     end
+    // The terms: P or M by the bit pair, complemented when the x bit is 0.
+    logic signed [MW-1:0] u [DB];
+    for (genvar j = 0; j < DB; j++) begin : g_term
+      assign u[j] = ((dgx[j] == dgy[j]) ? ~pn_q : m_q) ^ {MW{!dgx[j]}};
+    end
+    if (DB == 4) begin : g_tree4
+      logic signed [MW+1:0] lo, hi;
+      assign lo = (MW+2)'(u[0]) + ((MW+2)'(u[1]) <<< 1);
+      assign hi = (MW+2)'(u[2]) + ((MW+2)'(u[3]) <<< 1);
+      assign tsum = TW'(lo) + (TW'(hi) <<< 2);
+    end else begin : g_chain
+      always_comb begin
+        tsum = '0;
+        for (int j = 0; j < DB; j++) tsum = tsum + (TW'(u[j]) <<< j);
+      end
+    end
     always_comb begin
       acc_d = acc_q;  run_d = run_q;
       if (start_i) begin
         run_d = run_i[k];
         if (run_i[k]) acc_d = '0;
       end else if (ptr_q != '0 && run_q) begin
-        acc_d = {acc_q[AW-DB-1:0], ~dgx} + AW'(digit_sum(dgx, dgy, pn_q, m_q));
+        acc_d = {acc_q[AW-DB-1:0], ~dgx} + AW'(tsum);
       end
     end
     always_ff @(posedge clk_i) begin
