@@ -19,6 +19,7 @@ const std::map<std::string, std::string>& table() {
       {"config.subpixel_bits", "vertex snapping: coordinates are multiples of 1/2^S pixel (--subpixel-bits)"},
       {"config.coord_bits", "signed integer bits of a coordinate (--coord-bits)"},
       {"config.cull", "face culling: none, back or front (--cull)"},
+      {"config.rtl_checked", "the RTL engines run their checked Verilated builds (--rtl-checked, or implied by --coverage or --trace)"},
       {"config.box_bits", "bits of a box-relative coordinate in the unit (--box-bits)"},
       {"config.boundary", "the improved unit's boundary traversal: step or divide (--boundary)"},
       {"config.divider", "the improved unit's divider iterations: adaptive or fixed (--divider)"},
