@@ -245,11 +245,7 @@ int cmd_fuzz(int argc, char** argv) {
   };
   check_output_path(repro_path(0), "--out");
   if (a.has("--coverage")) check_coverage_option(a.get("--coverage"), names, "fuzz");
-  if (a.has("--rtl-checked") &&
-      std::none_of(names.begin(), names.end(), [](const std::string& n) {
-        const EngineDescriptor* d = find_engine_descriptor(n);
-        return d && d->rtl_builds;
-      }))
+  if (a.has("--rtl-checked") && std::none_of(names.begin(), names.end(), is_rtl_engine))
     throw UsageError("trirast fuzz: --rtl-checked: applies to none of the engines run (it applies "
                      "to the RTL engines)");
   const bool rtl_checked = a.has("--rtl-checked") || a.has("--coverage");

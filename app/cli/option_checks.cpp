@@ -72,12 +72,10 @@ void check_trace_window(int64_t first, int64_t last, uint64_t triangles, const s
                      (triangles ? std::to_string(triangles - 1) : std::string("none")) + ")");
 }
 
-namespace {
 bool is_rtl_engine(const std::string& engine) {
   const EngineDescriptor* d = find_engine_descriptor(engine);
   return d && d->rtl_builds;
 }
-}  // namespace
 
 void check_coverage_option(const std::string& path, const std::vector<std::string>& engines,
                            const std::string& cmd) {

@@ -38,6 +38,9 @@ void check_png_path(const std::string& path, const std::string& cmd, const std::
 // holds no triangle of a scene of `triangles` triangles.
 void check_trace_window(int64_t first, int64_t last, uint64_t triangles, const std::string& cmd);
 
+// Whether `engine` is a view with Verilated builds (an RTL engine, units.hpp).
+bool is_rtl_engine(const std::string& engine);
+
 // --coverage FILE (docs/coverage.md): the cover points of the RTL engines among `engines` (a view
 // with Verilated builds, units.hpp). Refuses it when none of them is an RTL engine, or when the
 // build has no cover points (TRIRAST_RTL_COVERAGE=OFF), and an unwritable FILE; clears the counts
