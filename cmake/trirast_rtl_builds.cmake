@@ -21,7 +21,7 @@
 # and trace support (--trace-fst). An entry "speed:SPEC" is the speed build of the checked build
 # SPEC (prefix suffix _speed): the same RTL and parameters without assertions, cover points and
 # trace support. The builds a default run picks have one (each unit's default configuration at
-# N = 1, DEPTH = 8; improved2 in its default corner form): a run takes it unless it asks for the
+# N = 1, DEPTH = 8; improved2 in each corner form): a run takes it unless it asks for the
 # checked build (RasterConfig::rtl_checked: --rtl-checked, --coverage) or a trace (rtl_builds.hpp,
 # run_build; docs/rtl.md, "Speed and checked builds").
 #
@@ -95,6 +95,7 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "speed:improved:trirast_improved_top:TRIRAST_RTL_SOURCES:_n1:default:1:8"
     "speed:trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
+    "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
     "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1")
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()

@@ -73,6 +73,8 @@ module trirast_improved2_direct_test_2x2 #(
   assign valid_o = {row1 != 2'b00, row0 != 2'b00};
   assign y_o  = {y0_i + 1'b1, y0_i};
   assign xb_o = {x0_i + PB'(!row1[0]), x0_i + PB'(!row0[0])};
-  assign xe_o = {{1'b0, x0_i} + (PB + 1)'(row1[1] ? 2 : 1),
-                 {1'b0, x0_i} + (PB + 1)'(row0[1] ? 2 : 1)};
+  // Each element's constant sized as a whole: Yosys 0.23 reads (PB + 1)'(c ? 2 : 1) inside a
+  // concatenation as 0 (docs/formal.md, "Yosys 0.23's reading of size casts").
+  assign xe_o = {{1'b0, x0_i} + (row1[1] ? (PB + 1)'(2) : (PB + 1)'(1)),
+                 {1'b0, x0_i} + (row0[1] ? (PB + 1)'(2) : (PB + 1)'(1))};
 endmodule

@@ -162,7 +162,7 @@ module trirast_improved2_top #(
 
   assign b_retire = b_full_q && b_empty_q;
   assign b_take   = b_full_q && !b_empty_q && c_free;
-  assign tri_ready_o = !b_full_q || b_retire || b_take;
+  assign tri_ready_o = rst_ni && (!b_full_q || b_retire || b_take);  // low in reset (docs/port.md)
   assign box_retire_o = b_retire;
   assign box_retire_tag_o = b_tag_q;
 

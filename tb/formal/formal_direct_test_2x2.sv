@@ -117,9 +117,7 @@ module formal_direct_test_2x2 #(
     if (valid_o[1]) begin
       Row1Y: assert (y_o[PB +: PB] == PB'(y0_i + 1'b1));
       Row1Begin: assert (xb_o[PB +: PB] == f_xb[1]);
-`ifndef ROW1_END_UNCHECKED  // docs/formal.md "Not proven": Yosys 0.23 misreads the RTL's x_end
       Row1End: assert (xe_o[PB+1 +: PB+1] == f_xe[1]);
-`endif
     end
   end
 

@@ -14,8 +14,7 @@
 //   CountInRange    the span FIFO's occupancy stays within the configured depth (no push into a
 //                   full FIFO; the FIFO's own FifoNoOverflow_A/FifoNoUnderflow_A too)
 //   ValidIsCount    a span is offered exactly when the FIFO holds one
-//   TriNotTakenInReset  with TRI_READY_LOW_IN_RESET only (docs/formal.md: it fails, every unit
-//                   holds tri_ready_o high in reset, its set-up stage idle): tri_ready_o low in reset
+//   TriNotTakenInReset  tri_ready_o low in reset (no triangle is taken while rst_ni is low)
 module formal_top_ports (
   input logic clk_i
 );
@@ -152,9 +151,7 @@ module formal_top_ports (
       CountInRange: assert (fifo_count_o <= cfg_fifo_depth_i);
       ValidIsCount: assert (span_valid_o == (fifo_count_o != '0));
     end
-`ifdef TRI_READY_LOW_IN_RESET
     if (!rst_ni) TriNotTakenInReset: assert (!tri_ready_o);
-`endif
   end
 
   // ---- reachability (yosys-smtbmc -c): a span is offered, stalled, and the FIFO fills ----

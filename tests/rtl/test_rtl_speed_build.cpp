@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <map>
 #include <string>
 
 #include "common/cycle_columns.hpp"
@@ -49,49 +50,65 @@ std::map<std::string, uint64_t> comparable_work(std::map<std::string, uint64_t> 
   return w;
 }
 
-// Every unit has one speed build, of the default widths and N = 1.
+// Every unit has one speed build, of the default widths and N = 1; improved2 one per corner form
+// (1 radix 16, 0 products: both are timed units of docs/which-unit-wins.md).
 TEST(RtlSpeedBuild, DefaultBuildsHaveOne) {
   for (const Unit& u : kUnits) {
     SCOPED_TRACE(u.name);
-    int with = 0;
+    std::map<int, int> per_corner_form;
     for (const rtl::RtlBuild& b : u.builds())
       if (b.run_speed) {
-        ++with;
+        ++per_corner_form[b.corner_form];
         EXPECT_EQ(b.subpixel_bits, 8);
         EXPECT_EQ(b.endpoints, 1);
       }
-    EXPECT_EQ(with, 1);
+    const std::map<int, int> expected =
+        std::string(u.name) == "improved2" ? std::map<int, int>{{0, 1}, {1, 1}}
+                                           : std::map<int, int>{{0, 1}};
+    EXPECT_EQ(per_corner_form, expected);
   }
 }
 
-// mixed at the default configuration: the speed build and the checked build agree on every
-// span, every column of every triangle's cycles and every work counter; rtl_build_checked says
-// which ran.
+// The speed build and the checked build agree on every span, every column of every triangle's
+// cycles and every work counter; rtl_build_checked says which ran.
+void expect_builds_agree(const Unit& u, const SetupResult& setup, const RasterConfig& cfg) {
+  EngineResult speed, checked;
+  u.run(setup, cfg, 1, speed);
+  RasterConfig c2 = cfg;
+  c2.rtl_checked = true;
+  u.run(setup, c2, 1, checked);
+  EXPECT_EQ(speed.work.at("rtl_build_checked"), 0u);
+  EXPECT_EQ(checked.work.at("rtl_build_checked"), 1u);
+  ASSERT_GT(speed.spans.size(), 1000u);
+  EXPECT_TRUE(speed.spans == checked.spans)
+      << test::first_span_difference(speed.spans, "speed", checked.spans, "checked");
+  ASSERT_EQ(speed.cycles.size(), checked.cycles.size());
+  std::string report;
+  EXPECT_EQ(test::cycle_rows_mismatch(speed.cycles, "speed", checked.cycles, "checked",
+                                      u.name, report),
+            0u)
+      << report;
+  EXPECT_EQ(speed.total_cycles, checked.total_cycles);
+  EXPECT_EQ(comparable_work(speed.work), comparable_work(checked.work));
+}
+
+// mixed at the default configuration, every unit.
 TEST(RtlSpeedBuild, SpeedAndCheckedBuildsAgree) {
   RasterConfig cfg;
   cfg.validate();
   const SetupResult setup = test::scene("builtin:mixed", cfg);
   for (const Unit& u : kUnits) {
     SCOPED_TRACE(u.name);
-    EngineResult speed, checked;
-    u.run(setup, cfg, 1, speed);
-    RasterConfig c2 = cfg;
-    c2.rtl_checked = true;
-    u.run(setup, c2, 1, checked);
-    EXPECT_EQ(speed.work.at("rtl_build_checked"), 0u);
-    EXPECT_EQ(checked.work.at("rtl_build_checked"), 1u);
-    ASSERT_GT(speed.spans.size(), 1000u);
-    EXPECT_TRUE(speed.spans == checked.spans)
-        << test::first_span_difference(speed.spans, "speed", checked.spans, "checked");
-    ASSERT_EQ(speed.cycles.size(), checked.cycles.size());
-    std::string report;
-    EXPECT_EQ(test::cycle_rows_mismatch(speed.cycles, "speed", checked.cycles, "checked",
-                                        u.name, report),
-              0u)
-        << report;
-    EXPECT_EQ(speed.total_cycles, checked.total_cycles);
-    EXPECT_EQ(comparable_work(speed.work), comparable_work(checked.work));
+    expect_builds_agree(u, setup, cfg);
   }
+}
+
+// improved2's other corner form (products) has a speed build of its own.
+TEST(RtlSpeedBuild, Improved2ProductsFormBuildsAgree) {
+  RasterConfig cfg;
+  cfg.improved2.corner_form = 0;
+  cfg.validate();
+  expect_builds_agree(kUnits[2], test::scene("builtin:mixed", cfg), cfg);
 }
 
 // A traced run takes the checked build (the speed build has no trace support); a configuration
