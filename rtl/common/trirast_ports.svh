@@ -51,9 +51,10 @@
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i, \
   input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i, \
   input  logic [2:0]                            tri_bias_i
+// The set-up stage's tri_ready_o drives the top's stage_tri_ready, which the top gates with rst_ni.
 `define TRIRAST_CONNECT_TRIANGLE_PORT_VERTICES \
   .tri_valid_i (tri_valid_i), \
-  .tri_ready_o (tri_ready_o), \
+  .tri_ready_o (stage_tri_ready), \
   .tri_tag_i   (tri_tag_i), \
   .tri_vx_i    (tri_vx_i), \
   .tri_vy_i    (tri_vy_i)

@@ -1,7 +1,7 @@
 // The half-space unit's setup stage (docs/timing.md "The half-space unit", docs/unit.md): the
 // improved unit's interface (bounding box, edge terms) and the FSM
 // StIdle -> StBox -> StEdge -> StHold -> StIdle.
-//   StIdle : tri_ready_o (low in reset); the handshake registers the triangle.
+//   StIdle : tri_ready_o (the top gates it with the reset); the handshake registers the triangle.
 //   StBox  : the bounding box; an empty box retires the triangle here (box_retire_o).
 //   StEdge : registers E0 = E_L (the value at the box corner) and the value at the last unit of
 //            band row 0, E_end = E0 + ((Xmax & ~(U-1)) * A) << F (one multiplier per edge).
@@ -46,7 +46,7 @@ module trirast_halfspace_setup_stage #(
   logic accept, box_en, empty;
   logic [3*EdgeBits-1:0] el, er_unused, e0_q, e0_d, eend_q, eend_d;
 
-  assign tri_ready_o = rst_ni && state_q == StIdle;  // low in reset (docs/port.md)
+  assign tri_ready_o = state_q == StIdle;
   assign accept = tri_valid_i && tri_ready_o;
 
   trirast_box_stage u_interface (

@@ -39,6 +39,10 @@ module trirast_halfspace_top #(
   localparam int UnitSize = (TileSize > 0) ? TileSize : StampSize;
 
   logic hand_valid, hand_ready;
+  // The set-up stage's ready, gated with the reset: no triangle is taken while rst_ni is low
+  // (docs/port.md, "Clock, reset and configuration").
+  logic stage_tri_ready;
+  assign tri_ready_o = rst_ni && stage_tri_ready;
   `TRIRAST_HANDOFF_BOX_SIGNALS(hand_)
   logic [3*CoefBits-1:0] hand_a, hand_b;
   logic [3*EdgeBits-1:0] hand_e0, hand_eend;

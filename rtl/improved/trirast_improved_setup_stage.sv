@@ -1,6 +1,6 @@
 // The setup stage (docs/timing.md, "Setup stage"): the interface, three edge normalizers and
 // three edge lanes, with the FSM StIdle -> StBox -> StEdge -> StLanes -> StHold -> StIdle.
-//   StIdle : tri_ready_o (low in reset); the handshake registers the triangle (accept_cycle).
+//   StIdle : tri_ready_o (the top gates it with the reset); the handshake registers the triangle (accept_cycle).
 //   StBox  : the bounding box; an empty box retires the triangle here (box_retire_o).
 //   StEdge : corner values and normalizers; the lanes load their edges.
 //   StLanes: the lanes run (L = max L_k cycles).
@@ -131,7 +131,7 @@ module trirast_improved_setup_stage (
   end
 
   always_comb begin
-    tri_ready_o      = rst_ni && state_q == StIdle;  // low in reset (docs/port.md)
+    tri_ready_o      = state_q == StIdle;
     accept           = tri_valid_i && tri_ready_o;
     box_en           = state_q == StBox;
     box_retire_o     = box_en && empty;

@@ -38,6 +38,10 @@ module trirast_improved_top #(
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
+  // The set-up stage's ready, gated with the reset: no triangle is taken while rst_ni is low
+  // (docs/port.md, "Clock, reset and configuration").
+  logic stage_tri_ready;
+  assign tri_ready_o = rst_ni && stage_tri_ready;
   `TRIRAST_HANDOFF_BOX_SIGNALS(hand_)
   `TRIRAST_IMPROVED_HANDOFF_EDGES_SIGNALS(hand_)
   logic [3*RemBits-1:0] hand_entry_e;

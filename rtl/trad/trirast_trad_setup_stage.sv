@@ -1,6 +1,6 @@
 // The setup stage of the traditional-Bresenham unit (docs/timing.md, "The traditional unit"):
 // FSM StIdle -> StSort -> StLine -> StHold -> StIdle.
-//   StIdle : tri_ready_o (low in reset); the handshake registers the triangle's vertices (accept_cycle).
+//   StIdle : tri_ready_o (the top gates it with the reset); the handshake registers the triangle's vertices (accept_cycle).
 //   StSort : the quantizer (integer pixels, collinearity, sort); collinear pixels retire the
 //            triangle here (retire_o), else the sorted pixels are registered.
 //   StLine : Bresenham set-up of the lines p0->p2 (long), p0->p1, p1->p2, registered.
@@ -70,7 +70,7 @@ module trirast_trad_setup_stage (
   end
 
   always_comb begin
-    tri_ready_o  = rst_ni && state_q == StIdle;  // low in reset (docs/port.md)
+    tri_ready_o  = state_q == StIdle;
     accept       = tri_valid_i && tri_ready_o;
     sort_en      = state_q == StSort;
     line_en      = state_q == StLine;

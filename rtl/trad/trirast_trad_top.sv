@@ -41,6 +41,10 @@ module trirast_trad_top #(
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
+  // The set-up stage's ready, gated with the reset: no triangle is taken while rst_ni is low
+  // (docs/port.md, "Clock, reset and configuration").
+  logic stage_tri_ready;
+  assign tri_ready_o = rst_ni && stage_tri_ready;
   logic [TagBits-1:0] hand_tag;
   logic [3*CoordIntBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
   logic [2:0] hand_sx_neg, hand_x_major;
