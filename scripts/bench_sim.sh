@@ -18,7 +18,7 @@
 #          against RTL wall time" (--unit improved2)
 #   -h, --help  this text
 # The RTL runs the Verilated builds a default run takes: the speed builds (docs/rtl.md, "Speed and
-# checked builds"; improved2's DSP form has none and runs its checked build).
+# checked builds"; improved2 has one in each corner form).
 # Build directory: $TRIRAST_BUILD_DIR, default build/ (configured and built here if needed: the
 # target trirast_sc_bench; its RTL engines need the Verilated models of that build).
 set -euo pipefail

@@ -125,9 +125,11 @@ TradTriangleResult TradSpanFiller::run_triangle(const TriangleSetup& t, SpanList
 
 TradTriangleResult TradSpanFiller::fill(const TriangleSetup& t, const TradVertices& v, SpanList& out) {
   TradTriangleResult r;
-  r.verts = v;
-  if (r.verts.empty) return r;
-  begin(v, r);
+  if (v.empty) {
+    r.verts = v;
+    return r;
+  }
+  begin(v, r);  // sets r.verts
   // Rows of the triangle inside the viewport only: the rows above and below cost nothing here.
   const int64_t y_first = std::max<int64_t>(v.p[0].y, 0);
   const int64_t y_last = std::min<int64_t>(v.p[2].y, int64_t(cfg_.height) - 1);

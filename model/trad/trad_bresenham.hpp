@@ -120,6 +120,14 @@ struct TradTriangleResult {
   uint64_t pixels = 0;                 // pixels in them
 
   uint64_t steps() const { return edge_steps[0] + edge_steps[1] + edge_steps[2]; }
+  // The counters of o added to these (verts stays: a sum of triangles has no vertices).
+  TradTriangleResult& operator+=(const TradTriangleResult& o) {
+    for (int e = 0; e < 3; ++e) edge_steps[e] += o.edge_steps[e];
+    rows_visited += o.rows_visited;
+    spans += o.spans;
+    pixels += o.pixels;
+    return *this;
+  }
 };
 
 // Stage 3 with stages 1 and 2 in front: one set-up triangle in, its spans out in row order.

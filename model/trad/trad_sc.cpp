@@ -81,10 +81,7 @@ uint64_t TradWalkStage::walk(TradSetupTxn& x, uint64_t h) {
     counters.busy += c;
     t = end + 1;
   }
-  for (int e = 0; e < 3; ++e) work_sum_.edge_steps[e] += res.edge_steps[e];
-  work_sum_.rows_visited += res.rows_visited;
-  work_sum_.spans += res.spans;
-  work_sum_.pixels += res.pixels;
+  work_sum_ += res;
   any_work_ = true;
   return t - 1;
 }
