@@ -1,8 +1,9 @@
 // The improved2 unit's two corner forms against each other over every input at reduced widths
 // (tb/improved2/improved2_corner_forms_exhaustive.sh builds this with the package of a reduced
-// configuration and improved2_corner_forms_exhaustive_tb.sv; docs/formal.md, "The corner unit's
-// two forms"). For every triangle (every vertex coordinate), every corner (x0, y0), the serial
-// units are driven as rtl/improved2/trirast_improved2_top.sv drives its corner unit:
+// configuration and improved2_corner_forms_exhaustive_tb.sv; docs/formal.md, "Not proven, and
+// why", the improved2 corner unit's two forms). For every triangle (every vertex coordinate),
+// every corner (x0, y0), the serial units are driven as rtl/improved2/trirast_improved2_top.sv
+// drives its corner unit:
 //   * a first run alone (a tiny box: the next triangle's first start follows), then
 //   * for every Xmax with x0 + Xmax inside the pixel range and every edge mask: a first run
 //     (all three edges), then a second run at x1 = x0 + Xmax for the edges of the mask.

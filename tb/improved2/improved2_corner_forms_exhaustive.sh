@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # The improved2 unit's two corner forms against each other over every input at reduced widths
-# (docs/formal.md, "The corner unit's two forms"): a Verilator C++ build of
-# tb/improved2/improved2_corner_forms_exhaustive_tb.sv (the serial form, radix 16 and radix 4,
-# beside the products form) and its driver improved2_corner_forms_exhaustive.cpp, with the package
-# of the configuration subpixel bits 0, coordinate bits 2, box bits 1 (scripts/gen_params.py:
-# P = 3, F = 1, PixBits 1, BoxBits 1; every triangle, corner, Xmax and edge mask, the unit's drive
-# protocol).
+# (docs/formal.md, "Not proven, and why", the improved2 corner unit's two forms): a Verilator C++
+# build of tb/improved2/improved2_corner_forms_exhaustive_tb.sv (the serial form, radix 16 and
+# radix 4, beside the products form) and its driver improved2_corner_forms_exhaustive.cpp, with
+# the package of the configuration subpixel bits 0, coordinate bits 2, box bits 1
+# (scripts/gen_params.py: P = 3, F = 1, PixBits 1, BoxBits 1; every triangle, corner, Xmax and
+# edge mask, the unit's drive protocol).
 #
 #   tb/improved2/improved2_corner_forms_exhaustive.sh [WORKDIR]
 #       (ctest improved2_corner_forms_exhaustive) exit 0 when both forms agree on every case
