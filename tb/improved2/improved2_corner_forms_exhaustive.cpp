@@ -17,15 +17,18 @@
 // must keep the direct 2x2 test's contract on that value E: far: |E| >= 2^(F+CoefBits) and
 // fneg = E < 0; not far: |E| < 2^(F+CoefBits+3). A unit still busy after its most digits is an
 // error too.
+// With --random N: N random cases instead (a wider package, where every case is too many).
 // Prints one line per difference (the first few) and the summary
 //   improved2_corner_forms_exhaustive: N errors (...)
 // exit 0 when N is 0 and the cases reached what the comparison needs (second runs, several digits),
 // else 1.
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <random>
 
 #include "Vimproved2_corner_forms_exhaustive_tb.h"
 #include "verilated.h"
@@ -96,8 +99,10 @@ class CornerForms {
     ++second_runs_;
   }
 
-  int report() const {
-    const bool reached = second_runs_ > 0 && digits_seen_[1] > 1;
+  // need_wide: the cases must also reach radix-16 operands of two digits and far values.
+  int report(bool need_wide) const {
+    const bool reached = second_runs_ > 0 && digits_seen_[1] > 1 &&
+                         (!need_wide || (digits_seen_[0] > 1 && far_seen_ > 0));
     std::printf("%s: %ld errors (P = %d, F = %d, PixBits = %d, BoxBits = %d: %ld first runs, "
                 "%ld second runs, %ld comparisons of the three edges' values (both serial forms, "
                 "biases 000 and 111); radix 16 took up to %d digits, radix 4 up to %d; far flags "
@@ -105,8 +110,9 @@ class CornerForms {
                 kName, errors_, w_.vertex, w_.frac, w_.pix, w_.box, first_runs_, second_runs_,
                 checks_, digits_seen_[0], digits_seen_[1], far_seen_);
     if (!reached)
-      std::printf("%s: the cases did not reach a second run and a radix-4 operand of two digits: "
-                  "the comparison says nothing\n", kName);
+      std::printf("%s: the cases fell short (a second run, radix-4 operands of two digits%s): "
+                  "the comparison says too little\n", kName,
+                  need_wide ? ", radix-16 operands of two digits, a far value" : "");
     return errors_ == 0 && reached ? 0 : 1;
   }
 
@@ -244,13 +250,26 @@ class CornerForms {
 
 }  // namespace
 
+// A random coordinate of P bits: uniform, an extreme (-2^(P-1) or 2^(P-1) - 1), or small.
+uint64_t random_coordinate(std::mt19937_64& rng, int p) {
+  const uint64_t mask = (uint64_t{1} << p) - 1;
+  switch (rng() % 4) {
+    case 0: return (rng() & 1) ? uint64_t{1} << (p - 1) : mask >> 1;   // -2^(P-1), 2^(P-1) - 1
+    case 1: return ((rng() % 16) - 8) & mask;     // -8 .. 7
+    default: return rng() & mask;
+  }
+}
+
 int main(int argc, char** argv) {
   long max_errors = 100;   // stop after this many differences (--max-errors N)
+  long random_cases = 0;   // --random N: N random cases instead of every case
   for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--max-errors") == 0 && i + 1 < argc) {
       max_errors = std::atol(argv[++i]);
+    } else if (std::strcmp(argv[i], "--random") == 0 && i + 1 < argc) {
+      random_cases = std::atol(argv[++i]);
     } else {
-      std::fprintf(stderr, "%s: usage: %s [--max-errors N]\n", kName, argv[0]);
+      std::fprintf(stderr, "%s: usage: %s [--max-errors N] [--random N]\n", kName, argv[0]);
       return 2;
     }
   }
@@ -258,14 +277,32 @@ int main(int argc, char** argv) {
   CornerForms forms(std::make_unique<Vimproved2_corner_forms_exhaustive_tb>(ctx.get()),
                     max_errors);
   const Widths& w = forms.widths();
-  if (6 * w.vertex > 30 || 3 * w.edge > 64) {
-    std::fprintf(stderr, "%s: P = %d is too wide for an exhaustive run (at most 5)\n", kName,
-                 w.vertex);
+  if (3 * w.edge > 64 || (random_cases == 0 && 6 * w.vertex > 30)) {
+    std::fprintf(stderr, "%s: P = %d is too wide for this driver (every case: at most 5; "
+                 "--random: at most 10)\n", kName, w.vertex);
     return 2;
   }
   forms.reset();
   const uint64_t coord_mask = (uint64_t{1} << (3 * w.vertex)) - 1;
   const unsigned pixels = 1u << w.pix, boxes = 1u << w.box;
+  if (random_cases > 0) {
+    // Random cases (a fixed seed): the triangle, corner, Xmax and mask drawn; one run in nine a
+    // first run alone.
+    std::mt19937_64 rng(1);
+    for (long c = 0; c < random_cases && !forms.stopped(); ++c) {
+      Triangle tri{0, 0, static_cast<unsigned>(rng() % pixels),
+                   static_cast<unsigned>(rng() % pixels)};
+      for (int k = 0; k < 3; ++k) {
+        tri.vx |= random_coordinate(rng, w.vertex) << (k * w.vertex);
+        tri.vy |= random_coordinate(rng, w.vertex) << (k * w.vertex);
+      }
+      const unsigned room = std::min(pixels - 1 - tri.x0, boxes - 1);
+      const int mask = static_cast<int>(rng() % 9) - 1;
+      forms.runs(tri, mask, static_cast<unsigned>(rng() % (room + 1)));
+    }
+    forms.final();
+    return forms.report(/*need_wide=*/true);
+  }
   for (uint64_t v = 0; v < (uint64_t{1} << (6 * w.vertex)) && !forms.stopped(); ++v) {
     for (unsigned y0 = 0; y0 < pixels; ++y0) {
       for (unsigned x0 = 0; x0 < pixels; ++x0) {
@@ -277,5 +314,5 @@ int main(int argc, char** argv) {
     }
   }
   forms.final();
-  return forms.report();
+  return forms.report(/*need_wide=*/false);
 }

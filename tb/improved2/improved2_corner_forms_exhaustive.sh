@@ -12,6 +12,10 @@
 #   tb/improved2/improved2_corner_forms_exhaustive.sh --plant NAME [WORKDIR]
 #       (ctest improved2_corner_forms_exhaustive_plant_NAME) the same on a copy of the RTL with
 #       the planted bug NAME; exit 0 (CAUGHT) only when the comparison reports a difference
+#   tb/improved2/improved2_corner_forms_exhaustive.sh --random-tiny N [--plant NAME] [WORKDIR]
+#       (ctest improved2_corner_forms_random_tiny) not every case: N random cases (a fixed seed;
+#       vertices uniform, extreme or small) at the tiny configuration (subpixel bits 0, coordinate
+#       bits 8, box bits 6: P = 9), where radix 16 takes up to three digits and E can be far
 #   tb/improved2/improved2_corner_forms_exhaustive.sh --list-plants
 #
 # WORKDIR (default build/improved2_corner_forms) gets the package, the build (obj, its log
@@ -20,6 +24,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 ME="improved2_corner_forms_exhaustive.sh"
 PLANT=""
+RANDOM_CASES=""
 
 # The plants: NAME FILE (under rtl/) OLD NEW; OLD must occur exactly once in FILE.
 plant_spec() {
@@ -39,6 +44,9 @@ while [ $# -gt 0 ]; do
       [ $# -ge 2 ] || { echo "$ME: --plant needs a name (--list-plants)" >&2; exit 2; }
       plant_spec "$2" || { echo "$ME: no plant $2 (plants: $PLANTS)" >&2; exit 2; }
       PLANT="$2"; shift 2 ;;
+    --random-tiny)
+      [ $# -ge 2 ] || { echo "$ME: --random-tiny needs a count of cases" >&2; exit 2; }
+      RANDOM_CASES="$2"; shift 2 ;;
     --list-plants) echo "$PLANTS" | tr ' ' '\n'; exit 0 ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "$ME: unknown option $1 (see --help)" >&2; exit 2 ;;
@@ -53,8 +61,9 @@ WORK="${1:-$ROOT/build/improved2_corner_forms}"
 mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
 WORK="$(cd "$WORK" && pwd)"
 
-python3 "$ROOT/scripts/gen_params.py" --subpixel-bits 0 --coord-bits 2 --box-bits 1 \
-  --sv "$WORK/trirast_pkg.sv" >/dev/null ||
+WIDTHS=(--subpixel-bits 0 --coord-bits 2 --box-bits 1)
+[ -z "$RANDOM_CASES" ] || WIDTHS=(--subpixel-bits 0 --coord-bits 8 --box-bits 6)   # tiny
+python3 "$ROOT/scripts/gen_params.py" "${WIDTHS[@]}" --sv "$WORK/trirast_pkg.sv" >/dev/null ||
   { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
 
 SERIAL="$ROOT/rtl/improved2/trirast_improved2_corner_serial.sv"
@@ -87,7 +96,8 @@ verilator --cc --exe --build -j 1 -O3 --x-assign fast --x-initial fast -Wno-fata
   { echo "$ME: Verilator build failed ($WORK/build.log)" >&2; exit 1; }
 
 rc=0
-"$WORK/obj/Vimproved2_corner_forms_exhaustive_tb" >"$WORK/run.out" 2>&1 || rc=$?
+"$WORK/obj/Vimproved2_corner_forms_exhaustive_tb" ${RANDOM_CASES:+--random "$RANDOM_CASES"} \
+  >"$WORK/run.out" 2>&1 || rc=$?
 grep '^improved2_corner_forms_exhaustive:' "$WORK/run.out" | head -n 4
 if [ -z "$PLANT" ]; then
   [ "$rc" -eq 0 ] && exit 0
