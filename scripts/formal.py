@@ -160,7 +160,10 @@ def build_model(proof, work, plant, deadline, opts_check=None):
         "hierarchy -check -top %s %s" % (proof["top"], chparams),
         "hierarchy -smtcheck",
         "proc",
-    ] + ["cutpoint %s" % c for c in proof.get("cutpoints", [])] + [
+    ] + [cmd for c in proof.get("cutpoints", [])
+         # a cut point that selects nothing is an error, not Yosys's warning: a module with
+         # parameters is $paramod...\name after hierarchy, so it is written *name*
+         for cmd in ("select -assert-min 1 %s" % c, "cutpoint %s" % c)] + [
         "flatten",
         "opt_clean",
         # memories become flip-flops (the FIFOs' few entries), reads multiplexers
