@@ -67,11 +67,11 @@ if [ "$units" = 1 ]; then
 {
   echo "$head"
   echo
-  echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores shared with other jobs; load"
+  echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores; load"
   echo "averages (1, 5, 15 min) $load_before before and $load_after after; Release build, 1024x768,"
   echo "S=8, N=1, FIFO 8, sink always ready). For every timed unit, its SystemC model (\`UNIT-sc\`)"
-  echo "and its Verilated RTL (\`UNIT-rtl\`, the build a default run takes: its speed build, the"
-  echo "DSP form's checked build; docs/rtl.md) on the same set-up scene in the same process,"
+  echo "and its Verilated RTL (\`UNIT-rtl\`, the build a default run takes: its speed build,"
+  echo "improved2's in each corner form; docs/rtl.md) on the same set-up scene in the same process,"
   echo "alternating; each time is the best of its runs in process CPU time (model 5, RTL 3 unless"
   echo "--repeat / --rtl-repeat say otherwise), so the ratio model / RTL holds under load better"
   echo "than either speed. The RTL's cycles equal the model's (the bench checks it)."
@@ -83,7 +83,7 @@ else
 {
   echo "$head"
   echo
-  echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores shared with other jobs, load"
+  echo "\`$cmd\` ($(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load"
   echo "average $(cut -d' ' -f1 /proc/loadavg) at the end; Release build, 1024x768, S=8, N=1, FIFO 8, sink always"
   echo "ready). The model, the timed trad model and the Verilated RTL run the same set-up scene in"
   echo "the same process, alternating; each time is the best of its runs (model and trad 5, RTL 3"

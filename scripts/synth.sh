@@ -89,6 +89,8 @@ if [ -n "$ONLY" ]; then
   while [ -f "$WORK/runs/only-$n.info" ]; do n=$((n + 1)); done
   RUN_TAG="only-$n"
 fi
+# The command as it was run: a router time limit from the environment is part of it.
+[ "${PNR_TIMEOUT:-0}" != 0 ] && CMDLINE="PNR_TIMEOUT=$PNR_TIMEOUT $CMDLINE"
 
 # name:subpixel_bits:coord_int_bits:box_bits (app/sweep/sweep_area.cpp reads this line)
 CONFIGS="default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:8:6"

@@ -32,8 +32,9 @@
 // Cycle c (docs/timing.md, "Cycles and handshakes"): with clk_i low the inputs of cycle c are
 // applied, the handshakes and the observation outputs of cycle c are sampled, and the rising edge
 // c is evaluated. Cycle 0 is the first rising edge after rst_ni went high. The tops have no
-// combinational path from an input to an output (docs/port.md), so the outputs of cycle c are
-// those the rising edge c - 1 left, and one evaluation per cycle serves: the clock's fall is
+// combinational path from a handshake or vertex input to an output (docs/port.md; rst_ni gates
+// tri_ready_o, and the model is evaluated once after the reset's release, so it is static from
+// cycle 0 on), so the outputs of cycle c are those the rising edge c - 1 left, and one evaluation per cycle serves: the clock's fall is
 // written into the model's edge memory (Verilator 5's __Vtrigrprev__TOP__clk_i) instead of being
 // evaluated. A traced run, or a model without that member, also evaluates with the clock low (the
 // trace then shows each cycle's inputs and their combinational fan-out).
