@@ -141,6 +141,10 @@ def build_model(proof, work, plant, deadline, opts_check=None):
             with open(dst, "w") as out:
                 out.write(text.replace(plant["old"], plant["new"]))
             files = [dst if os.path.realpath(f) == os.path.realpath(src) else f for f in files]
+            # a planted header (rtl/common/*.svh) is read first: its include guard then keeps
+            # the original out (Yosys looks beside the including file before the -I folders)
+            if src.endswith(".svh"):
+                files.insert(0, dst)
     if proof.get("widths"):
         # a reduced configuration: the package generated for it (scripts/gen_params.py)
         w = proof["widths"]

@@ -1,5 +1,5 @@
 // The schedule of trirast fuzz: which engines run a scene, and on how much of it, so that each
-// engine spends about the same CPU time per scene however slow it is (trirast issue 35).
+// engine spends about the same CPU time per scene however slow it is.
 //
 // A scene's cost to an engine is estimated before it runs, from the set-up triangles' boxes:
 // triangles, box rows, box columns and the half-space unit's unit tests and stamps, each times a

@@ -51,7 +51,12 @@
   input  logic [3*trirast_pkg::CoefBits-1:0]    tri_b_i, \
   input  logic [3*trirast_pkg::EdgeBits-1:0]    tri_c_i, \
   input  logic [2:0]                            tri_bias_i
-// The set-up stage's tri_ready_o drives the top's stage_tri_ready, which the top gates with rst_ni.
+// The set-up stage's tri_ready_o drives the top's stage_tri_ready, which the top gates with rst_ni
+// (TRIRAST_TRIANGLE_READY_GATE): no triangle is taken while rst_ni is low (docs/port.md, "Clock,
+// reset and configuration").
+`define TRIRAST_TRIANGLE_READY_GATE \
+  logic stage_tri_ready; \
+  assign tri_ready_o = rst_ni && stage_tri_ready;
 `define TRIRAST_CONNECT_TRIANGLE_PORT_VERTICES \
   .tri_valid_i (tri_valid_i), \
   .tri_ready_o (stage_tri_ready), \
@@ -64,6 +69,15 @@
   .tri_b_i     (tri_b_i), \
   .tri_c_i     (tri_c_i), \
   .tri_bias_i  (tri_bias_i)
+// A top's check of the triangle port's preconditions (trirast_triangle_port_check, docs/port.md,
+// "Preconditions"), for simulation only: the caller encloses it in `ifndef SYNTHESIS and
+// `ifndef FORMAL. A port without edge functions passes '0 for a, b, c and bias.
+`define TRIRAST_TRIANGLE_PORT_CHECK(has_edges, reads_c, has_box, a, b, c, bias) \
+  trirast_triangle_port_check #(.HasEdges (has_edges), .ReadsC (reads_c), .HasBox (has_box)) \
+      u_port_check ( \
+    .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i), \
+    .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), \
+    .tri_vy_i (tri_vy_i), .tri_a_i (a), .tri_b_i (b), .tri_c_i (c), .tri_bias_i (bias));
 // A setup stage's trirast_box_stage (improved, half-space): the triangle port's fields in (the
 // stage registers them at accept), the hand-off's box out; the edge terms (a_o, b_o, el_o, er_o)
 // are the caller's to connect.

@@ -38,10 +38,7 @@ module trirast_improved_top #(
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
-  // The set-up stage's ready, gated with the reset: no triangle is taken while rst_ni is low
-  // (docs/port.md, "Clock, reset and configuration").
-  logic stage_tri_ready;
-  assign tri_ready_o = rst_ni && stage_tri_ready;
+  `TRIRAST_TRIANGLE_READY_GATE
   `TRIRAST_HANDOFF_BOX_SIGNALS(hand_)
   `TRIRAST_IMPROVED_HANDOFF_EDGES_SIGNALS(hand_)
   logic [3*RemBits-1:0] hand_entry_e;
@@ -111,10 +108,7 @@ module trirast_improved_top #(
   // The triangle port's preconditions (docs/port.md, "Preconditions"), simulation only.
 `ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
 `ifndef FORMAL
-  trirast_triangle_port_check #(.HasEdges (1'b1), .ReadsC (1'b1), .HasBox (1'b1)) u_port_check (
-    .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
-    .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
-    .tri_a_i (tri_a_i), .tri_b_i (tri_b_i), .tri_c_i (tri_c_i), .tri_bias_i (tri_bias_i));
+  `TRIRAST_TRIANGLE_PORT_CHECK(1'b1, 1'b1, 1'b1, tri_a_i, tri_b_i, tri_c_i, tri_bias_i)
 `endif  // FORMAL
 `endif  // SYNTHESIS
 

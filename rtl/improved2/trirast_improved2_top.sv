@@ -517,7 +517,7 @@ module trirast_improved2_top #(
   `ASSERT_STABLE(TriDataStable_A, tri_valid_i && !tri_ready_o,
                  {tri_tag_i, tri_vx_i, tri_vy_i, tri_a_i, tri_b_i, tri_c_i, tri_bias_i},
                  clk_i, !rst_ni)
-  `ASSERT_IMPLIES(TriValidHeld_A, $past(tri_valid_i && !tri_ready_o), tri_valid_i, clk_i, !rst_ni)
+  `ASSERT_NEXT(TriValidHeld_A, tri_valid_i && !tri_ready_o, tri_valid_i, clk_i, !rst_ni)
   // A job is handed off only when every lane it loaded is done; a tiny job loads none.
   `ASSERT_IMPLIES(HandoffLanesDone_A, handoff_o && !l_tiny_q, &lane_done, clk_i, !rst_ni)
   `ASSERT_IMPLIES(LaneLoadIdle_A, lane_load, &lane_done, clk_i, !rst_ni)
@@ -530,10 +530,7 @@ module trirast_improved2_top #(
   // not checked), simulation only.
 `ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
 `ifndef FORMAL
-  trirast_triangle_port_check #(.HasEdges (1'b1), .ReadsC (1'b0), .HasBox (1'b1)) u_port_check (
-    .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
-    .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
-    .tri_a_i (tri_a_i), .tri_b_i (tri_b_i), .tri_c_i (tri_c_i), .tri_bias_i (tri_bias_i));
+  `TRIRAST_TRIANGLE_PORT_CHECK(1'b1, 1'b0, 1'b1, tri_a_i, tri_b_i, tri_c_i, tri_bias_i)
 `endif  // FORMAL
 `endif  // SYNTHESIS
   // Cover points (docs/coverage.md). The triangle port: waiting, taking a triangle, taking one in

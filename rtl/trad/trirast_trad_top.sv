@@ -41,10 +41,7 @@ module trirast_trad_top #(
 
   // Hand-off bundle.
   logic hand_valid, hand_ready;
-  // The set-up stage's ready, gated with the reset: no triangle is taken while rst_ni is low
-  // (docs/port.md, "Clock, reset and configuration").
-  logic stage_tri_ready;
-  assign tri_ready_o = rst_ni && stage_tri_ready;
+  `TRIRAST_TRIANGLE_READY_GATE
   logic [TagBits-1:0] hand_tag;
   logic [3*CoordIntBits-1:0] hand_px, hand_py, hand_dmaj, hand_dmin;
   logic [2:0] hand_sx_neg, hand_x_major;
@@ -107,10 +104,7 @@ module trirast_trad_top #(
   // port has no edge functions and the unit no box), simulation only.
 `ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
 `ifndef FORMAL
-  trirast_triangle_port_check #(.HasEdges (1'b0), .ReadsC (1'b0), .HasBox (1'b0)) u_port_check (
-    .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i),
-    .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), .tri_vy_i (tri_vy_i),
-    .tri_a_i ('0), .tri_b_i ('0), .tri_c_i ('0), .tri_bias_i ('0));
+  `TRIRAST_TRIANGLE_PORT_CHECK(1'b0, 1'b0, 1'b0, '0, '0, '0, '0)
 `endif  // FORMAL
 `endif  // SYNTHESIS
 

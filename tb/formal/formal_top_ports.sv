@@ -136,14 +136,6 @@ module formal_top_ports (
     // the triangle port's protocol: a triangle offered and not taken stays, unchanged
     if (rst_ni && f_tri_wait_q) assume (tri_valid_i && tri_port == f_tri_q);
   end
-`ifdef UNIT_IMPROVED2
-  // The improved2 top's TriValidHeld_A reads $past(tri_valid_i && !tri_ready_o) ungated by reset:
-  // a triangle offered in reset (tri_ready_o is low there) stays offered in the cycle after it.
-  logic f_tri_held_q;
-  always @(posedge clk_i) f_tri_held_q <= tri_valid_i && !tri_ready_o;
-  always @* if (rst_ni && f_tri_held_q) assume (tri_valid_i);
-`endif
-
   // ---- the properties ----
   logic f_span_wait_q;
   logic [$bits(span)-1:0] f_span_q;

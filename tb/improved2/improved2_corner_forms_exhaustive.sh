@@ -53,13 +53,8 @@ while [ $# -gt 0 ]; do
     *) break ;;
   esac
 done
-[ $# -le 1 ] || { echo "$ME: one WORKDIR at most (got: $*)" >&2; exit 2; }
-for t in verilator python3; do
-  command -v "$t" >/dev/null || { echo "$ME: $t not found in PATH" >&2; exit 1; }
-done
-WORK="${1:-$ROOT/build/improved2_corner_forms}"
-mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
-WORK="$(cd "$WORK" && pwd)"
+. "$ROOT/tb/improved2/improved2_checks_workdir.sh"
+improved2_checks_workdir "$ROOT/build/improved2_corner_forms" "$@"
 
 WIDTHS=(--subpixel-bits 0 --coord-bits 2 --box-bits 1)
 [ -z "$RANDOM_CASES" ] || WIDTHS=(--subpixel-bits 0 --coord-bits 8 --box-bits 6)   # tiny

@@ -48,13 +48,8 @@ while [ $# -gt 0 ]; do
   esac
 done
 [ -n "$MODE" ] || { echo "$ME: needs --check-blocks, --check-unit or --check-all (see --help)" >&2; exit 2; }
-[ $# -le 1 ] || { echo "$ME: one WORKDIR at most (got: $*)" >&2; exit 2; }
-for t in verilator python3; do
-  command -v "$t" >/dev/null || { echo "$ME: $t not found in PATH" >&2; exit 1; }
-done
-WORK="${1:-$ROOT/build/improved2_checks}"
-mkdir -p "$WORK" || { echo "$ME: cannot create WORKDIR $WORK" >&2; exit 1; }
-WORK="$(cd "$WORK" && pwd)"
+. "$ROOT/tb/improved2/improved2_checks_workdir.sh"
+improved2_checks_workdir "$ROOT/build/improved2_checks" "$@"
 R="$ROOT/rtl"
 T="$ROOT/tb/improved2"
 TRIRAST="${TRIRAST:-$ROOT/build/trirast}"
