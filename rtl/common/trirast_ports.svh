@@ -75,7 +75,8 @@
 `define TRIRAST_TRIANGLE_PORT_CHECK(has_edges, reads_c, has_box, a, b, c, bias) \
   trirast_triangle_port_check #(.HasEdges (has_edges), .ReadsC (reads_c), .HasBox (has_box)) \
       u_port_check ( \
-    .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i), \
+    .clk_i (clk_i), .rst_ni (rst_ni), \
+    .cfg_vp_xmax_i (cfg_vp_xmax_i), .cfg_vp_ymax_i (cfg_vp_ymax_i), \
     .tri_valid_i (tri_valid_i), .tri_ready_i (tri_ready_o), .tri_vx_i (tri_vx_i), \
     .tri_vy_i (tri_vy_i), .tri_a_i (a), .tri_b_i (b), .tri_c_i (c), .tri_bias_i (bias));
 // A setup stage's trirast_box_stage (improved, half-space): the triangle port's fields in (the

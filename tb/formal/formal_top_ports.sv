@@ -136,6 +136,7 @@ module formal_top_ports (
     // the triangle port's protocol: a triangle offered and not taken stays, unchanged
     if (rst_ni && f_tri_wait_q) assume (tri_valid_i && tri_port == f_tri_q);
   end
+
   // ---- the properties ----
   logic f_span_wait_q;
   logic [$bits(span)-1:0] f_span_q;

@@ -1,7 +1,8 @@
 # Sourced by the improved2 unit's block-check scripts (run_checks.sh,
 # improved2_corner_forms_exhaustive.sh), after their options are parsed; ME names the script.
 # improved2_checks_workdir DEFAULT [WORKDIR]: refuses a second WORKDIR (exit 2) and a missing
-# verilator or python3 (exit 1), then sets WORK to WORKDIR (or DEFAULT), created, as an absolute path.
+# verilator or python3 (exit 1), then sets WORK to WORKDIR (or DEFAULT), created, as an absolute
+# path.
 improved2_checks_workdir() {
   local default="$1" t
   shift
