@@ -91,6 +91,11 @@ def run(cmd, log, deadline, cwd):
             os.killpg(p.pid, signal.SIGKILL)   # the process group this call started
             p.wait()
             raise Timeout()
+        except KeyboardInterrupt:
+            # SIGINT or SIGTERM (main): the tool runs in its own session, so it would go on
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+            raise
     return rc, time.time() - t0
 
 
@@ -337,5 +342,15 @@ def main():
     return 1 if bad else 0
 
 
+def interrupted(signum, frame):
+    raise KeyboardInterrupt()
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    signal.signal(signal.SIGTERM, interrupted)
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:
+        print("formal.py: interrupted (the work folder's files of the interrupted proof are "
+              "incomplete)", file=sys.stderr)
+        sys.exit(130)
