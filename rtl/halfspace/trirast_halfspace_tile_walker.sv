@@ -80,25 +80,49 @@ module trirast_halfspace_tile_walker #(
   logic [3*EdgeBits-1:0] es_q, es_d, esr_q, esr_d;  // E at the stamp / its stamp row's start
   logic [PB-1:0] i0_q, i0_d, j0_q, j0_d, si_q, si_d, sj_q, sj_d, iend_q, iend_d;
   logic back_q, back_d, seen_q, seen_d, spans_q, spans_d;
+  // The unit test's corner offsets, set at the load: E is linear, so of a unit's four corners
+  // the largest edge value is at c00 + omax, omax = (U - 1)*(max(A, 0) + max(B, 0)), and the
+  // smallest at c00 + omin, omin = (U - 1)*(min(A, 0) + min(B, 0)). Every corner < 0 exactly
+  // when the largest is, every corner >= 0 exactly when the smallest is (the corner values fit
+  // EdgeBits: no wrap). One carry chain from eu_q per test instead of the chained corner sums.
+  localparam int OffBits = CoefBits + $clog2(U) + 1;  // |omax|, |omin| <= 2*(U - 1)*2^(CoefBits-1)
+  logic [3*OffBits-1:0] omax_q, omax_d, omin_q, omin_d;
 
   // ---- unit test (WUnit): the four corners of the U x U unit ----
-  logic reject, accept;
+  // Rejected: all four corners outside one edge (its largest corner value < 0); accepted (tiles
+  // only): all four inside every edge (each edge's smallest >= 0, so none rejects either). The
+  // decision (u_decide, below) forms both from the six signs.
+  // A sign of c00 + o (o an offset of OffBits signed bits) from a carry chain of OffBits bits:
+  // with H = c00's bits from OffBits up and c the chain's carry out, the sum's high part is
+  // H + c (o >= 0) or H - 1 + c (o < 0), whose sign is H's flipped exactly when H + 1 carries
+  // into (H - 1 borrows from) H's sign bit: H's other bits all ones (all zeros). Those flags come
+  // from eu_q alone, beside the chain; the chain's end selects between two early values.
+  localparam logic [EdgeBits-1:0] HighMask =  // H's bits but its sign bit
+      (EdgeBits'(1) << (EdgeBits - OffBits - 1)) - EdgeBits'(1);
+  logic [2:0] out, all_in;
   always_comb begin
-    logic [2:0] out, all_in;
     for (int k = 0; k < 3; k++) begin
-      logic [EdgeBits-1:0] ak, bk, c00, c10, c01, c11;
-      ak = a_q[k*EdgeBits +: EdgeBits];
-      bk = b_q[k*EdgeBits +: EdgeBits];
+      logic [EdgeBits-1:0] c00, high;
+      logic [OffBits-1:0] omax, omin;
+      logic high_ones, high_zeros;
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic [OffBits:0] smax, smin;  // their carries out only
+      /* verilator lint_on UNUSEDSIGNAL */
       c00 = eu_q[k*EdgeBits +: EdgeBits];
-      c10 = c00 + (ak << $clog2(U)) - ak;  // + (U - 1)*a
-      c01 = c00 + (bk << $clog2(U)) - bk;
-      c11 = c10 + (bk << $clog2(U)) - bk;
-      out[k] = c00[EdgeBits-1] && c10[EdgeBits-1] && c01[EdgeBits-1] && c11[EdgeBits-1];
-      all_in[k] = !c00[EdgeBits-1] && !c10[EdgeBits-1] && !c01[EdgeBits-1] && !c11[EdgeBits-1];
+      omax = omax_q[k*OffBits +: OffBits];
+      omin = omin_q[k*OffBits +: OffBits];
+      high = c00 >> OffBits;
+      high_ones = (high & HighMask) == HighMask;
+      high_zeros = (high & HighMask) == '0;
+      smax = {1'b0, c00[OffBits-1:0]} + {1'b0, omax};
+      smin = {1'b0, c00[OffBits-1:0]} + {1'b0, omin};
+      out[k] = c00[EdgeBits-1] ^ (omax[OffBits-1] ? !smax[OffBits] && high_zeros
+                                                  : smax[OffBits] && high_ones);
+      all_in[k] = !(c00[EdgeBits-1] ^ (omin[OffBits-1] ? !smin[OffBits] && high_zeros
+                                                      : smin[OffBits] && high_ones));
     end
-    reject = |out;
-    accept = Tiles && !reject && &all_in;
   end
+  logic reject, accept;
 
   // ---- stamp tester: the unit itself without tiles, else the current stamp ----
   // With tiles its result is read in WStamp only, without tiles in WUnit only: its inputs are
@@ -153,137 +177,160 @@ module trirast_halfspace_tile_walker #(
   end
 
   // ---- the walk ----
-  logic unit_done, is_rej, last_unit, band_end, band_last, stamp_last_col, stamp_last_row;
+  logic last_unit, band_last, stamp_last_col, stamp_last_row;
   logic [PB-1:0] tile_j1;
   assign tile_j1 = (j0_q + PB'(U - 1) > {1'b0, ymax_q}) ? {1'b0, ymax_q} : j0_q + PB'(U - 1);
-  assign stamp_last_col = si_q + PB'(S) > tile_i1;
-  assign stamp_last_row = sj_q + PB'(S) > tile_j1;
-  assign is_rej = state_q == WUnit && reject;
-  assign unit_done = (state_q == WUnit && (reject || accept || !Tiles)) ||
-                     (stamp_mode && stamp_last_col && stamp_last_row);
-  assign last_unit = back_q ? i0_q == '0 : i0_q == iend_q;
-  assign band_end = unit_done && (last_unit || (WalkZigzag && seen_q && is_rej));
-  assign band_last = j0_q + PB'(U) > {1'b0, ymax_q};
+  // The stamp's column (row) is the tile's last, si_q + S > tile_i1 (sj_q + S > tile_j1), with no
+  // adder before a compare: units are U-aligned and stamps S-aligned in them, so it is the unit's
+  // last stamp column, or si_q + S > xmax_q, which for an S-aligned si_q is si_q/S >= xmax_q/S.
+  assign stamp_last_col = (si_q & PB'(U - 1)) == PB'(U - S) ||
+                          (si_q >> $clog2(S)) >= ({1'b0, xmax_q} >> $clog2(S));
+  assign stamp_last_row = (sj_q & PB'(U - 1)) == PB'(U - S) ||
+                          (sj_q >> $clog2(S)) >= ({1'b0, ymax_q} >> $clog2(S));
+  // The band's last unit (back_q ? i0_q == 0 : i0_q == iend_q) and the box's last band
+  // (j0_q + U > ymax_q) are flip-flops, set with i0_q and j0_q: the control starts from them.
+  logic last_unit_q, last_unit_d, band_last_q, band_last_d;
+  assign last_unit = last_unit_q;
+  assign band_last = band_last_q;
 
-  // The next stamp row's start and the next band's first and last unit.
-  logic [3*EdgeBits-1:0] esr_next, ebl_next, ebr_next;
-  always_comb begin
-    for (int k = 0; k < 3; k++) begin
-      esr_next[k*EdgeBits +: EdgeBits] = esr_q[k*EdgeBits +: EdgeBits] +
-                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(S));
-      ebl_next[k*EdgeBits +: EdgeBits] = ebl_q[k*EdgeBits +: EdgeBits] +
-                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
-      ebr_next[k*EdgeBits +: EdgeBits] = ebr_q[k*EdgeBits +: EdgeBits] +
-                                         (b_q[k*EdgeBits +: EdgeBits] << $clog2(U));
-    end
-  end
+  // The next values, from registers only (none waits for this cycle's test): the test selects
+  // among them through the registers' enables and one 2:1 mux per bit (a next band's start or the
+  // rest), so that the unit test's carry chain is followed by the control alone.
+  localparam int L = $clog2(U);
+  logic [3*EdgeBits-1:0] esr_next, es_next, ebl_next, ebr_next, eu_next, eu_band;
   logic next_back;  // the next band runs right to left
   assign next_back = WalkZigzag && !back_q;
+  always_comb begin
+    for (int k = 0; k < 3; k++) begin
+      logic [EdgeBits-1:0] ak, bk, bl, br;
+      /* verilator lint_off UNUSEDSIGNAL */
+      logic [EdgeBits:0] nxt;  // its low bit only carries back_q in
+      /* verilator lint_on UNUSEDSIGNAL */
+      ak = a_q[k*EdgeBits +: EdgeBits];
+      bk = b_q[k*EdgeBits +: EdgeBits];
+      esr_next[k*EdgeBits +: EdgeBits] = esr_q[k*EdgeBits +: EdgeBits] + (bk << $clog2(S));
+      es_next[k*EdgeBits +: EdgeBits] = es_q[k*EdgeBits +: EdgeBits] + (ak << $clog2(S));
+      bl = ebl_q[k*EdgeBits +: EdgeBits] + (bk << L);
+      br = ebr_q[k*EdgeBits +: EdgeBits] + (bk << L);
+      ebl_next[k*EdgeBits +: EdgeBits] = bl;
+      ebr_next[k*EdgeBits +: EdgeBits] = br;
+      eu_band[k*EdgeBits +: EdgeBits] = next_back ? br : bl;
+      // The band's next unit, E + U*A or (right to left) E - U*A = E + ~(U*A) + 1: one adder, its
+      // carry in back_q as the low bit of both operands.
+      nxt = {eu_q[k*EdgeBits +: EdgeBits], 1'b1} + {(ak << L) ^ {EdgeBits{back_q}}, back_q};
+      eu_next[k*EdgeBits +: EdgeBits] = nxt[EdgeBits:1];
+    end
+  end
   assign band_j0_o = j0_q;
   assign hand_ready_o = state_q == WIdle;
 
+  // Which registers take a new value this cycle: the load (WIdle), the band's next unit, a next
+  // band (at the hand-over), the stamps of a partial tile; and the next state. Formed here from the
+  // registers alone once for each outcome of the unit test (rejected, accepted, neither); the
+  // outcome then picks one (u_decide), so that only a select follows the test's carry chains.
+  localparam int CtlBits = 6;
+  logic load, band_go, band_next, eu_en, band_en, es_en, esr_en, stamp_col, stamp_row, stamp_done;
+  logic [CtlBits-1:0] ctl, ctl_if [3];  // the controls if rejected, accepted, neither
+  hs_walk_state_e state_if [3];    // the next state ...
+  hs_walk_state_e over_state, rest_state;
+  assign load = state_q == WIdle && hand_valid_i;
+  assign stamp_col = stamp_mode && !stamp_last_col;                    // the next stamp
+  assign stamp_row = stamp_mode && stamp_last_col && !stamp_last_row;  // the next stamp row
+  assign stamp_done = stamp_mode && stamp_last_col && stamp_last_row;  // the tile's last stamp
+  // The next state at a band's hand-over, and outside WUnit, WStamp and WWait.
+  assign over_state = !emit_free_i ? WWait : !band_last ? WUnit : emit_any_i ? WDrain : WIdle;
+  assign rest_state = state_q == WIdle ? (hand_valid_i ? WUnit : WIdle)
+                    : state_q == WDrain && !emit_free_i ? WDrain : WIdle;
   always_comb begin
-    logic band_load, last, retire;  // one write each of the outputs (Icarus 11)
-    state_d = state_q;
-    {tag_d, x0_d, y0_d, xmax_d, ymax_d, a_d, b_d, eu_d, ebl_d, ebr_d, es_d, esr_d, i0_d, j0_d, si_d,
-     sj_d, iend_d, back_d, seen_d, spans_d} =
-        {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, eu_q, ebl_q, ebr_q, es_q, esr_q, i0_q, j0_q,
-         si_q, sj_q, iend_q, back_q, seen_q, spans_q};
-    band_load = 1'b0;
-    last = 1'b0;
-    retire = 1'b0;
-
-    unique case (state_q)
-      WIdle: begin
-        if (hand_valid_i) begin
-          state_d = WUnit;
-          `TRIRAST_LOAD_HANDOFF_BOX
-          for (int k = 0; k < 3; k++) begin
-            a_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_a_i[k*CoefBits +: CoefBits]));
-            b_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_b_i[k*CoefBits +: CoefBits]));
-          end
-          for (int k = 0; k < 3; k++) begin  // E >> F, sign-extended to the walker's width
-            eu_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
-            ebl_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
-            ebr_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F]));
-          end
-          i0_d = '0;
-          j0_d = '0;
-          // ~(W'(x)), not ~W'(x): Yosys 0.23 reads the latter as W'(x) (docs/formal.md)
-          iend_d = {1'b0, hand_xmax_i & ~(BoxBits'(U - 1))};
-          back_d = 1'b0;
-          seen_d = 1'b0;
-          spans_d = 1'b0;
-        end
-      end
-      WUnit: begin
-        if (!reject) seen_d = 1'b1;
-        if (Tiles && !reject && !accept) begin
-          state_d = WStamp;
-          si_d = i0_q;
-          sj_d = j0_q;
-          es_d = eu_q;
-          esr_d = eu_q;
-        end
-      end
-      WStamp: begin
-        if (!stamp_last_col) begin
-          si_d = si_q + PB'(S);
-          for (int k = 0; k < 3; k++)
-            es_d[k*EdgeBits +: EdgeBits] = es_q[k*EdgeBits +: EdgeBits] +
-                                           (a_q[k*EdgeBits +: EdgeBits] << $clog2(S));
-        end else if (!stamp_last_row) begin
-          si_d = i0_q;
-          sj_d = sj_q + PB'(S);
-          esr_d = esr_next;
-          es_d = esr_next;
-        end
-      end
-      WWait, WDrain: ;
-      default: state_d = WIdle;
-    endcase
-
-    // After a unit (a test, or a partial tile's last stamp): the next unit, or the band's end.
-    if (unit_done && !band_end) begin
-      state_d = WUnit;
-      i0_d = back_q ? i0_q - PB'(U) : i0_q + PB'(U);
-      for (int k = 0; k < 3; k++)
-        eu_d[k*EdgeBits +: EdgeBits] = back_q
-            ? eu_q[k*EdgeBits +: EdgeBits] - (a_q[k*EdgeBits +: EdgeBits] << $clog2(U))
-            : eu_q[k*EdgeBits +: EdgeBits] + (a_q[k*EdgeBits +: EdgeBits] << $clog2(U));
+    for (int c = 0; c < 3; c++) begin
+      logic rej, acc, unit_done, band_end_or_wait, go, next_band, step, part;
+      hs_walk_state_e next;
+      rej = c == 0;
+      acc = Tiles && c == 1;
+      // The unit's test (without tiles every test is the unit's) or its last stamp is done; the
+      // band ends (its last unit, or zigzag's rejected unit after a covered one) or waits.
+      unit_done = (state_q == WUnit && (rej || acc || !Tiles)) || stamp_done;
+      band_end_or_wait = (unit_done && (last_unit || (WalkZigzag && seen_q && state_q == WUnit &&
+                                                      rej))) || state_q == WWait;
+      go = band_end_or_wait && emit_free_i;            // the band is handed over
+      next_band = go && !band_last;                    // ... and a next band starts
+      step = unit_done && !band_end_or_wait;           // the band's next unit
+      part = Tiles && state_q == WUnit && !rej && !acc;  // the unit's stamps next
+      if (!(state_q == WUnit || state_q == WStamp || state_q == WWait)) next = rest_state;
+      else if (band_end_or_wait) next = over_state;
+      else if (unit_done) next = WUnit;
+      else next = WStamp;
+      ctl_if[c] = {go, next_band, load || step || next_band, load || next_band,
+                   part || stamp_col || stamp_row, part || stamp_row};
+      state_if[c] = next;
     end
-    if (band_end || state_q == WWait) begin
-      if (!emit_free_i) begin
-        state_d = WWait;
-      end else begin
-        band_load = 1'b1;
-        spans_d = spans_q || emit_any_i;
-        if (band_last) begin
-          // The last band: done now if it has no span, else when its last span is pushed.
-          if (emit_any_i) state_d = WDrain;
-          else state_d = WIdle;
-          last = !emit_any_i;
-          retire = !emit_any_i && !spans_q;
-        end else begin
-          state_d = WUnit;
-          j0_d = j0_q + PB'(U);
-          back_d = next_back;
-          seen_d = 1'b0;
-          ebl_d = ebl_next;
-          ebr_d = ebr_next;
-          eu_d = next_back ? ebr_next : ebl_next;
-          i0_d = next_back ? iend_q : '0;
-        end
-      end
-    end
-    if (state_q == WDrain && emit_free_i) begin
-      state_d = WIdle;
-      last = 1'b1;
-    end
-    band_load_o = band_load;
-    last_o = last;
-    retire_o = retire;
   end
+  trirast_halfspace_walk_decide #(.Tiles (Tiles), .CtlBits (CtlBits)) u_decide (
+    .out_i        (out),
+    .all_in_i     (all_in),
+    .if_reject_i  (ctl_if[0]),
+    .if_accept_i  (ctl_if[1]),
+    .if_neither_i (ctl_if[2]),
+    .state_if_reject_i  (state_if[0]),
+    .state_if_accept_i  (state_if[1]),
+    .state_if_neither_i (state_if[2]),
+    .reject_o     (reject),
+    .accept_o     (accept),
+    .ctl_o        (ctl),
+    .state_o      (state_d)
+  );
+  assign {band_go, band_next, eu_en, band_en, es_en, esr_en} = ctl;
+
+  always_comb begin
+    logic [PB-1:0] i0_step;
+    // Load values (the WIdle hand-off).
+    `TRIRAST_LOAD_HANDOFF_BOX
+    for (int k = 0; k < 3; k++) begin
+      logic [OffBits-1:0] ak, bk, smax, smin;
+      a_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_a_i[k*CoefBits +: CoefBits]));
+      b_d[k*EdgeBits +: EdgeBits] = EdgeBits'($signed(hand_b_i[k*CoefBits +: CoefBits]));
+      ak = OffBits'($signed(hand_a_i[k*CoefBits +: CoefBits]));
+      bk = OffBits'($signed(hand_b_i[k*CoefBits +: CoefBits]));
+      smax = (ak[OffBits-1] ? '0 : ak) + (bk[OffBits-1] ? '0 : bk);
+      smin = (ak[OffBits-1] ? ak : '0) + (bk[OffBits-1] ? bk : '0);
+      omax_d[k*OffBits +: OffBits] = (smax << L) - smax;  // (U - 1)*smax
+      omin_d[k*OffBits +: OffBits] = (smin << L) - smin;
+    end
+    // ~(W'(x)), not ~W'(x): Yosys 0.23 reads the latter as W'(x) (docs/formal.md)
+    iend_d = {1'b0, hand_xmax_i & ~(BoxBits'(U - 1))};
+    // The band's next unit, or a next band's first (the load's: the box corner).
+    for (int k = 0; k < 3; k++) begin  // E >> F, sign-extended to the walker's width
+      logic [EdgeBits-1:0] e0;
+      e0 = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
+      eu_d[k*EdgeBits +: EdgeBits] = band_next ? eu_band[k*EdgeBits +: EdgeBits]
+                                   : state_q == WIdle ? e0 : eu_next[k*EdgeBits +: EdgeBits];
+      ebl_d[k*EdgeBits +: EdgeBits] = state_q == WIdle ? e0 : ebl_next[k*EdgeBits +: EdgeBits];
+      ebr_d[k*EdgeBits +: EdgeBits] = state_q == WIdle
+          ? EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F]))
+          : ebr_next[k*EdgeBits +: EdgeBits];
+    end
+    i0_step = back_q ? i0_q - PB'(U) : i0_q + PB'(U);
+    i0_d = band_next ? (next_back ? iend_q : '0) : state_q == WIdle ? '0 : i0_step;
+    // A next band's first unit is its last when iend_q == 0 (either way), the load's if iend_d is.
+    last_unit_d = band_next ? iend_q == '0
+                : state_q == WIdle ? iend_d == '0 : back_q ? i0_step == '0 : i0_step == iend_q;
+    j0_d = state_q == WIdle ? '0 : j0_q + PB'(U);
+    band_last_d = j0_d + PB'(U) > {1'b0, state_q == WIdle ? hand_ymax_i : ymax_q};
+    back_d = state_q != WIdle && next_back;
+    // Seen a unit not rejected in this band (zigzag: the next rejected one ends it).
+    seen_d = !load && !band_next && (seen_q || (state_q == WUnit && !reject));
+    spans_d = !load && (spans_q || (band_go && emit_any_i));
+    // A partial tile's stamps: from the unit's corner, along the stamp row, then the next row.
+    si_d = stamp_col ? si_q + PB'(S) : i0_q;
+    sj_d = stamp_mode ? sj_q + PB'(S) : j0_q;
+    es_d = stamp_mode ? (stamp_last_col ? esr_next : es_next) : eu_q;
+    esr_d = stamp_mode ? esr_next : eu_q;
+  end
+
+  // The triangle's last cycle: its last band handed over with no span, or its last span pushed.
+  assign band_load_o = band_go;
+  assign last_o = (band_go && band_last && !emit_any_i) || (state_q == WDrain && emit_free_i);
+  assign retire_o = band_go && band_last && !emit_any_i && !spans_q;
 
   assign tag_o = tag_q;
   assign x0_o = x0_q;
@@ -293,13 +340,21 @@ module trirast_halfspace_tile_walker #(
 
   `TRIRAST_FLOP_AR(state_q, state_d, WIdle)
   always_ff @(posedge clk_i) begin
-    {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, eu_q, ebl_q, ebr_q, es_q, esr_q, i0_q, j0_q, si_q,
-     sj_q, iend_q, back_q, seen_q, spans_q} <=
-        {tag_d, x0_d, y0_d, xmax_d, ymax_d, a_d, b_d, eu_d, ebl_d, ebr_d, es_d, esr_d, i0_d, j0_d,
-         si_d, sj_d, iend_d, back_d, seen_d, spans_d};
+    if (load) begin
+      {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, omax_q, omin_q, iend_q} <=
+          {tag_d, x0_d, y0_d, xmax_d, ymax_d, a_d, b_d, omax_d, omin_d, iend_d};
+    end
+    if (eu_en) {eu_q, i0_q, last_unit_q} <= {eu_d, i0_d, last_unit_d};
+    if (band_en) begin
+      {ebl_q, ebr_q, j0_q, back_q, band_last_q} <= {ebl_d, ebr_d, j0_d, back_d, band_last_d};
+    end
+    if (es_en) {si_q, es_q} <= {si_d, es_d};
+    if (esr_en) {sj_q, esr_q} <= {sj_d, esr_d};
+    {seen_q, spans_q} <= {seen_d, spans_d};
   end
 
-  `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits - F && EdgeBits > CoefBits)
+  `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits - F && EdgeBits > CoefBits &&
+               EdgeBits > OffBits)
   // Box-relative positions are PB = BoxBits + 1 bits: a unit past the box must not wrap.
   `ASSERT_INIT(HalfspaceBoxHoldsUnit_A, (1 << BoxBits) >= U)
   `ASSERT_INIT(HalfspaceParamsLegal_A, (StampSize == 1 || StampSize == 2 || StampSize == 4) &&
@@ -312,6 +367,27 @@ module trirast_halfspace_tile_walker #(
                  i0_q <= {1'b0, xmax_q} && j0_q <= {1'b0, ymax_q}, clk_i, !rst_ni)
   `ASSERT_IMPLIES(HalfspaceStampInTile_A, state_q == WStamp, si_q <= tile_i1 && sj_q <= tile_j1,
           clk_i, !rst_ni)
+  // The flip-flops and the short forms above say what their definitions say: the test's signs
+  // are those of the full sums c00 + omax and c00 + omin, ...
+  function automatic logic sum_neg(input logic [EdgeBits-1:0] c00, input logic [OffBits-1:0] o);
+    logic [EdgeBits-1:0] sum;
+    sum = c00 + EdgeBits'($signed(o));
+    sum_neg = sum[EdgeBits-1];
+  endfunction
+  `ASSERT(HalfspaceTestSigns_A, state_q != WUnit || (out == {
+          sum_neg(eu_q[2*EdgeBits +: EdgeBits], omax_q[2*OffBits +: OffBits]),
+          sum_neg(eu_q[EdgeBits +: EdgeBits], omax_q[OffBits +: OffBits]),
+          sum_neg(eu_q[0 +: EdgeBits], omax_q[0 +: OffBits])} && all_in == ~{
+          sum_neg(eu_q[2*EdgeBits +: EdgeBits], omin_q[2*OffBits +: OffBits]),
+          sum_neg(eu_q[EdgeBits +: EdgeBits], omin_q[OffBits +: OffBits]),
+          sum_neg(eu_q[0 +: EdgeBits], omin_q[0 +: OffBits])}), clk_i, !rst_ni)
+  // ... the flip-flops hold their conditions, and the stamp's last column and row are the tile's.
+  `ASSERT_IMPLIES(HalfspaceLastUnitHeld_A, state_q != WIdle,
+                 last_unit_q == (back_q ? i0_q == '0 : i0_q == iend_q) &&
+                 band_last_q == (j0_q + PB'(U) > {1'b0, ymax_q}), clk_i, !rst_ni)
+  `ASSERT_IMPLIES(HalfspaceStampLast_A, state_q == WStamp,
+                 stamp_last_col == (si_q + PB'(S) > tile_i1) &&
+                 stamp_last_row == (sj_q + PB'(S) > tile_j1), clk_i, !rst_ni)
   `ASSERT_IMPLIES(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o, state_q == WIdle, clk_i,
           !rst_ni)
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)
@@ -328,8 +404,41 @@ module trirast_halfspace_tile_walker #(
   `COVER(WalkUnitRejected_C, state_q == WUnit && reject, clk_i, !rst_ni)
   `COVER(WalkUnitAccepted_C, state_q == WUnit && accept, clk_i, !rst_ni)
   `COVER(WalkUnitPartial_C, state_q == WUnit && !reject && !accept && Tiles, clk_i, !rst_ni)
-  `COVER(WalkBandEndEarly_C, band_end && !last_unit, clk_i, !rst_ni)
+  `COVER(WalkBandEndEarly_C, state_q == WUnit && WalkZigzag && seen_q && reject && !last_unit,
+         clk_i, !rst_ni)
   `COVER(WalkBandBackward_C, state_q == WUnit && back_q, clk_i, !rst_ni)
   `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)
 
 endmodule
+
+// The tile walker's decision: the unit test's outcome from its six signs (rejected, accepted) picks
+// the walker's controls among their three values formed beforehand (rejected, accepted,
+// neither). A module of its own, kept by synthesis (keep_hierarchy), so that its few inputs bound
+// the logic between the test's carry chains and the walker's registers: flattened, the tools
+// mixed the signs into the deep control of the registers' terms (measured on iCE40: six LUTs
+// after the carry chain).
+/* verilator lint_off DECLFILENAME */
+(* keep_hierarchy *)
+module trirast_halfspace_walk_decide #(
+  parameter bit Tiles = 1'b1,
+  parameter int CtlBits = 6
+) (
+  input  logic [2:0]         out_i,         // the unit's corners all outside edge k
+  input  logic [2:0]         all_in_i,      // ... all inside edge k
+  input  logic [CtlBits-1:0] if_reject_i,
+  input  logic [CtlBits-1:0] if_accept_i,
+  input  logic [CtlBits-1:0] if_neither_i,
+  input  logic [2:0]         state_if_reject_i,
+  input  logic [2:0]         state_if_accept_i,
+  input  logic [2:0]         state_if_neither_i,
+  output logic               reject_o,
+  output logic               accept_o,      // tiles only
+  output logic [CtlBits-1:0] ctl_o,
+  output logic [2:0]         state_o
+);
+  assign reject_o = |out_i;
+  assign accept_o = Tiles && &all_in_i;  // all inside every edge: none rejects
+  assign ctl_o = reject_o ? if_reject_i : accept_o ? if_accept_i : if_neither_i;
+  assign state_o = reject_o ? state_if_reject_i : accept_o ? state_if_accept_i : state_if_neither_i;
+endmodule
+/* verilator lint_on DECLFILENAME */
