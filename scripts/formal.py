@@ -87,15 +87,14 @@ def run(cmd, log, deadline, cwd):
                              start_new_session=True)
         try:
             rc = p.wait(timeout=left)
-        except subprocess.TimeoutExpired:
-            os.killpg(p.pid, signal.SIGKILL)   # the process group this call started
-            p.wait()
-            raise Timeout()
-        except KeyboardInterrupt:
-            # SIGINT or SIGTERM (main): the tool runs in its own session, so it would go on
+        except (subprocess.TimeoutExpired, KeyboardInterrupt) as stop:
+            # The deadline, or SIGINT / SIGTERM (main): the tool runs in its own session, so it
+            # would go on; stop the process group this call started.
             os.killpg(p.pid, signal.SIGKILL)
             p.wait()
-            raise
+            if isinstance(stop, KeyboardInterrupt):
+                raise
+            raise Timeout()
     return rc, time.time() - t0
 
 
