@@ -156,7 +156,8 @@ UnitDescriptor halfspace_unit() {
   };
   // One span per cycle from its span emitter: --endpoints does not apply.
   u.options = {"--box-bits", "--stamp", "--tile", "--hs-walk"};
-  u.timed_options = kFifoAndSink;
+  // The corner form changes only the set-up's cycles.
+  u.timed_options = plus({"--hs-corner-form"}, kFifoAndSink);
   u.timed_pair = {"halfspace-sc", "halfspace-rtl"};
   u.stages = {
       {"setup stage", {"StIdle", "StBox", "StEdge", "StHold"}},
@@ -226,7 +227,7 @@ const UnitDescriptor* unit_of(const std::string& engine) {
 const std::vector<std::string>& engine_options() {
   static const std::vector<std::string> list = {
       "--box-bits",    "--boundary",  "--divider",    "--stamp",      "--tile",      "--hs-walk",
-      "--corner-form", "--endpoints", "--fifo-depth", "--sink-stall", "--traversal", "--threads",
+      "--corner-form", "--hs-corner-form", "--endpoints", "--fifo-depth", "--sink-stall", "--traversal", "--threads",
       "--rtl-checked"};
   return list;
 }

@@ -3,16 +3,16 @@
 # (tb/fuzz/libfuzzer/CMakeLists.txt: the improved unit only, instrumented).
 #
 # trirast_rtl_build_specs(OUT_VAR ENDPOINTS DEPTH): the builds, one entry
-#   unit:top:sources variable:prefix suffix:width configuration:N:DEPTH[:STAMP:TILE:ZIGZAG]
+#   unit:top:sources variable:prefix suffix:width configuration:N:DEPTH[:STAMP:TILE:ZIGZAG:FORM]
 # per Verilated model, smallest first within a unit (the half-space unit's entries add its build
-# parameters StampSize, TileSize, WalkZigzag; its N is unused):
+# parameters StampSize, TileSize, WalkZigzag, CornerForm; its N is unused):
 #   * every width configuration docs/synth.md names (TRIRAST_RTL_WIDTH_CONFIGS, the same as
 #     scripts/synth.sh CONFIGS) at the hardware maximums the runtime options need (NumEndpoints =
 #     ENDPOINTS, FifoDepth = DEPTH), so no configuration a fuzz run draws is skipped;
 #   * the default configuration also at its synthesized size (N = 1, DEPTH = 8): the engines take
 #     the smallest build that covers a run's options, and this one simulates several times faster;
-#   * the half-space unit (engine halfspace-rtl) at three stamp/tile/walk configurations, of the
-#     default widths and of "hslimit" (a 4-pixel coordinate range with 16-pixel boxes: its tile
+#   * the half-space unit (engine halfspace-rtl) at three stamp/tile/walk configurations in corner
+#     form 0 (products) and two in corner form 1 (radix 16), of the default widths and of "hslimit" (a 4-pixel coordinate range with 16-pixel boxes: its tile
 #     corners lie past the range, so its corner values need more than 2p + 2 bits; docs/unit.md,
 #     "The half-space unit"; not a synthesis configuration), at DEPTH.
 # The maximal default build keeps the plain prefix (Vtrirast_improved_top, Vtrirast_trad_top):
@@ -21,7 +21,7 @@
 # and trace support (--trace-fst). An entry "speed:SPEC" is the speed build of the checked build
 # SPEC (prefix suffix _speed): the same RTL and parameters without assertions, cover points and
 # trace support. The builds a default run picks have one (each unit's default configuration at
-# N = 1, DEPTH = 8; improved2 in each corner form): a run takes it unless it asks for the
+# N = 1, DEPTH = 8; improved2 and the half-space unit in each corner form): a run takes it unless it asks for the
 # checked build (RasterConfig::rtl_checked: --rtl-checked, --coverage) or a trace (rtl_builds.hpp,
 # run_build; docs/rtl.md, "Speed and checked builds").
 #
@@ -82,21 +82,25 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products:default:${endpoints}:${depth}:0")
   list(APPEND _builds
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1")
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s1t0z:default:1:${depth}:1:0:1:1")
   if(TRIRAST_RTL_EXTRA_WIDTHS)
     list(APPEND _builds
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8z:hslimit:1:${depth}:2:8:1"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1")
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8z:hslimit:1:${depth}:2:8:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_radix16_s2t8z:hslimit:1:${depth}:2:8:1:1")
   endif()
   list(APPEND _builds
     "speed:improved:trirast_improved_top:TRIRAST_RTL_SOURCES:_n1:default:1:8"
     "speed:trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
-    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1")
+    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0"
+    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1")
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()
 
@@ -240,6 +244,7 @@ function(trirast_add_rtl_builds)
       list(GET _f 7 _stamp)
       list(GET _f 8 _tile)
       list(GET _f 9 _z)
+      list(GET _f 10 _form)
       if(_z)
         set(_zigzag true)
       endif()
@@ -263,7 +268,8 @@ function(trirast_add_rtl_builds)
     if(_unit STREQUAL "improved")
       list(APPEND _params -GNumEndpoints=${_n})
     elseif(_unit STREQUAL "halfspace")
-      list(APPEND _params -GStampSize=${_stamp} -GTileSize=${_tile} "-GWalkZigzag=1'b${_z}")
+      list(APPEND _params -GStampSize=${_stamp} -GTileSize=${_tile} "-GWalkZigzag=1'b${_z}"
+                          -GCornerForm=${_form})
     elseif(_unit STREQUAL "improved2")
       list(APPEND _params -GCornerForm=${_form} -GNumEndpoints=${_n})
     endif()

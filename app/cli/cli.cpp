@@ -91,6 +91,7 @@ std::vector<OptionSpec> scene_options() {
       {"--tile", "T", "tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
       {"--hs-walk", "ORDER", "tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
       {"--corner-form", "FORM", "corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
+      {"--hs-corner-form", "FORM", "edge values at the box corner by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first: 2 + nL cycles, plus 1 + nR for a box wider than a tile)", "dsp"},
       {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "the downstream of the span output: a ready pattern none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99), or queue:RATE:CAPACITY, a pixel queue that reacts to what it took (consumes RATE pixels per cycle; ready while fewer than CAPACITY pixels are queued)", "none"},
@@ -128,6 +129,7 @@ RasterConfig config_from(const Args& a) {
     cfg.boundary = parse_boundary_mode(a.get("--boundary"));
     cfg.divider = parse_divider_mode(a.get("--divider"));
     cfg.improved2.corner_form = parse_corner_form(a.get("--corner-form"));
+    cfg.halfspace.corner_form = parse_corner_form(a.get("--hs-corner-form"), "--hs-corner-form");
     cfg.validate();
   } catch (const std::invalid_argument& e) {
     throw UsageError("trirast " + a.command() + ": " + e.what());
@@ -200,6 +202,7 @@ Json config_json(const RasterConfig& cfg, const GoldenOptions& golden,
       {"--tile", {"tile", Json::integer(cfg.halfspace.tile)}},
       {"--hs-walk", {"hs_walk", Json::string(halfspace_walk_name(cfg.halfspace.walk))}},
       {"--corner-form", {"corner_form", Json::string(corner_form_name(cfg.improved2.corner_form))}},
+      {"--hs-corner-form", {"hs_corner_form", Json::string(corner_form_name(cfg.halfspace.corner_form))}},
       {"--endpoints", {"endpoints", Json::integer(cfg.endpoints)}},
       {"--fifo-depth", {"fifo_depth", Json::integer(cfg.fifo_depth)}},
       {"--sink-stall", {"sink_stall", Json::string(cfg.sink_stall)}},

@@ -204,7 +204,8 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
   if (name == "improved2") params << "CornerForm " << cfg.improved2.corner_form << "\n";
   if (name == "halfspace")
     params << "StampSize " << cfg.halfspace.stamp << "\nTileSize " << cfg.halfspace.tile
-           << "\nWalkZigzag " << (cfg.halfspace.walk == HalfspaceWalk::Zigzag ? 1 : 0) << "\n";
+           << "\nWalkZigzag " << (cfg.halfspace.walk == HalfspaceWalk::Zigzag ? 1 : 0)
+           << "\nCornerForm " << cfg.halfspace.corner_form << "\n";
 
   const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);
   const char* kind = sink.kind() == SinkPattern::Kind::Periodic ? "periodic"

@@ -1,6 +1,7 @@
 #include "common/config.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "common/span_downstream.hpp"
 
@@ -49,10 +50,10 @@ HalfspaceWalk parse_halfspace_walk(const std::string& text) {
 
 const char* halfspace_walk_name(HalfspaceWalk walk) { return walk == HalfspaceWalk::Zigzag ? "zigzag" : "row"; }
 
-int parse_corner_form(const std::string& text) {
+int parse_corner_form(const std::string& text, const std::string& option) {
   if (text == "dsp") return 0;
   if (text == "radix16") return 1;
-  throw std::invalid_argument("--corner-form: expected dsp or radix16, got '" + text + "'");
+  throw std::invalid_argument(option + ": expected dsp or radix16, got '" + text + "'");
 }
 
 const char* corner_form_name(int form) { return form == 0 ? "dsp" : "radix16"; }
@@ -88,9 +89,12 @@ void RasterConfig::validate() const {
     throw std::invalid_argument("--fifo-depth: " + std::to_string(fifo_depth) + " is outside " +
                                 std::to_string(endpoints) + "..1024 (at least --endpoints)");
   make_span_downstream(sink_stall);  // throws with a message naming --sink-stall
-  if (improved2.corner_form != 0 && improved2.corner_form != 1)
-    throw std::invalid_argument("--corner-form: " + std::to_string(improved2.corner_form) +
-                                " is not 0 (dsp) or 1 (radix16)");
+  const std::pair<const char*, int> forms[] = {{"--corner-form", improved2.corner_form},
+                                                {"--hs-corner-form", halfspace.corner_form}};
+  for (const auto& [option, form] : forms)
+    if (form != 0 && form != 1)
+      throw std::invalid_argument(std::string(option) + ": " + std::to_string(form) +
+                                  " is not 0 (dsp) or 1 (radix16)");
   if (halfspace.stamp != 1 && halfspace.stamp != 2 && halfspace.stamp != 4)
     throw std::invalid_argument("--stamp: " + std::to_string(halfspace.stamp) + " is not 1, 2 or 4");
   if (halfspace.tile != 0 && halfspace.tile != 8 && halfspace.tile != 16)

@@ -33,9 +33,9 @@ enum class HalfspaceWalk { Row, Zigzag };
 HalfspaceWalk parse_halfspace_walk(const std::string& text);
 const char* halfspace_walk_name(HalfspaceWalk walk);
 
-// The gen2 unit's corner form: "dsp" (0) | "radix16" (1); throws std::invalid_argument naming
-// --corner-form otherwise.
-int parse_corner_form(const std::string& text);
+// The corner form of the improved2 and half-space units: "dsp" (0) | "radix16" (1); throws
+// std::invalid_argument naming the option otherwise.
+int parse_corner_form(const std::string& text, const std::string& option = "--corner-form");
 const char* corner_form_name(int form);
 
 // Parses "none" | "back" | "front"; throws std::invalid_argument otherwise.
@@ -49,6 +49,10 @@ struct HalfspaceConfig {
   int stamp = 2;                                // S: the stamp tester tests S x S pixels per cycle (1, 2, 4)
   int tile = 8;                                 // T: tile edge for hierarchical rejection (8, 16; 0 = none)
   HalfspaceWalk walk = HalfspaceWalk::Zigzag;  // tile order
+  // How the set-up forms the edge values at the box corner: 0 = products in one cycle (the xc7
+  // form, the default), 1 = the digit-serial corner unit, radix 16 (no multipliers: the iCE40 HX
+  // form; cycles only, the values are the same).
+  int corner_form = 0;
 };
 
 // The second-generation improved unit's build choice: how its corner stage forms the corner

@@ -9,6 +9,7 @@ namespace trirast::sc {
 
 void HalfspaceSetupStageSc::configure(const RasterConfig& cfg) {
   unit_ = std::make_unique<HalfspaceUnit>(cfg);
+  corner_form_ = cfg.halfspace.corner_form;
 }
 
 uint64_t HalfspaceSetupStageSc::set_up(const TriangleSetup& t, uint64_t a, HalfspaceSetupTxn& x) {
@@ -18,8 +19,14 @@ uint64_t HalfspaceSetupStageSc::set_up(const TriangleSetup& t, uint64_t a, Halfs
   TriangleCycles& rec = run_->tri(x.pos);
   rec.box_width = uint64_t(x.setup.Xmax) + 1;
   rec.box_height = uint64_t(x.setup.Ymax) + 1;
+  // StEdge (rtl/halfspace/trirast_halfspace_setup_stage.sv): products, one cycle; radix16, run
+  // 1's start, its digits and the cycle E0 is taken, then run 2's digits and the cycle E_end is
+  // ready, when there is a run 2.
   trace_state(a + 2, StHsEdge);
-  return a + 3;
+  if (corner_form_ == 0) return a + 3;
+  const uint64_t d0 = uint64_t(x.setup.corner_digits_e0);
+  const uint64_t dend = uint64_t(x.setup.corner_digits_eend);
+  return a + 4 + d0 + (dend > 0 ? 1 + dend : 0);
 }
 
 void HalfspaceWalkStageSc::configure(const RasterConfig& cfg) {

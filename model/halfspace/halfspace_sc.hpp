@@ -30,7 +30,9 @@ struct HalfspaceSetupTxn {
 // The half-space unit's own setup states (the improved unit's numbers: box, then edge values).
 enum HalfspaceSetupState : uint64_t { StHsBox = 1, StHsEdge = 2 };
 
-// a + 1 StBox (an empty box retires), a + 2 StEdge (corner values), StHold from a + 3.
+// a + 1 StBox (an empty box retires), StEdge from a + 2 (corner form dsp: one cycle; radix16, the
+// digit-serial corner unit's runs: 2 + nL cycles, plus 1 + nR when the box is wider than one
+// unit), then StHold.
 class HalfspaceSetupStageSc : public SetupStageBase<HalfspaceSetupTxn> {
  public:
   explicit HalfspaceSetupStageSc(sc_core::sc_module_name name) : SetupStageBase<HalfspaceSetupTxn>(name) {}
@@ -42,6 +44,7 @@ class HalfspaceSetupStageSc : public SetupStageBase<HalfspaceSetupTxn> {
   }
   uint64_t set_up(const TriangleSetup& t, uint64_t a, HalfspaceSetupTxn& x) override;
   std::unique_ptr<HalfspaceUnit> unit_;
+  int corner_form_ = 0;
 };
 
 // The walk stage: band k's walker cycles (one per unit test, one per stamp of a partial tile),

@@ -3,7 +3,7 @@
 // E vanishes at the edge's own vertex vx, vy), and E_R = E_L + Xmax*a. The same values as gen1's
 // interface (E(c) + bias, unit/interface.hpp); the hardware forms them either as DSP products in
 // one cycle or digit-serially, MSB first, 4 operand bits per cycle
-// (rtl/improved2/trirast_improved2_corner_serial.sv, DigitBits 4: signed-digit pairs of two's complement operands),
+// (rtl/common/trirast_corner_serial.sv, DigitBits 4: signed-digit pairs of two's complement operands),
 // whose run length is digits().
 #pragma once
 #include <cstdint>
@@ -11,6 +11,7 @@
 #include "common/config.hpp"
 #include "common/setup.hpp"
 #include "common/box_stage.hpp"
+#include "common/corner_serial.hpp"
 
 namespace trirast {
 
@@ -21,17 +22,15 @@ class Improved2CornerUnit {
   int64_t corner_value(const TriangleSetup& t, int k, int64_t x0, int64_t y0) const;
   // The digit-serial unit's run length at (x0, y0): the fewest digits of 4 bits in which every
   // operand cx0 - vx, cy0 - vy of v0 and v1 fits as a two's complement number (its sign bit
-  // included; at least 1): trirast_improved2_corner_serial's counter. Edges 0 and 2 take their operands
+  // included; at least 1): trirast_corner_serial's counter. Edges 0 and 2 take their operands
   // from v0, which lies on both, edge 1 from v1.
   int digits(const TriangleSetup& t, int64_t x0, int64_t y0) const;
   // Fills E_L and E_R of every edge of `box` (its a, b, x0, y0, Xmax already set) and checks them
   // against gen1's (`gen1`): a difference is a model bug (std::logic_error).
   void run(const TriangleSetup& t, BoxStageOut& box, const BoxStageOut& gen1) const;
 
-  static constexpr int kDigitBits = 4;  // radix 16
-  // The vertex edge k's operands are taken from: v0 lies on edges 0 (v0 -> v1) and 2 (v2 -> v0),
-  // so the hardware forms two operand pairs, v0's and v1's.
-  static constexpr int operand_vertex(int k) { return k == 1 ? 1 : 0; }
+  static constexpr int kDigitBits = kCornerSerialDigitBits;
+  static constexpr int operand_vertex(int k) { return corner_operand_vertex(k); }
 
  private:
   RasterConfig cfg_;

@@ -28,6 +28,10 @@ module trirast_box_stage (
   output logic [trirast_pkg::PixBits-1:0]       y0_o,
   output logic [trirast_pkg::BoxBits-1:0]       xmax_o,     // x1 - x0
   output logic [trirast_pkg::BoxBits-1:0]       ymax_o,     // y1 - y0
+  // ---- the accepted triangle's vertices and bias (a digit-serial corner unit's operands) ----
+  output logic [3*trirast_pkg::VertexBits-1:0]  vx_o,
+  output logic [3*trirast_pkg::VertexBits-1:0]  vy_o,
+  output logic [2:0]                            bias_o,
   // ---- edge terms (valid from StEdge on) ----
   output logic [3*trirast_pkg::CoefBits-1:0]    a_o,        // A of edge k (a = A*u)
   output logic [3*trirast_pkg::CoefBits-1:0]    b_o,        // B of edge k (b = B*u)
@@ -141,8 +145,8 @@ module trirast_box_stage (
         ({{(EdgeBits - ProdBits){ax1[ProdBits-1]}}, ax1} <<< F) + ak_h + common;
   end
 
-  assign {tag_o, x0_o, y0_o, xmax_o, ymax_o, a_o, b_o} =
-      {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q};
+  assign {tag_o, x0_o, y0_o, xmax_o, ymax_o, a_o, b_o, vx_o, vy_o, bias_o} =
+      {tag_q, x0_q, y0_q, xmax_q, ymax_q, a_q, b_q, vx_q, vy_q, bias_q};
 
   // rst_ni is unused: the interface holds only data registers.
   logic unused_rst;

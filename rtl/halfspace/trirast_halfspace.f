@@ -4,6 +4,7 @@
 ../common/trirast_port_pkg.sv
 ../common/trirast_triangle_port_check.sv
 ../common/trirast_box_stage.sv
+../common/trirast_corner_serial.sv
 ../common/trirast_span_fifo.sv
 ../common/trirast_span_port.sv
 trirast_halfspace_setup_stage.sv

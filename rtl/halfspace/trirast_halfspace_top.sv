@@ -1,10 +1,12 @@
 // The half-space (Pineda edge-function) tile unit (model/halfspace_*, docs/unit.md "The
 // half-space unit", docs/timing.md "The half-space unit"):
-//   setup stage (interface: box, edge values at the box corner) -> tile walker (unit tests,
-//   stamp tester) -> span emitter (band buffers, one span per cycle) -> span FIFO and span port
-//   (trirast_span_port, one push port).
+//   setup stage (interface: box; edge values at the box corner: CornerForm 0 from the
+//   interface's products, CornerForm 1 from the digit-serial corner unit, vertex-relative, C not
+//   read) -> tile walker (unit tests, stamp tester) -> span
+//   emitter (band buffers, one span per cycle) -> span FIFO and span port (trirast_span_port,
+//   one push port).
 // The triangle port is trirast_improved_top's; the span port and FIFO are the shared trirast_span_port.
-// Build parameters: StampSize (1, 2, 4), TileSize (8, 16; 0 = no tiles), WalkZigzag.
+// Build parameters: StampSize (1, 2, 4), TileSize (8, 16; 0 = no tiles), WalkZigzag, CornerForm.
 // Every boundary is a valid/ready handshake: triangle port, hand-off, band hand-over to the
 // emitter, FIFO push (admitted by the occupancy test count <= DEPTH - 1), span port.
 `include "trirast_assert.svh"
@@ -14,6 +16,7 @@ module trirast_halfspace_top #(
   parameter int StampSize = 2,
   parameter int TileSize = 8,
   parameter bit WalkZigzag = 1'b1,
+  parameter int CornerForm = 0,  // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
 ) (
@@ -21,7 +24,7 @@ module trirast_halfspace_top #(
   `TRIRAST_TOP_CLOCK_AND_VIEWPORT,
   input  logic [CountBits-1:0]                  cfg_fifo_depth_i, // --fifo-depth (<= FifoDepth)
   // ---- triangle port: one set-up triangle per handshake ----
-  `TRIRAST_TRIANGLE_PORT,
+  `TRIRAST_TRIANGLE_PORT,  // tri_c_i : not read with CornerForm 1 (vertex-relative E)
   // ---- span port ----
   `TRIRAST_SPAN_PORT,
   // ---- observation (the harness's per-triangle timing) ----
@@ -47,7 +50,7 @@ module trirast_halfspace_top #(
   logic unused_obs;  // walk_state is observed in traces only
   assign unused_obs = ^walk_state;
 
-  trirast_halfspace_setup_stage #(.UnitSize (UnitSize)) u_setup (
+  trirast_halfspace_setup_stage #(.UnitSize (UnitSize), .CornerForm (CornerForm)) u_setup (
     `TRIRAST_CONNECT_SETUP_STAGE,
     .hand_a_o         (hand_a),
     .hand_b_o         (hand_b),
@@ -137,7 +140,7 @@ module trirast_halfspace_top #(
   // The triangle port's preconditions (docs/port.md, "Preconditions"), simulation only.
 `ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys)
 `ifndef FORMAL
-  `TRIRAST_TRIANGLE_PORT_CHECK(1'b1, 1'b1, 1'b1, tri_a_i, tri_b_i, tri_c_i, tri_bias_i)
+  `TRIRAST_TRIANGLE_PORT_CHECK(1'b1, CornerForm == 0, 1'b1, tri_a_i, tri_b_i, tri_c_i, tri_bias_i)
 `endif  // FORMAL
 `endif  // SYNTHESIS
 

@@ -67,14 +67,21 @@ module trirast_improved_setup_stage (
 
   logic [3*CoefBits-1:0] a_all, b_all;
   logic [3*EdgeBits-1:0] el_all, er_all;
+  logic [3*VertexBits-1:0] vx_unused, vy_unused;  // read by the digit-serial corner unit only
+  logic [2:0] bias_unused;
 
   trirast_box_stage u_interface (
     `TRIRAST_CONNECT_BOX_STAGE(accept, box_en, empty),
     .a_o       (a_all),
     .b_o       (b_all),
     .el_o      (el_all),
-    .er_o      (er_all)
+    .er_o      (er_all),
+    .vx_o      (vx_unused),
+    .vy_o      (vy_unused),
+    .bias_o    (bias_unused)
   );
+  logic unused_vertices;
+  assign unused_vertices = ^{vx_unused, vy_unused, bias_unused};
 
   for (genvar k = 0; k < 3; k++) begin : g_edge
     logic horiz, mirror, dir_down;

@@ -6,7 +6,7 @@
 ../common/trirast_port_pkg.sv
 ../common/trirast_triangle_port_check.sv
 trirast_improved2_corner_products.sv
-trirast_improved2_corner_serial.sv
+../common/trirast_corner_serial.sv
 trirast_improved2_direct_test_2x2.sv
 trirast_improved2_edge_lane.sv
 trirast_improved2_edge_walker.sv

@@ -18,7 +18,7 @@
 //   [C] corner-stage register (tag, box, vertices, and A, B, A + B, bias formed from B's
 //       vertices); corner values E_L per edge:
 //       CornerForm 0: trirast_improved2_corner_products (multipliers, DSPs on xc7; no extra cycle);
-//       CornerForm 1: trirast_improved2_corner_serial (MSB-first radix 16 on signed-digit pairs), started
+//       CornerForm 1: trirast_corner_serial (MSB-first radix 16 on signed-digit pairs), started
 //       as the triangle enters C: C holds it d + 1 cycles for E_L (d the fewest 4-bit digits in
 //       which the operands fit signed); a box for the lanes then runs again, 1 + d' more cycles,
 //       at x1 = x0 + Xmax, and forms E_R in the accumulators of the edges whose lane reads E_R
@@ -317,7 +317,7 @@ module trirast_improved2_top #(
     logic [3*EB-1:0] acc;
     assign start = b_take || start2_q;   // exclusive: C holds a triangle during run 2
     // A, B are read at the first start only, from B (the unit keeps A + B and A - B).
-    trirast_improved2_corner_serial #(.DigitBits (4)) u_corner (
+    trirast_corner_serial #(.DigitBits (4)) u_corner (
       .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start), .second_i (start2_q),
       .run_i (start2_q ? c_right : 3'b111),
       .vx_i (b_vx_q), .vy_i (b_vy_q), .a_i (b_a), .b_i (b_b), .p_i (b_p), .bias_i (c_bias_q),

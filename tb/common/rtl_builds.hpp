@@ -28,7 +28,8 @@ struct RtlBuild {
   // The half-space unit's build parameters StampSize, TileSize (0: none), WalkZigzag (0 otherwise).
   int stamp, tile;
   bool zigzag;
-  // The second-generation unit's CornerForm (RasterConfig::improved2.corner_form; 0 otherwise).
+  // The CornerForm of the second-generation and half-space units (RasterConfig::improved2 /
+  // halfspace.corner_form; 0 otherwise).
   int corner_form;
   // The run of its speed build (no assertions, cover points or trace support); nullptr: none.
   void (*run_speed)(const SetupResult&, const RasterConfig&, uint32_t x_seed, EngineResult&);

@@ -1,5 +1,5 @@
 // Formal harness of the improved2 unit's two corner forms against each other (docs/formal.md, "The
-// corner unit's two forms"): rtl/improved2/trirast_improved2_corner_serial.sv (CornerForm 1,
+// corner unit's two forms"): rtl/common/trirast_corner_serial.sv (CornerForm 1,
 // digit-serial) against trirast_improved2_corner_products.sv (CornerForm 0, products), on the
 // same triangle. Bounded model checking from reset (reset in the first cycle only). The serial
 // unit is driven as trirast_improved2_top drives it: a first start (all three edges, the vertices,
@@ -42,7 +42,7 @@ module formal_corner_forms (
   logic busy_o;
   logic [3*EB-1:0] el_o;
   logic [2:0] far_o, fneg_o;
-  trirast_improved2_corner_serial #(.DigitBits (4)) dut (
+  trirast_corner_serial #(.DigitBits (4)) dut (
     .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start_i), .second_i (second_i), .run_i (run_i),
     .vx_i (vx_i), .vy_i (vy_i), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias_i), .x0_i (x0_i),
     .y0_i (y0_i), .xmax_i (xmax_i), .busy_o (busy_o), .el_o (el_o), .far_o (far_o),

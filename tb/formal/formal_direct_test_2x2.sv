@@ -8,7 +8,7 @@
 // Free: an edge's value E at the box's first pixel centre (x0, y0) without the bias, the bias
 // (0 or -1), A and B (|A|, |B| < 2^(CoefBits-1), as the vertices' differences are), Xmax, Ymax
 // (0 or 1), x0, y0, and far/fneg within the corner unit's contract
-// (trirast_improved2_corner_serial.sv): far -> |E_L| >= 2^(F+CoefBits) and fneg = E_L < 0;
+// (trirast_corner_serial.sv): far -> |E_L| >= 2^(F+CoefBits) and fneg = E_L < 0;
 // not far -> |E_L| < 2^(F+CoefBits+3).
 // The specification (docs/coverage-rule.md, section 5): pixel (x0 + i, y0 + j), i <= Xmax,
 // j <= Ymax, is covered when E + bias + i*A*u + j*B*u >= 0 for all three edges (u = 2^F),

@@ -1,6 +1,7 @@
 // Formal harness of a unit's triangle and span ports (docs/formal.md, "The tops' ports"): one of
 // rtl/UNIT/trirast_UNIT_top.sv at its default build, chosen by a define (UNIT_IMPROVED,
-// UNIT_IMPROVED2, UNIT_TRAD, UNIT_HALFSPACE). Bounded model checking from reset; the datapath
+// UNIT_IMPROVED2, UNIT_TRAD, UNIT_HALFSPACE; HS_CORNER_RADIX16 with the last: its CornerForm 1).
+// Bounded model checking from reset; the datapath
 // blocks are cut points in the proof (tb/formal/proofs.json "cutpoints": their outputs free in
 // every cycle), an over-approximation that is sound for these safety properties: whatever the
 // datapath computes, the handshakes hold. Every input is free in every cycle (anyseq: the
@@ -98,7 +99,13 @@ module formal_top_ports (
     .walk_last_o (), .walk_retire_o (), .walk_tag_o (), .fifo_count_o (fifo_count_o),
     .setup_state_o (), .handoff_o (), .hand_px_o (), .hand_py_o ());
 `elsif UNIT_HALFSPACE
-  trirast_halfspace_top dut (
+  // HS_CORNER_RADIX16: the set-up's digit-serial corner form (CornerForm 1), else products.
+`ifdef HS_CORNER_RADIX16
+  localparam int HsCornerForm = 1;
+`else
+  localparam int HsCornerForm = 0;
+`endif
+  trirast_halfspace_top #(.CornerForm (HsCornerForm)) dut (
     .clk_i (clk_i), .rst_ni (rst_ni), .cfg_vp_xmax_i (cfg_vp_xmax_i),
     .cfg_vp_ymax_i (cfg_vp_ymax_i), .cfg_fifo_depth_i (cfg_fifo_depth_i),
     .tri_valid_i (tri_valid_i), .tri_ready_o (tri_ready_o), .tri_tag_i (tri_tag_i),

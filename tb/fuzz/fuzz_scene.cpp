@@ -444,11 +444,14 @@ std::string config_options(const RasterConfig& cfg) {
 
 std::string hs_options(const RasterConfig& cfg) {
   const RasterConfig d;
+  const std::string form = cfg.halfspace.corner_form == d.halfspace.corner_form
+                               ? ""
+                               : std::string(" --hs-corner-form ") + corner_form_name(cfg.halfspace.corner_form);
   if (cfg.halfspace.stamp == d.halfspace.stamp && cfg.halfspace.tile == d.halfspace.tile && cfg.halfspace.walk == d.halfspace.walk)
-    return "";
+    return form;
   return " --stamp " + std::to_string(cfg.halfspace.stamp) + " --tile " +
          (cfg.halfspace.tile ? std::to_string(cfg.halfspace.tile) : std::string("none")) + " --hs-walk " +
-         halfspace_walk_name(cfg.halfspace.walk);
+         halfspace_walk_name(cfg.halfspace.walk) + form;
 }
 
 void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<HalfspaceParams>& among) {
@@ -457,6 +460,7 @@ void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<Half
     cfg.halfspace.stamp = c.stamp;
     cfg.halfspace.tile = c.tile;
     cfg.halfspace.walk = c.walk;
+    cfg.halfspace.corner_form = c.corner_form;
   } else {
     static const int stamps[] = {1, 2, 4}, tiles[] = {0, 8, 16};
     cfg.halfspace.stamp = stamps[d.below(3)];
@@ -498,6 +502,7 @@ RasterConfig parse_config_options(const std::string& options) {
     else if (key == "--stamp") cfg.halfspace.stamp = to_int(key, value);
     else if (key == "--tile") cfg.halfspace.tile = value == "none" ? 0 : to_int(key, value);
     else if (key == "--hs-walk") cfg.halfspace.walk = parse_halfspace_walk(value);
+    else if (key == "--hs-corner-form") cfg.halfspace.corner_form = parse_corner_form(value, key);
     else throw std::invalid_argument("unknown option '" + key + "'");
   }
   cfg.validate();

@@ -1,7 +1,7 @@
 // The improved2 unit's blocks on random operands, against the formulas they compute and the
 // improved unit's blocks (tb/improved2/run_checks.sh --check-blocks; Verilator --binary; ctest
 // improved2_block_checks):
-//   corner values: trirast_improved2_corner_products and trirast_improved2_corner_serial (radix 4
+//   corner values: trirast_improved2_corner_products and trirast_corner_serial (radix 4
 //     and 16) against E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias, vertices near the box;
 //   edge walkers: trirast_improved2_edge_walker (carry-select and the carry-in step) against
 //     rtl/improved/trirast_improved_edge_walker.sv row by row (state, and the bound on bound rows);
@@ -24,7 +24,7 @@ module improved2_blocks_tb;
   // ---------------- corner values ----------------
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
-  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_improved2_corner_serial's p_i), set with a and b
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic [BB-1:0] xmax;
@@ -34,10 +34,10 @@ module improved2_blocks_tb;
   trirast_improved2_corner_products u_mul (.vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .bias_i (bias), .x0_i (x0),
     .x1_i (x0), .x1sel_i (3'b000),
     .y0_i (y0), .el_o (mul_el));
-  trirast_improved2_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  trirast_corner_serial #(.DigitBits (2)) u_m4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym4), .el_o (m4_el));
-  trirast_improved2_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
+  trirast_corner_serial #(.DigitBits (4)) u_m16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start), .second_i (1'b0), .run_i (3'b111),
     .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias), .x0_i (x0), .y0_i (y0),
     .xmax_i ('0), .busy_o (busym16), .el_o (m16_el));
 

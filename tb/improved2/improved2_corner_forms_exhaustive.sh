@@ -30,7 +30,7 @@ RANDOM_CASES=""
 plant_spec() {
   case "$1" in
     second_run_carry)   # the second run's dx = dxL + Xmax * 2^F + 1 (its adder's carry-in set)
-      PLANT_FILE=improved2/trirast_improved2_corner_serial.sv
+      PLANT_FILE=common/trirast_corner_serial.sv
       PLANT_OLD='{second_i ? DW'"'"'(mx_q) : ~vxw, !second_i}'
       PLANT_NEW='{second_i ? DW'"'"'(mx_q) : ~vxw, 1'"'"'b1}' ;;
     *) return 1 ;;
@@ -61,7 +61,7 @@ WIDTHS=(--subpixel-bits 0 --coord-bits 2 --box-bits 1)
 python3 "$ROOT/scripts/gen_params.py" "${WIDTHS[@]}" --sv "$WORK/trirast_pkg.sv" >/dev/null ||
   { echo "$ME: scripts/gen_params.py failed" >&2; exit 1; }
 
-SERIAL="$ROOT/rtl/improved2/trirast_improved2_corner_serial.sv"
+SERIAL="$ROOT/rtl/common/trirast_corner_serial.sv"
 PRODUCTS="$ROOT/rtl/improved2/trirast_improved2_corner_products.sv"
 rm -rf "${WORK:?}/plant"
 if [ -n "$PLANT" ]; then
@@ -77,7 +77,7 @@ open(sys.argv[2], "w").write(text.replace(old, new))
 EOF
     { echo "$ME: plant $PLANT does not apply to rtl/$PLANT_FILE" >&2; exit 1; }
   case "$PLANT_FILE" in
-    */trirast_improved2_corner_serial.sv) SERIAL="$copy" ;;
+    */trirast_corner_serial.sv) SERIAL="$copy" ;;
     */trirast_improved2_corner_products.sv) PRODUCTS="$copy" ;;
   esac
 fi

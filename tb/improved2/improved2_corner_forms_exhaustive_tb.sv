@@ -1,7 +1,7 @@
 // The improved2 unit's two corner forms side by side, for the exhaustive comparison at reduced
 // widths (tb/improved2/improved2_corner_forms_exhaustive.sh; the C++ driver
 // improved2_corner_forms_exhaustive.cpp enumerates the inputs and compares): the digit-serial form
-// (rtl/improved2/trirast_improved2_corner_serial.sv) with DigitBits 4, as trirast_improved2_top
+// (rtl/common/trirast_corner_serial.sv) with DigitBits 4, as trirast_improved2_top
 // builds it, and with DigitBits 2 (more digits per operand at the same widths, so the digit count
 // and the digit pointer are exercised at widths where radix 16 needs one digit), against the
 // products form (trirast_improved2_corner_products.sv).
@@ -82,12 +82,12 @@ module improved2_corner_forms_exhaustive_tb (
   assign ref_a = coef_a(ref_vy_i);
   assign ref_b = coef_b(ref_vx_i);
 
-  trirast_improved2_corner_serial #(.DigitBits (4)) u_serial16 (
+  trirast_corner_serial #(.DigitBits (4)) u_serial16 (
     .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start_i), .second_i (second_i), .run_i (run_i),
     .vx_i (vx_i), .vy_i (vy_i), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias_i), .x0_i (x0_i),
     .y0_i (y0_i), .xmax_i (xmax_i), .busy_o (busy16_o), .el_o (el16_o), .far_o (far16_o),
     .fneg_o (fneg16_o));
-  trirast_improved2_corner_serial #(.DigitBits (2)) u_serial4 (
+  trirast_corner_serial #(.DigitBits (2)) u_serial4 (
     .clk_i (clk_i), .rst_ni (rst_ni), .start_i (start_i), .second_i (second_i), .run_i (run_i),
     .vx_i (vx_i), .vy_i (vy_i), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias_i), .x0_i (x0_i),
     .y0_i (y0_i), .xmax_i (xmax_i), .busy_o (busy4_o), .el_o (el4_o), .far_o (far4_o),

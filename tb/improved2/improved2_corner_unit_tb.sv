@@ -1,11 +1,11 @@
-// The improved2 unit's corner unit (rtl/improved2/trirast_improved2_corner_serial.sv: MSB-first on
+// The improved2 unit's corner unit (rtl/common/trirast_corner_serial.sv: MSB-first on
 // signed-digit pairs, radix 4 and 16) against the formula E_L = A*(cx0 - vx) + B*(cy0 - vy) - bias,
 // on operands drawn over the full widths of the package (tb/improved2/run_checks.sh --check-all;
 // built with Verilator's --binary). Unlike improved2_blocks_tb's corner trials (vertices of a
 // triangle near the box), the vertices here are drawn over the full widths and include the
 // extremes: vertices in {-2^(P-1), 2^(P-1) - 1, cx0, cy0 (a zero operand)}, so A and B (the
 // vertices' edge coefficients, A_k = y_k - y_k+1, B_k = x_k+1 - x_k, as the unit forms them:
-// trirast_improved2_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box
+// trirast_corner_serial takes edge 2's operands from v0) reach +-(2^(P) - 1) and 0; box
 // corners 0 and 2^PB - 1. It also checks the radix-16 unit's cycle count (busy for the fewest
 // digits of 4 bits in which v0's and v1's operands fit as two's complement numbers) and its
 // far-from-0 flags (the direct 2x2 test's far_i, fneg_i). Prints "improved2_corner_unit_tb: N
@@ -23,7 +23,7 @@ module improved2_corner_unit_tb;
 
   logic [3*P-1:0] vx, vy;
   logic [3*CB-1:0] a, b;
-  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_improved2_corner_serial's p_i), set with a and b
+  logic [3*(CB+1)-1:0] p;   // A + B per edge (trirast_corner_serial's p_i), set with a and b
   logic [2:0] bias;
   logic [PB-1:0] x0, y0;
   logic start;
@@ -32,11 +32,11 @@ module improved2_corner_unit_tb;
   logic [2:0] far_sd16, fneg_sd16;   // E far from 0 (the 2x2 test's far_i): checked below
   int far_seen = 0, near_seen = 0;
 
-  // The unit's corner unit: signed-digit pairs (rtl/improved2/trirast_improved2_corner_serial.sv).
-  trirast_improved2_corner_serial #(.DigitBits (2)) u_sd4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  // The unit's corner unit: signed-digit pairs (rtl/common/trirast_corner_serial.sv).
+  trirast_corner_serial #(.DigitBits (2)) u_sd4 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
     .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd4), .el_o (el_sd4));
-  trirast_improved2_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
+  trirast_corner_serial #(.DigitBits (4)) u_sd16 (.clk_i (clk), .rst_ni (rst_n), .start_i (start),
     .second_i (1'b0), .run_i (3'b111), .vx_i (vx), .vy_i (vy), .a_i (a), .b_i (b), .p_i (p), .bias_i (bias),
     .x0_i (x0), .y0_i (y0), .xmax_i ('0), .busy_o (busy_sd16), .el_o (el_sd16),
     .far_o (far_sd16), .fneg_o (fneg_sd16));

@@ -94,7 +94,7 @@ scene_tris() {
 check_blocks() {
   tb_build improved2_blocks_tb blocks \
     "$R/improved/trirast_improved_edge_walker.sv" "$R/improved/trirast_improved_span_generator.sv" \
-    "$R/improved2/trirast_improved2_corner_serial.sv" "$R/improved2/trirast_improved2_corner_products.sv" \
+    "$R/common/trirast_corner_serial.sv" "$R/improved2/trirast_improved2_corner_products.sv" \
     "$R/improved2/trirast_improved2_edge_walker.sv" "$R/improved2/trirast_improved2_span_generator.sv" \
     "$R/improved2/trirast_improved2_direct_test_2x2.sv" "$T/improved2_blocks_tb.sv"
   tb_run improved2_blocks_tb blocks improved2_blocks_tb ""
@@ -210,6 +210,6 @@ case "$MODE" in
     check_edge_lane
     check_unit "0 1 1fit" "${UNIT_SCENES:-builtin:mixed builtin:highpoly-far}" ""
     tb_build improved2_corner_unit_tb corner_unit \
-      "$R/improved2/trirast_improved2_corner_serial.sv" "$T/improved2_corner_unit_tb.sv"
+      "$R/common/trirast_corner_serial.sv" "$T/improved2_corner_unit_tb.sv"
     tb_run improved2_corner_unit_tb corner_unit improved2_corner_unit_tb "" ;;
 esac

@@ -11,7 +11,7 @@ module trirast_kit_bench #(
   // the unit top's parameters (those the unit has; the others are unused)
   parameter int NumEndpoints = 1,  // improved, improved2
   parameter int FifoDepth = 8,     // every unit (a power of two)
-  parameter int CornerForm = 1,    // improved2
+  parameter int CornerForm = 1,    // improved2, halfspace (the vectors' params file sets it)
   parameter int StampSize = 2,     // halfspace
   parameter int TileSize = 8,      // halfspace
   parameter int WalkZigzag = 1,    // halfspace
@@ -144,6 +144,7 @@ module trirast_kit_bench #(
     .StampSize  (StampSize),
     .TileSize   (TileSize),
     .WalkZigzag (WalkZigzag != 0),
+    .CornerForm (CornerForm),
     .FifoDepth  (FifoDepth)
   ) u_dut (
     `TRIRAST_KIT_COMMON_PORTS,

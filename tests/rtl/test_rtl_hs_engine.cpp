@@ -30,9 +30,9 @@ namespace {
 using test::HalfspaceShape;
 using test::tri;
 
-// The stamp / tile / walk a Verilated build of the unit was made for.
+// The stamp / tile / walk / corner form a Verilated build of the unit was made for.
 HalfspaceShape shape_of(const rtl::RtlBuild& b) {
-  return {b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row};
+  return {b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row, b.corner_form};
 }
 
 // The shapes Verilated at the default widths (rtl_builds.hpp).
@@ -91,7 +91,9 @@ TEST(RtlHalfspace, RandomTrianglesEveryConfigurationSinkAndDepth) {
   auto tris = test::random_grid_triangles(rng, 120, -20, 140, -20, 100, 2, 12);
   auto big = test::random_grid_triangles(rng, 120, -20, 140, -20, 100, 8, 60);
   tris.insert(tris.end(), big.begin(), big.end());
-  ASSERT_GE(kBuilt.size(), 3u);
+  ASSERT_GE(kBuilt.size(), 5u);
+  ASSERT_TRUE(std::any_of(kBuilt.begin(), kBuilt.end(),
+                          [](const HalfspaceShape& b) { return b.corner_form == 1; }));
   size_t n = 0;
   for (const HalfspaceShape& b : kBuilt)
     for (const char* sink : {"none", "periodic:1:3", "random:5:70"})

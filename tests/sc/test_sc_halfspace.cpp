@@ -64,6 +64,42 @@ TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
   EXPECT_EQ(r.total_cycles, 15u);
 }
 
+// Corner form radix16 (--hs-corner-form): the set-up's digit-serial corner unit. For the right
+// triangle the operands cx0 - vx, cy0 - vy of v0 and v1 (1/256 pixel) are 128 and
+// 384 - 2368 = -1984, 12 signed bits: 3 digits a run (docs/timing.md, "Setup stage").
+TEST(ScHalfspaceHand, Radix16CornerOneRunWhenTheBoxIsOneTileWide) {
+  // As OneTileSixteenStamps, one unit wide: run 1 only, StHold from a + 4 + nL = 7 in place of
+  // a + 3: every later cycle 4 later (walker 8..24, spans pushed in 25..32, popped in 26..33).
+  RasterConfig cfg;
+  cfg.halfspace.stamp = 2;
+  cfg.halfspace.tile = 8;
+  cfg.halfspace.corner_form = 1;
+  const EngineResult r = run_hs({right_triangle()}, cfg);
+  ASSERT_EQ(r.cycles.size(), 1u);
+  EXPECT_EQ(r.cycles[0].setup_done_cycle, 7u);
+  EXPECT_EQ(r.cycles[0].first_span_cycle, 26u);
+  EXPECT_EQ(r.cycles[0].done_cycle, 33u);
+  EXPECT_EQ(r.cycles[0].pixels, 36u);
+  EXPECT_EQ(r.total_cycles, 34u);
+}
+
+TEST(ScHalfspaceHand, Radix16CornerTwoRunsWhenTheBoxIsTwoUnitsWide) {
+  // As StampsWithoutTilesZigzag, two units a band: run 1 (E0) and run 2 (E_end at x0 + 4, 3
+  // digits as well), StHold from a + 5 + 3 + 3 = 11 in place of a + 3: every later cycle 8 later.
+  RasterConfig cfg;
+  cfg.halfspace.stamp = 4;
+  cfg.halfspace.tile = 0;
+  cfg.halfspace.walk = HalfspaceWalk::Zigzag;
+  cfg.halfspace.corner_form = 1;
+  const EngineResult r = run_hs({right_triangle()}, cfg);
+  ASSERT_EQ(r.cycles.size(), 1u);
+  EXPECT_EQ(r.cycles[0].setup_done_cycle, 11u);
+  EXPECT_EQ(r.cycles[0].first_span_cycle, 15u);
+  EXPECT_EQ(r.cycles[0].done_cycle, 22u);
+  EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
+  EXPECT_EQ(r.total_cycles, 23u);
+}
+
 TEST(ScHalfspaceHand, EmptyBoxRetiresInSetupAndNextIsAcceptedTwoLater) {
   RasterConfig cfg;
   // Between pixel centres: the box is empty.

@@ -67,10 +67,12 @@ inline std::vector<InputTriangle> far_vertex_triangles(TestRng& rng, int count, 
   return tris;
 }
 
-// One shape of the half-space unit: stamp size, tile size (0: no tiles) and walk order.
+// One shape of the half-space unit: stamp size, tile size (0: no tiles), walk order and the
+// set-up's corner form (0 products, 1 radix 16).
 struct HalfspaceShape {
   int stamp, tile;
   HalfspaceWalk walk;
+  int corner_form = 0;
 };
 
 // Every shape the unit supports: stamps 1, 2, 4 x tiles none, 8, 16 x row and zig-zag walks.
@@ -83,10 +85,10 @@ inline std::vector<HalfspaceShape> every_halfspace_shape() {
   return shapes;
 }
 
-// "stamp S tile T walk", for failure messages.
+// "stamp S tile T walk [radix16]", for failure messages.
 inline std::string halfspace_shape_name(const HalfspaceShape& shape) {
   return "stamp " + std::to_string(shape.stamp) + " tile " + std::to_string(shape.tile) + " " +
-         halfspace_walk_name(shape.walk);
+         halfspace_walk_name(shape.walk) + (shape.corner_form ? " radix16" : "");
 }
 
 // `cfg` with the half-space unit set to `shape`.
@@ -94,6 +96,7 @@ inline RasterConfig with_halfspace_shape(RasterConfig cfg, const HalfspaceShape&
   cfg.halfspace.stamp = shape.stamp;
   cfg.halfspace.tile = shape.tile;
   cfg.halfspace.walk = shape.walk;
+  cfg.halfspace.corner_form = shape.corner_form;
   return cfg;
 }
 

@@ -1,6 +1,8 @@
-// The second-generation improved unit's corner unit, CornerForm 1 (rtl/improved2/trirast_improved2.f, the
-// iCE40 form): vertex-relative corner values by digit-serial shift-add, MSB first, DigitBits
-// operand bits per cycle (4: radix 16), for the three edges at once:
+// The digit-serial corner unit, shared by two units: the second-generation improved unit's
+// CornerForm 1 (rtl/improved2/trirast_improved2_top.sv, the iCE40 form) and the half-space unit's
+// set-up stage (rtl/halfspace/trirast_halfspace_setup_stage.sv). Vertex-relative corner values by
+// digit-serial shift-add, MSB first, DigitBits operand bits per cycle (4: radix 16), for the three
+// edges at once:
 //   E_L = A*dx + B*dy - bias,  dx = cx0 - vx, dy = cy0 - vy.
 // The vertex of an edge: edge k runs from v_k to v_k+1, and v0 lies on edges 0 and 2, so both
 // take their operands from v0 and edge 1 from v1 (E is the same from any point of the edge's
@@ -29,15 +31,16 @@
 // holds its accumulator through the run (trirast_improved2_top's second run forms E_R only for the
 // edges whose lane reads it, so each accumulator ends with the value its lane loads). The run's
 // digit count still covers all operands: the same cycles whatever the mask.
-// second_i with start_i: the second run, at x1 = x0 + Xmax: dx = cx1 - vx = dxL + Xmax * 2^F is
-// formed from the first run's dxL, which the operand registers still hold, and xmax_i; the y
-// operands are the first run's (cy0 - vy): they are not reloaded, and the y part of the digit
-// count is the one registered then; P and M are kept. So a second start reads neither the
-// vertices, x0_i, y0_i, a_i nor b_i.
+// second_i with start_i: the second run, at x1 = x0 + xmax_i (improved2: Xmax, for E_R; the
+// half-space set-up: Xmax rounded down to its unit, for E_end): dx = cx1 - vx =
+// dxL + xmax_i * 2^F is formed from the first run's dxL, which the operand registers still hold,
+// and xmax_i; the y operands are the first run's (cy0 - vy): they are not reloaded, and the y
+// part of the digit count is the one registered then; P and M are kept. So a second start reads
+// neither the vertices, x0_i, y0_i, a_i nor b_i.
 `include "trirast_assert.svh"
 `include "trirast_ports.svh"
 
-module trirast_improved2_corner_serial #(
+module trirast_corner_serial #(
   parameter int DigitBits = 4
 ) (
   input  logic                                 clk_i,
