@@ -35,7 +35,9 @@ std::string synth_unit_name(UnitKind k, const RasterConfig& cfg) {
   switch (k) {
     case UnitKind::Improved:
     case UnitKind::Trad: return unit_kind_name(k);
-    case UnitKind::Halfspace: return "halfspace-s" + std::to_string(cfg.halfspace.stamp);
+    case UnitKind::Halfspace:
+      return std::string(cfg.halfspace.corner_form == 0 ? "halfspace-s" : "halfspace-radix16-s") +
+             std::to_string(cfg.halfspace.stamp);
     case UnitKind::Improved2: return cfg.improved2.corner_form == 0 ? "improved2-products" : "improved2";
     default: return "";
   }

@@ -19,7 +19,8 @@ const char* unit_kind_name(UnitKind k);
 // UnitKind::Cpu for any other name.
 UnitKind unit_kind_of(const std::string& unit_name);
 // The unit's name in docs/synth.csv for a configuration: "improved", "trad", the half-space
-// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S), the second-generation
+// unit's "halfspace-sS" (scripts/synth.sh names one unit per stamp size S; in the digit-serial
+// corner form "halfspace-radix16-sS"), the second-generation
 // unit's "improved2" (radix-16 corner form) or "improved2-products" (the products form); "" for no
 // hardware.
 std::string synth_unit_name(UnitKind k, const RasterConfig& cfg);

@@ -50,8 +50,8 @@ std::map<std::string, uint64_t> comparable_work(std::map<std::string, uint64_t> 
   return w;
 }
 
-// Every unit has one speed build, of the default widths and N = 1; improved2 one per corner form
-// (1 radix 16, 0 products: both are timed units of docs/which-unit-wins.md).
+// Every unit has one speed build, of the default widths and N = 1; improved2 and the half-space
+// unit one per corner form (1 radix 16, 0 products).
 TEST(RtlSpeedBuild, DefaultBuildsHaveOne) {
   for (const Unit& u : kUnits) {
     SCOPED_TRACE(u.name);
@@ -63,8 +63,9 @@ TEST(RtlSpeedBuild, DefaultBuildsHaveOne) {
         EXPECT_EQ(b.endpoints, 1);
       }
     const std::map<int, int> expected =
-        std::string(u.name) == "improved2" ? std::map<int, int>{{0, 1}, {1, 1}}
-                                           : std::map<int, int>{{0, 1}};
+        std::string(u.name) == "improved2" || std::string(u.name) == "halfspace"
+            ? std::map<int, int>{{0, 1}, {1, 1}}
+            : std::map<int, int>{{0, 1}};
     EXPECT_EQ(per_corner_form, expected);
   }
 }
@@ -103,12 +104,16 @@ TEST(RtlSpeedBuild, SpeedAndCheckedBuildsAgree) {
   }
 }
 
-// improved2's other corner form (products) has a speed build of its own.
-TEST(RtlSpeedBuild, Improved2ProductsFormBuildsAgree) {
+// The other corner form of improved2 (products) and of the half-space unit (radix 16) has a
+// speed build of its own.
+TEST(RtlSpeedBuild, OtherCornerFormBuildsAgree) {
   RasterConfig cfg;
   cfg.improved2.corner_form = 0;
+  cfg.halfspace.corner_form = 1;
   cfg.validate();
-  expect_builds_agree(kUnits[2], test::scene("builtin:mixed", cfg), cfg);
+  const SetupResult setup = test::scene("builtin:mixed", cfg);
+  expect_builds_agree(kUnits[2], setup, cfg);
+  expect_builds_agree(kUnits[3], setup, cfg);
 }
 
 // A traced run takes the checked build (the speed build has no trace support); a configuration

@@ -28,23 +28,33 @@ EngineResult run_hs(const std::vector<InputTriangle>& tris, const RasterConfig& 
 // Box x, y = 1..8 (Xmax = Ymax = 7); row j covers box columns 0..7-j: 8 spans, 36 pixels.
 InputTriangle right_triangle() { return tri(1, 1, 9.25, 1, 1, 9.25); }
 
+// Each hand test in both corner forms (--hs-corner-form): dsp's StEdge is one cycle, StHold from
+// a + 3. radix16's digit-serial corner unit: for this triangle the operands cx0 - vx, cy0 - vy of
+// v0 and v1 (1/256 pixel) are 128 and 384 - 2368 = -1984, 12 signed bits, so 3 digits a run
+// (docs/timing.md, "Setup stage"): StHold from a + 4 + 3 (one run, a box one unit wide), or from
+// a + 5 + 3 + 3 (two runs); every later cycle moves by the difference, `late`.
 TEST(ScHalfspaceHand, OneTileSixteenStamps) {
   // Stamp 2, tile 8: one band, one tile; its corner (7, 7) is outside the hypotenuse, the others
-  // inside: partial, 1 test + 16 stamps = 17 walker cycles. h = 3, walker 4..20, hand-off at the
-  // end of 20, spans pushed in 21..28, popped in 22..29.
-  RasterConfig cfg;
-  cfg.halfspace.stamp = 2;
-  cfg.halfspace.tile = 8;
-  const EngineResult r = run_hs({right_triangle()}, cfg);
-  ASSERT_EQ(r.cycles.size(), 1u);
-  const TriangleCycles& c = r.cycles[0];
-  EXPECT_EQ(c.accept_cycle, 0u);
-  EXPECT_EQ(c.first_span_cycle, 22u);
-  EXPECT_EQ(c.done_cycle, 29u);
-  EXPECT_EQ(c.spans, 8u);
-  EXPECT_EQ(c.pixels, 36u);
-  EXPECT_EQ(c.stall_cycles, 0u);
-  EXPECT_EQ(r.total_cycles, 30u);
+  // inside: partial, 1 test + 16 stamps = 17 walker cycles. dsp: h = 3, walker 4..20, hand-off at
+  // the end of 20, spans pushed in 21..28, popped in 22..29. radix16: one run, 4 cycles later.
+  for (int form : {0, 1}) {
+    RasterConfig cfg;
+    cfg.halfspace.stamp = 2;
+    cfg.halfspace.tile = 8;
+    cfg.halfspace.corner_form = form;
+    const uint64_t late = form ? 4 : 0;
+    const EngineResult r = run_hs({right_triangle()}, cfg);
+    ASSERT_EQ(r.cycles.size(), 1u);
+    const TriangleCycles& c = r.cycles[0];
+    EXPECT_EQ(c.accept_cycle, 0u);
+    EXPECT_EQ(c.setup_done_cycle, 3u + late) << "form " << form;
+    EXPECT_EQ(c.first_span_cycle, 22u + late) << "form " << form;
+    EXPECT_EQ(c.done_cycle, 29u + late) << "form " << form;
+    EXPECT_EQ(c.spans, 8u);
+    EXPECT_EQ(c.pixels, 36u);
+    EXPECT_EQ(c.stall_cycles, 0u);
+    EXPECT_EQ(r.total_cycles, 30u + late) << "form " << form;
+  }
 }
 
 TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
@@ -52,52 +62,22 @@ TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
   // pushed in 6..9); band 1 runs right to left: stamp (4, 4) is rejected (all four corners
   // outside the hypotenuse), stamp (0, 4) is not: cycles 6, 7; the emitter is busy until 9, so
   // band 1 goes to it at the end of 9 and rows 4..7 are pushed in 10..13, popped in 11..14.
-  RasterConfig cfg;
-  cfg.halfspace.stamp = 4;
-  cfg.halfspace.tile = 0;
-  cfg.halfspace.walk = HalfspaceWalk::Zigzag;
-  const EngineResult r = run_hs({right_triangle()}, cfg);
-  ASSERT_EQ(r.cycles.size(), 1u);
-  EXPECT_EQ(r.cycles[0].first_span_cycle, 7u);
-  EXPECT_EQ(r.cycles[0].done_cycle, 14u);
-  EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
-  EXPECT_EQ(r.total_cycles, 15u);
-}
-
-// Corner form radix16 (--hs-corner-form): the set-up's digit-serial corner unit. For the right
-// triangle the operands cx0 - vx, cy0 - vy of v0 and v1 (1/256 pixel) are 128 and
-// 384 - 2368 = -1984, 12 signed bits: 3 digits a run (docs/timing.md, "Setup stage").
-TEST(ScHalfspaceHand, Radix16CornerOneRunWhenTheBoxIsOneTileWide) {
-  // As OneTileSixteenStamps, one unit wide: run 1 only, StHold from a + 4 + nL = 7 in place of
-  // a + 3: every later cycle 4 later (walker 8..24, spans pushed in 25..32, popped in 26..33).
-  RasterConfig cfg;
-  cfg.halfspace.stamp = 2;
-  cfg.halfspace.tile = 8;
-  cfg.halfspace.corner_form = 1;
-  const EngineResult r = run_hs({right_triangle()}, cfg);
-  ASSERT_EQ(r.cycles.size(), 1u);
-  EXPECT_EQ(r.cycles[0].setup_done_cycle, 7u);
-  EXPECT_EQ(r.cycles[0].first_span_cycle, 26u);
-  EXPECT_EQ(r.cycles[0].done_cycle, 33u);
-  EXPECT_EQ(r.cycles[0].pixels, 36u);
-  EXPECT_EQ(r.total_cycles, 34u);
-}
-
-TEST(ScHalfspaceHand, Radix16CornerTwoRunsWhenTheBoxIsTwoUnitsWide) {
-  // As StampsWithoutTilesZigzag, two units a band: run 1 (E0) and run 2 (E_end at x0 + 4, 3
-  // digits as well), StHold from a + 5 + 3 + 3 = 11 in place of a + 3: every later cycle 8 later.
-  RasterConfig cfg;
-  cfg.halfspace.stamp = 4;
-  cfg.halfspace.tile = 0;
-  cfg.halfspace.walk = HalfspaceWalk::Zigzag;
-  cfg.halfspace.corner_form = 1;
-  const EngineResult r = run_hs({right_triangle()}, cfg);
-  ASSERT_EQ(r.cycles.size(), 1u);
-  EXPECT_EQ(r.cycles[0].setup_done_cycle, 11u);
-  EXPECT_EQ(r.cycles[0].first_span_cycle, 15u);
-  EXPECT_EQ(r.cycles[0].done_cycle, 22u);
-  EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
-  EXPECT_EQ(r.total_cycles, 23u);
+  // radix16: two units a band, two runs (E_end at x0 + 4, 3 digits as well), 8 cycles later.
+  for (int form : {0, 1}) {
+    RasterConfig cfg;
+    cfg.halfspace.stamp = 4;
+    cfg.halfspace.tile = 0;
+    cfg.halfspace.walk = HalfspaceWalk::Zigzag;
+    cfg.halfspace.corner_form = form;
+    const uint64_t late = form ? 8 : 0;
+    const EngineResult r = run_hs({right_triangle()}, cfg);
+    ASSERT_EQ(r.cycles.size(), 1u);
+    EXPECT_EQ(r.cycles[0].setup_done_cycle, 3u + late) << "form " << form;
+    EXPECT_EQ(r.cycles[0].first_span_cycle, 7u + late) << "form " << form;
+    EXPECT_EQ(r.cycles[0].done_cycle, 14u + late) << "form " << form;
+    EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
+    EXPECT_EQ(r.total_cycles, 15u + late) << "form " << form;
+  }
 }
 
 TEST(ScHalfspaceHand, EmptyBoxRetiresInSetupAndNextIsAcceptedTwoLater) {
