@@ -12,7 +12,8 @@
 #   * the default configuration also at its synthesized size (N = 1, DEPTH = 8): the engines take
 #     the smallest build that covers a run's options, and this one simulates several times faster;
 #   * the half-space unit (engine halfspace-rtl) at three stamp/tile/walk configurations in corner
-#     form 0 (products) and two in corner form 1 (radix 16), of the default widths and of "hslimit" (a 4-pixel coordinate range with 16-pixel boxes: its tile
+#     form 0 (products) and two in corner form 1 (radix 16, with TRIRAST_RTL_EXTRA_WIDTHS), of the
+#     default widths and of "hslimit" (a 4-pixel coordinate range with 16-pixel boxes: its tile
 #     corners lie past the range, so its corner values need more than 2p + 2 bits; docs/unit.md,
 #     "The half-space unit"; not a synthesis configuration), at DEPTH.
 # The maximal default build keeps the plain prefix (Vtrirast_improved_top, Vtrirast_trad_top):
@@ -43,9 +44,10 @@
 set(TRIRAST_RTL_WIDTH_CONFIGS default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:8:6 hslimit:4:3:4)
 
 # TRIRAST_RTL_EXTRA_WIDTHS (ON by default; scripts/test.sh sets it ON): Verilate the other width
-# configurations (small, wide, tiny, and the half-space unit's hslimit) too. OFF builds the default
-# widths alone (11 models): a first build that runs every engine at the default widths
-# (scripts/demo.sh's, when build/ is new) and refuses other widths with the build it lacks.
+# configurations (small, wide, tiny, and the half-space unit's hslimit) and the half-space unit's
+# digit-serial corner form (--hs-corner-form radix16) too. OFF builds the default widths and
+# forms alone (11 models): a first build that runs every engine at its defaults (scripts/demo.sh's,
+# when build/ is new) and refuses other widths and that form with the build it lacks.
 option(TRIRAST_RTL_EXTRA_WIDTHS "Verilate the non-default width configurations too" ON)
 
 # TRIRAST_RTL_COVERAGE (ON by default): the cover points of rtl/ (`COVER, trirast_assert.svh) in
@@ -84,11 +86,11 @@ function(trirast_rtl_build_specs out_var endpoints depth)
   list(APPEND _builds
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0:0"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1:0"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s1t0z:default:1:${depth}:1:0:1:1")
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1:0")
   if(TRIRAST_RTL_EXTRA_WIDTHS)
     list(APPEND _builds
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s1t0z:default:1:${depth}:1:0:1:1"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8z:hslimit:1:${depth}:2:8:1:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1:0"
@@ -99,8 +101,11 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "speed:trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
-    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0"
-    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1")
+    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0")
+  if(TRIRAST_RTL_EXTRA_WIDTHS)
+    list(APPEND _builds
+      "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1")
+  endif()
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()
 
