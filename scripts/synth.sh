@@ -294,7 +294,7 @@ fi
 # The half-space unit's wrappers: the whole unit per stamp size (its ports do not depend on the
 # build parameters, which the wrapper sets on the instance), and its setup stage.
 for unit in $HS_UNITS; do
-  read -r s t z <<< "$(hs_params "$unit")"
+  read -r s t z _ <<< "$(hs_params "$unit")"
   # shellcheck disable=SC2086
   for cfg in default "$FIT_CONFIG"; do
     # shellcheck disable=SC2086
@@ -304,7 +304,7 @@ for unit in $HS_UNITS; do
   done
 done
 for unit in $HS_UNITS; do
-  read -r s t z <<< "$(hs_params "$unit")"
+  read -r s t z _ <<< "$(hs_params "$unit")"
   wanted "pnr.$unit.walker" && { gen_wrapper "trirast_synth_hs_walker_s$s" trirast_halfspace_tile_walker "$unit" default \
     --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
     echo "synth.sh: half-space walker wrapper (stamp $s) failed" >&2; }
