@@ -188,9 +188,10 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
   local d="$WORK/pnr/$name"
   mkdir -p "$d"
   rm -f "$d/nextpnr.log" "$d/design.json"
-  # -nobram: the span FIFO stays in flip-flops and LUTs, as in the area table (a FIFO read is
-  # combinational in the first-generation units, so block RAM would change their timing); the
-  # second generation's FIFO is built for block RAM (a registered read, FifoRam 1): "bram".
+  # -nobram: the span FIFO stays in flip-flops and LUTs (a FIFO read is combinational in the
+  # improved and traditional units, so block RAM would change their timing); the second
+  # generation's and the half-space unit's FIFOs are built for block RAM (a registered read,
+  # FifoRam 1): "bram" (their whole-unit jobs).
   yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg") $extra;
     $pre synth_ice40 $nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
   # PNR_TIMEOUT (seconds, environment; 0 or unset = none) stops a router that no longer converges.
@@ -353,10 +354,10 @@ pnr_wrapper() {
 run_job pnr.improved.setup pnr improved.setup improved default trirast_synth_setup "" \
   "$SHELL_SV $WORK/default/trirast_synth_setup.sv"
 for unit in $HS_UNITS; do
-  pnr_wrapper "$unit.default" "$unit" default "trirast_synth_hs_s${unit#halfspace-s}"
+  pnr_wrapper "$unit.default" "$unit" default "trirast_synth_hs_s${unit#halfspace-s}" bram
 done
 for unit in $HSR_UNITS; do
-  pnr_wrapper "$unit.default" "$unit" default "trirast_synth_hsr_s${unit##*-s}"
+  pnr_wrapper "$unit.default" "$unit" default "trirast_synth_hsr_s${unit##*-s}" bram
 done
 for cfg in $CONFIGS; do
   name="${cfg%%:*}"
@@ -378,7 +379,7 @@ for unit in $HS_UNITS; do
   pnr_wrapper "$unit.walker" "$unit" default "trirast_synth_hs_walker_s${unit#halfspace-s}"
 done
 for unit in $HS_UNITS; do
-  pnr_wrapper "$unit.$FIT_CONFIG" "$unit" "$FIT_CONFIG" "trirast_synth_hs_s${unit#halfspace-s}"
+  pnr_wrapper "$unit.$FIT_CONFIG" "$unit" "$FIT_CONFIG" "trirast_synth_hs_s${unit#halfspace-s}" bram
 done
 pnr_wrapper halfspace.setup "${HS_UNITS%% *}" default trirast_synth_hs_setup
 pnr_wrapper halfspace-radix16.setup "${HSR_UNITS%% *}" default trirast_synth_hsr_setup
@@ -791,9 +792,10 @@ OUT="$ROOT/docs/synth.md"
   echo "Notes: iCE40 HX parts have no multipliers, so the nine corner-value products"
   echo "((p + 1) x PixBits bits, docs/unit.md section 1) are LUTs there; on Xilinx they map to DSP48E1."
   echo "Flip-flops include the 32-bit triangle tag carried with every span (TagBits) and the 8-entry"
-  echo "span FIFO. Place and route uses \`synth_ice40 -nobram\` (the FIFO in flip-flops, as in the area"
-  echo "table: its read is combinational in the unit); the second-generation unit's place and route"
-  echo "keeps block RAM (its FIFO is built for it: a registered read). LUT counts on Xilinx 7 do not"
+  echo "span FIFO. Place and route of the improved and traditional units uses \`synth_ice40 -nobram\`"
+  echo "(the FIFO in flip-flops: its read is combinational in those units); the second-generation and"
+  echo "half-space units' place and route keeps block RAM (their FIFOs are built for it: a registered"
+  echo "read, \`FifoRam 1\`). LUT counts on Xilinx 7 do not"
   echo "include LUT RAM cells (RAM32M: the span FIFO's storage where Yosys maps it there)."
 } > "$OUT"
 echo "synth.sh: wrote $OUT ($ELAPSED s)" >&2

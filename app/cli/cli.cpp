@@ -91,7 +91,7 @@ std::vector<OptionSpec> scene_options() {
       {"--tile", "T", "tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
       {"--hs-walk", "ORDER", "tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
       {"--corner-form", "FORM", "corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
-      {"--hs-corner-form", "FORM", "edge values at the box corner by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first: 2 + nL cycles, plus 1 + nR for a box wider than a tile)", "dsp"},
+      {"--hs-corner-form", "FORM", "edge values at the box corner by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first: 2 + nL cycles, plus 1 + nR for a box wider than one unit: a tile, or a stamp without tiles)", "dsp"},
       {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "the downstream of the span output: a ready pattern none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99), or queue:RATE:CAPACITY, a pixel queue that reacts to what it took (consumes RATE pixels per cycle; ready while fewer than CAPACITY pixels are queued)", "none"},

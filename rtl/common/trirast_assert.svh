@@ -176,3 +176,19 @@
 `define COVER(__name, __prop, __clk, __rst)
 `endif
 `endif  // TRIRAST_COVER_SVH
+
+// A span port's checks (trirast_span_port, and trirast_halfspace_top's span port in block RAM):
+// the handshake (a span offered and not taken stays, unchanged, next cycle), known values on the
+// outputs (the valid and the count always, the span when valid), and two cover points
+// (docs/coverage.md): a span waiting (valid, not ready), and ready low for two cycles or more in
+// a row (the downstream's back-pressure). Clock clk_i, reset rst_ni.
+`ifndef TRIRAST_SPAN_PORT_CHECKS
+`define TRIRAST_SPAN_PORT_CHECKS(__valid, __ready, __data, __count)                          \
+  `ASSERT_NEXT(SpanValidHeld_A, __valid && !__ready, __valid, clk_i, !rst_ni)                 \
+  `ASSERT_STABLE(SpanDataStable_A, __valid && !__ready, __data, clk_i, !rst_ni)               \
+  `ASSERT_KNOWN(SpanValidKnown_A, __valid, clk_i, !rst_ni)                                    \
+  `ASSERT_KNOWN(FifoCountKnown_A, __count, clk_i, !rst_ni)                                    \
+  `ASSERT_KNOWN_IF(SpanDataKnown_A, __valid, __data, clk_i, !rst_ni)                          \
+  `COVER(SpanPortStall_C, __valid && !__ready, clk_i, !rst_ni)                                \
+  `COVER(SpanReadyLow2_C, !__ready && !$past(__ready), clk_i, !rst_ni)
+`endif

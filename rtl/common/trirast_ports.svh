@@ -136,7 +136,7 @@
   .span_y_o (span_y_o), .span_x_begin_o (span_x_begin_o), .span_x_end_o (span_x_end_o)
 
 // ---- the walk stage's timing observation (the harness's per-triangle timing) ----
-//   walk_busy_o : a triangle walks
+//   walk_busy_o : a triangle walks (half-space unit: or a span is in the span FIFO's push register)
 //   walk_stall_o : ... and waits for FIFO room this cycle
 //   walk_last_o : its last group or row goes
 //   walk_retire_o : ... and it had no span

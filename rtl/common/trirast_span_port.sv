@@ -58,17 +58,6 @@ module trirast_span_port #(
 
   assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = head;
 
-  // The span port's handshake: a span offered and not taken stays, unchanged, next cycle.
-  `ASSERT_NEXT(SpanValidHeld_A, span_valid_o && !span_ready_i, span_valid_o, clk_i, !rst_ni)
-  `ASSERT_STABLE(SpanDataStable_A, span_valid_o && !span_ready_i, head, clk_i, !rst_ni)
-  // Known values on the unit's outputs: the valid and the count always, the span when valid.
-  `ASSERT_KNOWN(SpanValidKnown_A, span_valid_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN(FifoCountKnown_A, count_o, clk_i, !rst_ni)
-  `ASSERT_KNOWN_IF(SpanDataKnown_A, span_valid_o, head, clk_i, !rst_ni)
-
-  // Cover points (docs/coverage.md): a span waiting (valid, not ready), and ready low for two
-  // cycles or more in a row (the downstream's back-pressure).
-  `COVER(SpanPortStall_C, span_valid_o && !span_ready_i, clk_i, !rst_ni)
-  `COVER(SpanReadyLow2_C, !span_ready_i && !$past(span_ready_i), clk_i, !rst_ni)
+  `TRIRAST_SPAN_PORT_CHECKS(span_valid_o, span_ready_i, head, count_o)
 
 endmodule

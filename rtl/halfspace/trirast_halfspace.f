@@ -5,8 +5,7 @@
 ../common/trirast_triangle_port_check.sv
 ../common/trirast_box_stage.sv
 ../common/trirast_corner_serial.sv
-../common/trirast_span_fifo.sv
-../common/trirast_span_port.sv
+../common/trirast_span_fifo_ram.sv
 trirast_halfspace_setup_stage.sv
 trirast_halfspace_stamp_tester.sv
 trirast_halfspace_walk_decide.sv

@@ -2,7 +2,9 @@
 // two buffers of UnitSize rows. The collect buffer widens each row's run [first, last] with the
 // walker's pieces (stamp rows, accepted tiles) of the current band; at band_load_i (end of the
 // band) the merged rows move to the emit buffer, which pushes one span per cycle, lowest row
-// first, when the FIFO has room at the start of the cycle (count <= DEPTH - 1).
+// first, when the FIFO has room at the start of the cycle: count + pending < DEPTH, with pending
+// the span in the push register in front of the span FIFO (trirast_halfspace_top: a span pushed
+// in t is counted from the end of t + 1).
 `include "trirast_assert.svh"
 
 module trirast_halfspace_span_emitter #(
@@ -14,6 +16,7 @@ module trirast_halfspace_span_emitter #(
   input  logic                                  rst_ni,
   input  logic [CountBits-1:0]                  fifo_depth_i,
   input  logic [CountBits-1:0]                  fifo_count_i,
+  input  logic                                  fifo_pending_i,  // a span in the FIFO's push register
   // ---- the triangle (stable while the walk stage is busy) ----
   input  logic [trirast_pkg::TagBits-1:0]       tag_i,
   input  logic [trirast_pkg::PixBits-1:0]       x0_i,
@@ -66,7 +69,8 @@ module trirast_halfspace_span_emitter #(
   assign any_o = |merged;
 
   // The emit buffer: the lowest pending row goes when the FIFO has room.
-  assign room = fifo_count_i < fifo_depth_i;
+  assign room = (CountBits + 1)'(fifo_count_i) + (CountBits + 1)'(fifo_pending_i) <
+                (CountBits + 1)'(fifo_depth_i);
   always_comb begin
     logic [RowBits-1:0] lowest;
     lowest = '0;

@@ -3,12 +3,13 @@
 //   setup stage (interface: box; edge values at the box corner: CornerForm 0 from the
 //   interface's products, CornerForm 1 from the digit-serial corner unit, vertex-relative, C not
 //   read) -> tile walker (unit tests, stamp tester) -> span
-//   emitter (band buffers, one span per cycle) -> span FIFO and span port (trirast_span_port,
-//   one push port).
-// The triangle port is trirast_improved_top's; the span port and FIFO are the shared trirast_span_port.
+//   emitter (band buffers, one span per cycle) -> span FIFO (trirast_span_fifo_ram: block RAM,
+//   behind a registered push) and span port.
+// The triangle port is trirast_improved_top's; the span port's checks are trirast_span_port's
+// (TRIRAST_SPAN_PORT_CHECKS).
 // Build parameters: StampSize (1, 2, 4), TileSize (8, 16; 0 = no tiles), WalkZigzag, CornerForm.
 // Every boundary is a valid/ready handshake: triangle port, hand-off, band hand-over to the
-// emitter, FIFO push (admitted by the occupancy test count <= DEPTH - 1), span port.
+// emitter, FIFO push (admitted by the occupancy test count + pending <= DEPTH - 1), span port.
 `include "trirast_assert.svh"
 `include "trirast_ports.svh"
 
@@ -47,6 +48,7 @@ module trirast_halfspace_top #(
   logic [3*CoefBits-1:0] hand_a, hand_b;
   logic [3*EdgeBits-1:0] hand_e0, hand_eend;
   logic [2:0] setup_state, walk_state;
+  logic walker_busy;
   logic unused_obs;  // walk_state is observed in traces only
   assign unused_obs = ^walk_state;
 
@@ -90,14 +92,17 @@ module trirast_halfspace_top #(
     .band_j0_o     (band_j0),
     .emit_any_i    (emit_any),
     .emit_free_i   (emit_free),
-    .busy_o        (walk_busy_o),
+    .busy_o        (walker_busy),
     .last_o        (walk_last_o),
     .retire_o      (walk_retire_o),
     .state_o       (walk_state)
   );
 
-  logic push;
+  logic push, push_pending;
   logic [EntryBits-1:0] push_data;
+  // The walk stage is busy while the walker works and while a span is in the span port's push
+  // register (the run ends, and a testbench may stop, only once that span is in the FIFO).
+  assign walk_busy_o = walker_busy || push_pending;
 
   trirast_halfspace_span_emitter #(
     .UnitSize  (UnitSize),
@@ -108,6 +113,7 @@ module trirast_halfspace_top #(
     .rst_ni        (rst_ni),
     .fifo_depth_i  (cfg_fifo_depth_i),
     .fifo_count_i  (fifo_count_o),
+    .fifo_pending_i (push_pending),
     .tag_i         (tag),
     .x0_i          (x0),
     .y0_i          (y0),
@@ -125,8 +131,24 @@ module trirast_halfspace_top #(
   assign {walk_tag_o, setup_state_o} = {tag, setup_state};
   `TRIRAST_ASSIGN_HANDOFF_OBSERVATION(hand_xmax, hand_ymax)
 
-  trirast_span_port #(.FifoDepth (FifoDepth)) u_span_port (
-    `TRIRAST_CONNECT_SPAN_PORT);
+  // The span FIFO in block RAM (trirast_span_fifo_ram) behind a registered push: the emitter's
+  // span of cycle t is written into the memory at the end of t and counted from the end of
+  // t + 1 (push_pending in t + 1), so it shows on the span port from t + 2.
+  logic [EntryBits-1:0] span_head;
+  `TRIRAST_FLOP_AR(push_pending, push, 1'b0)
+  trirast_span_fifo_ram #(.FifoDepth (FifoDepth), .EntryBits (EntryBits)) u_span_fifo (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .wr_i    (push),
+    .wdata_i (push_data),
+    .push_i  (push_pending),
+    .count_o (fifo_count_o),
+    .valid_o (span_valid_o),
+    .ready_i (span_ready_i),
+    .data_o  (span_head)
+  );
+  assign {span_tag_o, span_y_o, span_x_begin_o, span_x_end_o} = span_head;
+  `TRIRAST_SPAN_PORT_CHECKS(span_valid_o, span_ready_i, span_head, fifo_count_o)
 
   `ASSERT(CfgFifoDepthInRange_A, cfg_fifo_depth_i != '0 && 32'(cfg_fifo_depth_i) <= FifoDepth,
           clk_i, !rst_ni)

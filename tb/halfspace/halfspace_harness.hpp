@@ -33,8 +33,9 @@ struct HalfspacePorts : BoxStagePorts<Top, P> {  // offer, observe_handoff, earl
   void count(const Top& top, ModuleCycles& m) {
     const unsigned st = top.setup_state_o;
     m.busy[kHsSetup] += st == kHsStBox || st == kHsStEdge;
-    m.stall[kHsSetup] += st == kHsStHold && top.walk_busy_o;
     const unsigned w = top.probe_walk_state_o;
+    // The walker's own state: walk_busy_o also covers a span in the span port's push register.
+    m.stall[kHsSetup] += st == kHsStHold && w != kHsWIdle;
     const bool band = w == kHsWUnit || w == kHsWStamp;
     m.busy[kHsTileWalker] += band;
     m.stall[kHsTileWalker] += w == kHsWWait;
@@ -68,7 +69,7 @@ struct HalfspacePorts : BoxStagePorts<Top, P> {  // offer, observe_handoff, earl
   enum : int { kHsSetup, kHsTileWalker, kHsWalk, kHsSpanEmitter };
   static constexpr unsigned kHsStBox = 1, kHsStEdge = 2, kHsStHold = 4;
   // Tile-walker states of rtl/halfspace/trirast_halfspace_tile_walker.sv.
-  static constexpr unsigned kHsWUnit = 1, kHsWStamp = 2, kHsWWait = 3;
+  static constexpr unsigned kHsWIdle = 0, kHsWUnit = 1, kHsWStamp = 2, kHsWWait = 3;
   // A box of up to 2^box_bits x 2^box_bits pixels walked a pixel per cycle without a span (every
   // unit of an empty band is tested), plus margin: cycle_loop.hpp's watchdog.
   static constexpr uint64_t kWatchdogCycles = uint64_t(4) << (2 * P::kBoxBits);

@@ -114,22 +114,45 @@ TEST(RtlCoverage, DividerLengthsFollowTheDividerMode) {
   }
 }
 
-// The labels of the `COVER points in a unit's RTL (its file list, rtl/UNIT/trirast_UNIT.f).
+std::string read_text(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// The labels of the `COVER points in a unit's RTL (its file list, rtl/UNIT/trirast_UNIT.f), with
+// those of the check macros of rtl/common/trirast_assert.svh it uses (`TRIRAST_SPAN_PORT_CHECKS).
 std::set<std::string> cover_labels(const std::string& unit) {
+  const std::string common = std::string(TRIRAST_SOURCE_DIR) + "/rtl/common/";
   const std::string dir = std::string(TRIRAST_SOURCE_DIR) + "/rtl/" + unit + "/";
+  const std::regex cover(R"(`COVER\((\w+),)");
+  auto labels_in = [&](const std::string& s, std::set<std::string>& labels) {
+    for (std::sregex_iterator it(s.begin(), s.end(), cover), end; it != end; ++it)
+      labels.insert((*it)[1]);
+  };
+  // A macro's points: the `COVER lines of its definition (up to the line without a backslash).
+  std::map<std::string, std::set<std::string>> macro_labels;
+  {
+    const std::string header = read_text(common + "trirast_assert.svh");
+    const std::regex define(R"(`define (TRIRAST_\w+)\()");
+    for (std::sregex_iterator it(header.begin(), header.end(), define), end; it != end; ++it) {
+      size_t stop = size_t(it->position());
+      while ((stop = header.find('\n', stop)) != std::string::npos && header[stop - 1] == '\\') ++stop;
+      labels_in(header.substr(size_t(it->position()), stop - size_t(it->position())),
+                macro_labels[(*it)[1]]);
+    }
+  }
   std::ifstream list(dir + "trirast_" + unit + ".f");
   std::set<std::string> labels;
   std::string file;
-  const std::regex cover(R"(`COVER\((\w+),)");
   while (std::getline(list, file)) {
     if (file.empty() || file.compare(0, 2, "//") == 0) continue;
-    std::ifstream in(dir + file);
-    if (!in) throw std::runtime_error("cannot read " + dir + file);
-    std::stringstream text;
-    text << in.rdbuf();
-    const std::string s = text.str();
-    for (std::sregex_iterator it(s.begin(), s.end(), cover), end; it != end; ++it)
-      labels.insert((*it)[1]);
+    const std::string s = read_text(dir + file);
+    labels_in(s, labels);
+    for (const auto& [name, points] : macro_labels)
+      if (s.find("`" + name + "(") != std::string::npos) labels.insert(points.begin(), points.end());
   }
   return labels;
 }

@@ -36,7 +36,8 @@ InputTriangle right_triangle() { return tri(1, 1, 9.25, 1, 1, 9.25); }
 TEST(ScHalfspaceHand, OneTileSixteenStamps) {
   // Stamp 2, tile 8: one band, one tile; its corner (7, 7) is outside the hypotenuse, the others
   // inside: partial, 1 test + 16 stamps = 17 walker cycles. dsp: h = 3, walker 4..20, hand-off at
-  // the end of 20, spans pushed in 21..28, popped in 22..29. radix16: one run, 4 cycles later.
+  // the end of 20, spans pushed by the emitter in 21..28, through the span port's push register
+  // into the FIFO at the end of 22..29, popped in 23..30. radix16: one run, 4 cycles later.
   for (int form : {0, 1}) {
     RasterConfig cfg;
     cfg.halfspace.stamp = 2;
@@ -48,20 +49,21 @@ TEST(ScHalfspaceHand, OneTileSixteenStamps) {
     const TriangleCycles& c = r.cycles[0];
     EXPECT_EQ(c.accept_cycle, 0u);
     EXPECT_EQ(c.setup_done_cycle, 3u + late) << "form " << form;
-    EXPECT_EQ(c.first_span_cycle, 22u + late) << "form " << form;
-    EXPECT_EQ(c.done_cycle, 29u + late) << "form " << form;
+    EXPECT_EQ(c.first_span_cycle, 23u + late) << "form " << form;
+    EXPECT_EQ(c.done_cycle, 30u + late) << "form " << form;
     EXPECT_EQ(c.spans, 8u);
     EXPECT_EQ(c.pixels, 36u);
     EXPECT_EQ(c.stall_cycles, 0u);
-    EXPECT_EQ(r.total_cycles, 30u + late) << "form " << form;
+    EXPECT_EQ(r.total_cycles, 31u + late) << "form " << form;
   }
 }
 
 TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
   // Stamp 4, no tiles, zig-zag: band 0 tests stamps 0, 1 in 4, 5 (hand-off end of 5, rows 0..3
-  // pushed in 6..9); band 1 runs right to left: stamp (4, 4) is rejected (all four corners
-  // outside the hypotenuse), stamp (0, 4) is not: cycles 6, 7; the emitter is busy until 9, so
-  // band 1 goes to it at the end of 9 and rows 4..7 are pushed in 10..13, popped in 11..14.
+  // pushed in 6..9, in the FIFO at the end of 7..10, popped in 8..11); band 1 runs right to left:
+  // stamp (4, 4) is rejected (all four corners outside the hypotenuse), stamp (0, 4) is not:
+  // cycles 6, 7; the emitter is busy until 9, so band 1 goes to it at the end of 9 and rows 4..7
+  // are pushed in 10..13, in the FIFO at the end of 11..14, popped in 12..15.
   // radix16: two units a band, two runs (E_end at x0 + 4, 3 digits as well), 8 cycles later.
   for (int form : {0, 1}) {
     RasterConfig cfg;
@@ -73,10 +75,10 @@ TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
     const EngineResult r = run_hs({right_triangle()}, cfg);
     ASSERT_EQ(r.cycles.size(), 1u);
     EXPECT_EQ(r.cycles[0].setup_done_cycle, 3u + late) << "form " << form;
-    EXPECT_EQ(r.cycles[0].first_span_cycle, 7u + late) << "form " << form;
-    EXPECT_EQ(r.cycles[0].done_cycle, 14u + late) << "form " << form;
+    EXPECT_EQ(r.cycles[0].first_span_cycle, 8u + late) << "form " << form;
+    EXPECT_EQ(r.cycles[0].done_cycle, 15u + late) << "form " << form;
     EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
-    EXPECT_EQ(r.total_cycles, 15u + late) << "form " << form;
+    EXPECT_EQ(r.total_cycles, 16u + late) << "form " << form;
   }
 }
 
