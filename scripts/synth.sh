@@ -190,8 +190,8 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
   rm -f "$d/nextpnr.log" "$d/design.json"
   # -nobram: the span FIFO stays in flip-flops and LUTs (a FIFO read is combinational in the
   # improved and traditional units, so block RAM would change their timing); the second
-  # generation's and the half-space unit's FIFOs are built for block RAM (a registered read,
-  # FifoRam 1): "bram" (their whole-unit jobs).
+  # generation's (FifoRam 1) and the half-space unit's FIFOs are built for block RAM (a
+  # registered read): "bram" (their whole-unit jobs).
   yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg") $extra;
     $pre synth_ice40 $nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
   # PNR_TIMEOUT (seconds, environment; 0 or unset = none) stops a router that no longer converges.
@@ -795,7 +795,7 @@ OUT="$ROOT/docs/synth.md"
   echo "span FIFO. Place and route of the improved and traditional units uses \`synth_ice40 -nobram\`"
   echo "(the FIFO in flip-flops: its read is combinational in those units); the second-generation and"
   echo "half-space units' place and route keeps block RAM (their FIFOs are built for it: a registered"
-  echo "read, \`FifoRam 1\`). LUT counts on Xilinx 7 do not"
+  echo "read; improved2's \`FifoRam 1\`, the half-space unit's always). LUT counts on Xilinx 7 do not"
   echo "include LUT RAM cells (RAM32M: the span FIFO's storage where Yosys maps it there)."
 } > "$OUT"
 echo "synth.sh: wrote $OUT ($ELAPSED s)" >&2

@@ -66,8 +66,9 @@ uint64_t HalfspaceWalkStageSc::walk(HalfspaceSetupTxn& x, uint64_t h) {
     uint64_t p = w;
     for (uint64_t i = 0; i < b.spans; ++i, ++next) {
       const Span& s = spans_[next];
-      // The emitter's push in p goes through the span port's push register (FifoRam 1): into
-      // the FIFO at the end of p + 1. The room test counts it (first_room: count + pending).
+      // The emitter's push in p goes through the push register in front of the span FIFO (in
+      // block RAM): into the FIFO at the end of p + 1. The room test counts it (first_room:
+      // count + pending).
       p = start_row(p + 1, 1, uint64_t(s.y - x.setup.y0));
       spans->push(s, x.pos, p + 1);
       ++emitter_pushes;

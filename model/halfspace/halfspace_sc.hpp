@@ -50,7 +50,7 @@ class HalfspaceSetupStageSc : public SetupStageBase<HalfspaceSetupTxn> {
 // The walk stage: band k's walker cycles (one per unit test, one per stamp of a partial tile),
 // then the band goes to the span emitter as soon as the emitter has pushed the previous band's
 // last span; the emitter pushes one span per cycle when the FIFO has room (its entries and the
-// span in the port's push register leave one free), the span in the FIFO a cycle later.
+// span in the FIFO's push register leave one free), the span in the FIFO a cycle later.
 class HalfspaceWalkStageSc : public WalkStageBase<HalfspaceSetupTxn> {
  public:
   explicit HalfspaceWalkStageSc(sc_core::sc_module_name name) : WalkStageBase<HalfspaceSetupTxn>(name, 17) {}

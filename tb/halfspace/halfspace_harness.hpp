@@ -34,7 +34,7 @@ struct HalfspacePorts : BoxStagePorts<Top, P> {  // offer, observe_handoff, earl
     const unsigned st = top.setup_state_o;
     m.busy[kHsSetup] += st == kHsStBox || st == kHsStEdge;
     const unsigned w = top.probe_walk_state_o;
-    // The walker's own state: walk_busy_o also covers a span in the span port's push register.
+    // The walker's own state: walk_busy_o also covers a span in the span FIFO's push register.
     m.stall[kHsSetup] += st == kHsStHold && w != kHsWIdle;
     const bool band = w == kHsWUnit || w == kHsWStamp;
     m.busy[kHsTileWalker] += band;
