@@ -18,6 +18,9 @@ UnitWidths unit_widths(const RasterConfig& cfg) {
   w.walker_x = w.quotient + 2;      // X' in [-(2^Q + 1), 2^Q + 2^box_bits)
   w.numerator = w.edge_value;       // |edge value| of a 2p+2-bit signed value
   w.hs_edge_value = hs_edge_bits(cfg, cfg.halfspace.tile > 0 ? cfg.halfspace.tile : cfg.halfspace.stamp);
+  int log2_tile = 0;
+  while ((1 << log2_tile) < cfg.halfspace.tile) ++log2_tile;
+  w.hs_stamp_value = cfg.halfspace.tile > 0 ? w.edge_coef + log2_tile + 1 + w.frac : w.edge_value;
   return w;
 }
 

@@ -26,6 +26,11 @@ struct UnitWidths {
   // hs_edge_bits(cfg, U): 2p + 2 unless U > 2^(coord_int_bits - 1), i.e. the units reach past
   // the largest viewport (coord_int_bits <= 4 with tiles).
   int hs_edge_value;
+  // With tiles, a partial tile's stamp values of an edge that crosses the tile (not all four
+  // corners inside it): tile-relative, between the smallest and the largest corner, whose spread
+  // (T - 1)(|A| + |B|) u < 2^(p + 1 + log2 T + F): p + 2 + log2 T + F signed bits. An edge that
+  // holds the whole tile inside is masked, not summed. Without tiles: edge_value.
+  int hs_stamp_value;
 };
 
 // Signed bits of every edge value the half-space unit forms at a unit corner for unit side U:

@@ -4,7 +4,8 @@ namespace trirast {
 
 HalfspaceStampTester::HalfspaceStampTester(const RasterConfig& cfg) : S_(cfg.halfspace.stamp), w_(unit_widths(cfg)) {}
 
-HalfspaceStampOut HalfspaceStampTester::test(const HalfspaceSetupOut& s, int64_t i0, int64_t j0) const {
+HalfspaceStampOut HalfspaceStampTester::test(const HalfspaceSetupOut& s, int64_t i0, int64_t j0,
+                                             unsigned edges_inside) const {
   HalfspaceStampOut o;
   for (int dj = 0; dj < S_; ++dj) {
     const int64_t j = j0 + dj;
@@ -15,9 +16,10 @@ HalfspaceStampOut HalfspaceStampTester::test(const HalfspaceSetupOut& s, int64_t
       if (i > s.Xmax) break;
       bool in = true;
       for (int k = 0; k < 3; ++k) {
+        if (edges_inside >> k & 1u) continue;
         const HalfspaceEdge& e = s.edge[k];
         const int64_t v = e.E0 + i * e.a + j * e.b;
-        check_signed(v, w_.edge_value, s.tri, "pixel E", "edge value");
+        check_signed(v, w_.hs_stamp_value, s.tri, "pixel E", "stamp value");
         in = in && v >= 0;
       }
       if (!in) continue;

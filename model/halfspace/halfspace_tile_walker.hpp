@@ -15,14 +15,21 @@ namespace trirast {
 
 enum class HalfspaceClass { Reject, Accept, Partial };
 
+// A unit test's outcome, and which edges hold all four of the unit's corners inside them (bit k:
+// edge k), which a partial tile's stamps mask (HalfspaceStampTester::test).
+struct HalfspaceUnitTest {
+  HalfspaceClass cls;
+  unsigned edges_inside;
+};
+
 class HalfspaceTileWalker {
  public:
   HalfspaceTileWalker(const RasterConfig& cfg);
   // Corner test of the U x U unit at box pixel (i0, j0). Tiles may accept; stamps never do
   // (a stamp's pixels are tested one by one).
-  HalfspaceClass classify(const HalfspaceSetupOut& s, int64_t i0, int64_t j0) const;
+  HalfspaceUnitTest classify(const HalfspaceSetupOut& s, int64_t i0, int64_t j0) const;
 
-  // Walks band `band` of s: calls visit(i0, j0, cls) for each unit tested, in order; returns
+  // Walks band `band` of s: calls visit(i0, j0, test) for each unit tested, in order; returns
   // the number of units tested.
   template <class Visit>
   int64_t walk_band(const HalfspaceSetupOut& s, int64_t band, Visit&& visit) const {
@@ -34,10 +41,10 @@ class HalfspaceTileWalker {
     int64_t tested = 0;
     for (int64_t n = 0; n < s.units; ++n) {
       const int64_t col = backward ? s.units - 1 - n : n;
-      const HalfspaceClass c = classify(s, col * U, j0);
+      const HalfspaceUnitTest t = classify(s, col * U, j0);
       ++tested;
-      visit(col * U, j0, c);
-      if (c != HalfspaceClass::Reject) {
+      visit(col * U, j0, t);
+      if (t.cls != HalfspaceClass::Reject) {
         seen = true;
       } else if (early_end && seen) {
         break;

@@ -40,15 +40,15 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
   for (int64_t k = 0; k < s.bands; ++k) {
     emitter_.begin_band(k * U);
     HalfspaceBand band;
-    auto stamp = [&](int64_t i0, int64_t j0) {
-      const HalfspaceStampOut st = tester_.test(s, i0, j0);
+    auto stamp = [&](int64_t i0, int64_t j0, unsigned edges_inside) {
+      const HalfspaceStampOut st = tester_.test(s, i0, j0, edges_inside);
       ++w.stamps;
       ++band.cycles;
       for (int dj = 0; dj < S; ++dj)
         if (st.row[dj].any) emitter_.merge(j0 + dj, st.row[dj].first, st.row[dj].last);
     };
-    const int64_t tested = walker_.walk_band(s, k, [&](int64_t i0, int64_t j0, HalfspaceClass c) {
-      if (c == HalfspaceClass::Reject) {
+    const int64_t tested = walker_.walk_band(s, k, [&](int64_t i0, int64_t j0, const HalfspaceUnitTest& t) {
+      if (t.cls == HalfspaceClass::Reject) {
         ++w.rejected;
         return;
       }
@@ -60,7 +60,7 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
         return;
       }
       const int64_t i1 = std::min(i0 + U - 1, s.Xmax), j1 = std::min(j0 + U - 1, s.Ymax);
-      if (c == HalfspaceClass::Accept) {
+      if (t.cls == HalfspaceClass::Accept) {
         ++w.accepted;
         for (int64_t j = j0; j <= j1; ++j) emitter_.merge(j, i0, i1);
         return;
@@ -68,7 +68,7 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
       ++w.partial;
       // The stamps of the tile inside the box, row by row.
       for (int64_t sj = j0; sj <= j1; sj += S)
-        for (int64_t si = i0; si <= i1; si += S) stamp(si, sj);
+        for (int64_t si = i0; si <= i1; si += S) stamp(si, sj, t.edges_inside);
     });
     w.units_tested += uint64_t(tested);
     band.cycles += uint64_t(tested);

@@ -264,6 +264,16 @@ Scene hard_large_coords(const BuiltinParams&, const RasterConfig& cfg, const Cam
   // Only a small corner near (w, h) is visible: region x + y > w + h - 15.7.
   const double s = w + h - 15.7;
   add_all_orders(out, make_tri(s - L + 3.1, L - 3.1, L - 2.2, s - L + 2.2, L, L));
+  // Diagonal edges from one end of the range to the other across the viewport: |dx| + |dy| near
+  // its largest, each placed so that it enters 8- and 16-pixel tiles near a corner, where a tile
+  // it crosses holds pixels up to 14 (30) pixel sums inside it: there a tile unit's
+  // tile-relative stamp values span their widest (docs/unit.md). Beyond x + y = d1 (pixel centre
+  // sums 16k + 2 and up), and beyond y - x = d2 (differences 16k - 7 and up).
+  const double d1 = 16.0 * std::floor((w + h) / 32.0) + 1.3;
+  const double d2 = 16.0 * std::floor((h - w) / 32.0) - 7.7;
+  add_all_orders(out, make_tri(L, d1 - L, d1 - L, L, L, L));
+  const double x1 = -L + std::max(0.0, -d2), x2 = L - std::max(0.0, d2);
+  add_all_orders(out, make_tri(x1, x1 + d2, x2, x2 + d2, -L, L));
   // Thin bands across the viewport with far-away vertices.
   add_all_orders(out, make_tri(-L, 100.25, L, 130.75, -L, 101.5));
   add_all_orders(out, make_tri(200.5, -L, 231.25, L, 203.75, -L));

@@ -1,12 +1,15 @@
 // The half-space unit's stamp tester (docs/unit.md "The half-space unit", stage 3): in one cycle
 // the three edge functions at the StampSize x StampSize pixel centres from box pixel (i0, j0):
 // E = e + di*a + dj*b with a = A*u, b = B*u (constant multiples: adders); a pixel is covered when
-// every E >= 0 and it lies in the box. Per stamp row: any pixel, first and last covered column.
+// every E >= 0 (or its edge holds the whole stamp inside: inside_i) and it lies in the box. Per
+// stamp row: any pixel, first and last covered column. With tiles its values are tile-relative,
+// the low EdgeBits of E (the walker's OffBits: exact for an edge that crosses the tile).
 module trirast_halfspace_stamp_tester #(
   parameter int StampSize = 2,
-  parameter int EdgeBits = trirast_pkg::EdgeBits  // the walker's edge values (HalfspaceEdgeBits)
+  parameter int EdgeBits = trirast_pkg::EdgeBits  // its values' bits (the walker's StampBits)
 ) (
   input  logic [3*EdgeBits-1:0]                  e_i,       // E of edge k at the stamp origin
+  input  logic [2:0]                             inside_i,  // edge k holds the stamp inside
   input  logic [3*EdgeBits-1:0]                  a_i,       // a = A*u of edge k
   input  logic [3*EdgeBits-1:0]                  b_i,       // b = B*u of edge k
   input  logic [trirast_pkg::BoxBits:0]          i0_i,      // stamp origin, box-relative
@@ -39,7 +42,7 @@ module trirast_halfspace_stamp_tester #(
           logic [EdgeBits-1:0] v;
           v = e_i[k*EdgeBits +: EdgeBits] + EdgeBits'(di) * a_i[k*EdgeBits +: EdgeBits] +
               EdgeBits'(dj) * b_i[k*EdgeBits +: EdgeBits];
-          in = in && !v[EdgeBits-1];
+          in = in && (inside_i[k] || !v[EdgeBits-1]);
         end
         if (in) begin
           // Scanning right to left: the last hit is the first column.

@@ -77,7 +77,6 @@ module trirast_halfspace_tile_walker #(
   logic [3*EdgeBits-1:0] a_q, a_d, b_q, b_d;        // A, B: the steps a = A*u, b = B*u, >> F
   logic [3*EdgeBits-1:0] eu_q, eu_d;                // E at the current unit (i0, j0)
   logic [3*EdgeBits-1:0] ebl_q, ebl_d, ebr_q, ebr_d;  // E at the band's first / last unit
-  logic [3*EdgeBits-1:0] es_q, es_d, esr_q, esr_d;  // E at the stamp / its stamp row's start
   logic [PB-1:0] i0_q, i0_d, j0_q, j0_d, si_q, si_d, sj_q, sj_d, iend_q, iend_d;
   logic back_q, back_d, seen_q, seen_d, spans_q, spans_d;
   // The unit test's corner offsets, set at the load: E is linear, so of a unit's four corners
@@ -87,6 +86,17 @@ module trirast_halfspace_tile_walker #(
   // EdgeBits: no wrap). One carry chain from eu_q per test instead of the chained corner sums.
   localparam int OffBits = CoefBits + $clog2(U) + 1;  // |omax|, |omin| <= 2*(U - 1)*2^(CoefBits-1)
   logic [3*OffBits-1:0] omax_q, omax_d, omin_q, omin_d;
+  // A partial tile's stamp values are tile-relative and narrow. Of an edge that crosses the tile
+  // (neither all its corners outside nor all inside), every value in the tile lies between its
+  // smallest and largest corner, c00 + omin < 0 <= c00 + omax, whose spread omax - omin =
+  // (U - 1)*(|A| + |B|) < 2^(OffBits-1): so every one of them fits OffBits signed bits, and the
+  // stamps keep and sum the low OffBits bits of E (exact modulo 2^OffBits, so exact). An edge that
+  // holds the whole tile inside has large values but a known sign: its flag in st_inside_q masks
+  // it in the stamp tester. Without tiles the stamp is the unit and its values are eu_q's.
+  localparam int StampBits = Tiles ? OffBits : EdgeBits;
+  logic [3*StampBits-1:0] es_q, es_d, esr_q, esr_d;  // E at the stamp / its stamp row's start
+  logic [3*StampBits-1:0] a_st, b_st, eu_st;          // a, b and E at the unit, narrowed
+  logic [2:0] st_inside_q, st_inside_d;               // the edge holds the tile inside
 
   // ---- unit test (WUnit): the four corners of the U x U unit ----
   // Rejected: all four corners outside one edge (its largest corner value < 0); accepted (tiles
@@ -131,10 +141,18 @@ module trirast_halfspace_tile_walker #(
   logic [S*PB-1:0] st_first, st_last;
   logic stamp_mode;
   assign stamp_mode = state_q == WStamp;
-  trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (EdgeBits)) u_stamp (
-    .e_i         (Tiles ? es_q : eu_q),
-    .a_i         (a_q),
-    .b_i         (b_q),
+  always_comb begin
+    for (int k = 0; k < 3; k++) begin
+      a_st[k*StampBits +: StampBits] = a_q[k*EdgeBits +: StampBits];
+      b_st[k*StampBits +: StampBits] = b_q[k*EdgeBits +: StampBits];
+      eu_st[k*StampBits +: StampBits] = eu_q[k*EdgeBits +: StampBits];
+    end
+  end
+  trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (StampBits)) u_stamp (
+    .e_i         (Tiles ? es_q : eu_st),
+    .inside_i    (Tiles ? st_inside_q : 3'b000),
+    .a_i         (a_st),
+    .b_i         (b_st),
     .i0_i        (Tiles ? si_q : i0_q),
     .j0_i        (Tiles ? sj_q : j0_q),
     .xmax_i      (xmax_q),
@@ -197,7 +215,8 @@ module trirast_halfspace_tile_walker #(
   // among them through the registers' enables and one 2:1 mux per bit (a next band's start or the
   // rest), so that the unit test's carry chain is followed by the control alone.
   localparam int L = $clog2(U);
-  logic [3*EdgeBits-1:0] esr_next, es_next, ebl_next, ebr_next, eu_next, eu_band;
+  logic [3*EdgeBits-1:0] ebl_next, ebr_next, eu_next, eu_band;
+  logic [3*StampBits-1:0] esr_next, es_next;
   logic next_back;  // the next band runs right to left
   assign next_back = WalkZigzag && !back_q;
   always_comb begin
@@ -208,8 +227,10 @@ module trirast_halfspace_tile_walker #(
       /* verilator lint_on UNUSEDSIGNAL */
       ak = a_q[k*EdgeBits +: EdgeBits];
       bk = b_q[k*EdgeBits +: EdgeBits];
-      esr_next[k*EdgeBits +: EdgeBits] = esr_q[k*EdgeBits +: EdgeBits] + (bk << $clog2(S));
-      es_next[k*EdgeBits +: EdgeBits] = es_q[k*EdgeBits +: EdgeBits] + (ak << $clog2(S));
+      esr_next[k*StampBits +: StampBits] = esr_q[k*StampBits +: StampBits] +
+                                          (b_st[k*StampBits +: StampBits] << $clog2(S));
+      es_next[k*StampBits +: StampBits] = es_q[k*StampBits +: StampBits] +
+                                         (a_st[k*StampBits +: StampBits] << $clog2(S));
       bl = ebl_q[k*EdgeBits +: EdgeBits] + (bk << L);
       br = ebr_q[k*EdgeBits +: EdgeBits] + (bk << L);
       ebl_next[k*EdgeBits +: EdgeBits] = bl;
@@ -323,8 +344,9 @@ module trirast_halfspace_tile_walker #(
     // A partial tile's stamps: from the unit's corner, along the stamp row, then the next row.
     si_d = stamp_col ? si_q + PB'(S) : i0_q;
     sj_d = stamp_mode ? sj_q + PB'(S) : j0_q;
-    es_d = stamp_mode ? (stamp_last_col ? esr_next : es_next) : eu_q;
-    esr_d = stamp_mode ? esr_next : eu_q;
+    es_d = stamp_mode ? (stamp_last_col ? esr_next : es_next) : eu_st;
+    esr_d = stamp_mode ? esr_next : eu_st;
+    st_inside_d = stamp_mode ? st_inside_q : all_in;
   end
 
   // The triangle's last cycle: its last band handed over with no span, or its last span pushed.
@@ -348,13 +370,13 @@ module trirast_halfspace_tile_walker #(
     if (band_en) begin
       {ebl_q, ebr_q, j0_q, back_q, band_last_q} <= {ebl_d, ebr_d, j0_d, back_d, band_last_d};
     end
-    if (es_en) {si_q, es_q} <= {si_d, es_d};
+    if (es_en) {si_q, es_q, st_inside_q} <= {si_d, es_d, st_inside_d};
     if (esr_en) {sj_q, esr_q} <= {sj_d, esr_d};
     {seen_q, spans_q} <= {seen_d, spans_d};
   end
 
   `ASSERT_INIT(HalfspaceEdgeBitsLegal_A, EdgeBits >= InBits - F && EdgeBits > CoefBits &&
-               EdgeBits > OffBits)
+               EdgeBits > OffBits && StampBits <= EdgeBits)
   // Box-relative positions are PB = BoxBits + 1 bits: a unit past the box must not wrap.
   `ASSERT_INIT(HalfspaceBoxHoldsUnit_A, (1 << BoxBits) >= U)
   `ASSERT_INIT(HalfspaceParamsLegal_A, (StampSize == 1 || StampSize == 2 || StampSize == 4) &&
