@@ -5,6 +5,7 @@
 // units than the row walk, and accepted tiles appear.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -118,6 +119,42 @@ TEST(HalfspaceDatapath, WalkerWorkIsPlausible) {
     EXPECT_GT(r.work["hs_units_rejected"], 0u);
   }
   EXPECT_LT(units[1], units[0]);
+}
+
+// A partial tile's stamp values of the edges that cross the tile fit UnitWidths::hs_stamp_value
+// bits, and hard-large-coords needs every one of them at 8- and 16-pixel tiles: the width is not
+// loose, and one bit fewer (a planted RTL or datapath bug) fails on that scene.
+TEST(HalfspaceDatapath, HardLargeCoordsReachTheTileRelativeStampWidth) {
+  for (int tile : {8, 16}) {
+    RasterConfig cfg;
+    cfg.halfspace.tile = tile;
+    const UnitWidths w = unit_widths(cfg);
+    const Scene sc = make_builtin("hard-large-coords", cfg, CameraOptions{});
+    const SetupResult setup = setup_scene(sc.tris, cfg);
+    const HalfspaceSetupStage stage(cfg);
+    const HalfspaceTileWalker walker(cfg);
+    int64_t most = 0;  // the largest |value| of a crossing edge at a pixel of a partial tile
+    for (const TriangleSetup& t : setup.tris) {
+      const HalfspaceSetupOut s = stage.run(t);
+      if (s.empty) continue;
+      for (int64_t j0 = 0; j0 <= s.Ymax; j0 += tile)
+        for (int64_t i0 = 0; i0 <= s.Xmax; i0 += tile) {
+          const HalfspaceUnitTest u = walker.classify(s, i0, j0);
+          if (u.cls != HalfspaceClass::Partial) continue;
+          for (int k = 0; k < 3; ++k) {
+            if (u.edges_inside >> k & 1u) continue;
+            const HalfspaceEdge& e = s.edge[k];
+            for (int64_t j = j0; j < j0 + tile; ++j)
+              for (int64_t i = i0; i < i0 + tile; ++i) {
+                const int64_t v = e.E0 + i * e.a + j * e.b;
+                EXPECT_TRUE(fits_signed(v, w.hs_stamp_value)) << "tile " << tile << ": " << v;
+                most = std::max(most, v < 0 ? -v : v);
+              }
+          }
+        }
+    }
+    EXPECT_FALSE(fits_signed(most, w.hs_stamp_value - 1)) << "tile " << tile << ": " << most;
+  }
 }
 
 TEST(HalfspaceDatapath, RejectsBadParameters) {

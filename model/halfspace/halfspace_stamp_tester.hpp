@@ -22,10 +22,10 @@ struct HalfspaceStampOut {
 class HalfspaceStampTester {
  public:
   explicit HalfspaceStampTester(const RasterConfig& cfg);
-  // edges_inside (tiles only; bit k: edge k holds the whole tile inside) masks those edges: a
-  // tile's stamp values are tile-relative, UnitWidths::hs_stamp_value bits, which only the edges
-  // that cross the tile fit.
-  HalfspaceStampOut test(const HalfspaceSetupOut& s, int64_t i0, int64_t j0, unsigned edges_inside = 0) const;
+  // edges_inside (bit k: edge k holds the whole tile inside; 0 without tiles) masks those edges:
+  // a tile's stamp values are tile-relative, UnitWidths::hs_stamp_value bits, which only the
+  // edges that cross the tile fit.
+  HalfspaceStampOut test(const HalfspaceSetupOut& s, int64_t i0, int64_t j0, unsigned edges_inside) const;
 
  private:
   int S_;

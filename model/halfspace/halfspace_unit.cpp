@@ -54,7 +54,7 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
       }
       if (p_.tile == 0) {  // the unit is a stamp: its test is the stamp test
         ++w.partial;
-        const HalfspaceStampOut st = tester_.test(s, i0, j0);
+        const HalfspaceStampOut st = tester_.test(s, i0, j0, 0u);  // nothing masked
         for (int dj = 0; dj < S; ++dj)
           if (st.row[dj].any) emitter_.merge(j0 + dj, st.row[dj].first, st.row[dj].last);
         return;
