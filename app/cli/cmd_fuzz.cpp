@@ -467,9 +467,12 @@ int cmd_fuzz(int argc, char** argv) {
               total, (unsigned long long)scenes, (unsigned long long)triangles,
               (unsigned long long)pixels, total > 0 ? double(scenes) / total : 0.0,
               total > 0 ? double(triangles) / total : 0.0);
-  if (time_limited)
-    std::printf("  deadline   %ld s, ended %.1f s after it (%s)\n", seconds, total - double(seconds),
+  if (time_limited) {
+    const double late = total - double(seconds);  // < 0: stopped early, the next scene would not fit
+    std::printf("  deadline   %ld s, ended %.1f s %s it (%s)\n", seconds, late < 0 ? -late : late,
+                late < 0 ? "before" : "after",
                 deadline_stop ? "the next scene's estimate did not fit" : "no scene after it");
+  }
   print_engine_table(rows, tally, scenes);
   for (size_t i = 0; i < engines.size(); ++i)
     if (skips[i])
