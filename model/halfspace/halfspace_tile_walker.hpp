@@ -29,18 +29,19 @@ class HalfspaceTileWalker {
   // (a stamp's pixels are tested one by one).
   HalfspaceUnitTest classify(const HalfspaceSetupOut& s, int64_t i0, int64_t j0) const;
 
+  // Band `band` runs right to left (zig-zag's odd bands).
+  bool backward(int64_t band) const { return p_.walk == HalfspaceWalk::Zigzag && (band & 1); }
   // Walks band `band` of s: calls visit(i0, j0, test) for each unit tested, in order; returns
   // the number of units tested.
   template <class Visit>
   int64_t walk_band(const HalfspaceSetupOut& s, int64_t band, Visit&& visit) const {
     const int64_t U = p_.unit();
     const int64_t j0 = band * U;
-    const bool backward = p_.walk == HalfspaceWalk::Zigzag && (band & 1);
     const bool early_end = p_.walk == HalfspaceWalk::Zigzag;
     bool seen = false;
     int64_t tested = 0;
     for (int64_t n = 0; n < s.units; ++n) {
-      const int64_t col = backward ? s.units - 1 - n : n;
+      const int64_t col = backward(band) ? s.units - 1 - n : n;
       const HalfspaceUnitTest t = classify(s, col * U, j0);
       ++tested;
       visit(col * U, j0, t);

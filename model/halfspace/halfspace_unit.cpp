@@ -38,7 +38,7 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
   const int64_t S = p_.stamp;
   HalfspaceWork& w = res.work;
   for (int64_t k = 0; k < s.bands; ++k) {
-    emitter_.begin_band(k * U);
+    emitter_.begin_band(k * U, walker_.backward(k));
     HalfspaceBand band;
     auto stamp = [&](int64_t i0, int64_t j0, unsigned edges_inside) {
       const HalfspaceStampOut st = tester_.test(s, i0, j0, edges_inside);
@@ -48,6 +48,7 @@ void HalfspaceUnit::walk(HalfspaceTriangleResult& res, SpanList& out) {
         if (st.row[dj].any) emitter_.merge(j0 + dj, st.row[dj].first, st.row[dj].last);
     };
     const int64_t tested = walker_.walk_band(s, k, [&](int64_t i0, int64_t j0, const HalfspaceUnitTest& t) {
+      emitter_.begin_unit();
       if (t.cls == HalfspaceClass::Reject) {
         ++w.rejected;
         return;

@@ -5,6 +5,14 @@
 // first, when the FIFO has room at the start of the cycle: count + pending < DEPTH, with pending
 // the span in the push register in front of the span FIFO (trirast_halfspace_top: a span pushed
 // in t is counted from the end of t + 1).
+// The run is the hull of the row's pieces, widened without a compare: the walk's order says which
+// piece is further out. A band's units come left to right (band_back_i low) or right to left, and
+// a unit's pieces of one row left to right (its stamps). Left to right, every piece is right of
+// the row's earlier ones: first is the first piece's, last the newest. Right to left, a piece of a
+// new unit is left of every earlier one (first is its first), a later piece of the same unit right
+// of that unit's earlier ones; last is the newest piece of the row's first unit. Two flags per row
+// say which: a piece came from the current unit (in_unit_q), all its pieces did (first_unit_q);
+// unit_next_i (the walker leaves its unit at the end of the cycle) clears them.
 `include "trirast_assert.svh"
 
 module trirast_halfspace_span_emitter #(
@@ -28,6 +36,8 @@ module trirast_halfspace_span_emitter #(
   // ---- band hand-over (a valid/ready pair: band_load_i only when free_o) ----
   input  logic                                  band_load_i,
   input  logic [trirast_pkg::BoxBits:0]         band_j0_i,
+  input  logic                                  band_back_i,  // the band runs right to left
+  input  logic                                  unit_next_i,  // the walker's next unit follows
   output logic                                  any_o,    // the band has a row with a run
   output logic                                  free_o,   // nothing left to push after this cycle
   // ---- FIFO pushes ----
@@ -39,34 +49,37 @@ module trirast_halfspace_span_emitter #(
   localparam int PixBits = trirast_pkg::PixBits;
   localparam int RowBits = (UnitSize > 1) ? $clog2(UnitSize) : 1;
 
+  localparam int BoxBits = trirast_pkg::BoxBits;  // a column in the box: < Xmax < 2^BoxBits
+
   logic [UnitSize-1:0] acc_q, acc_d, pend_q, pend_d, merged;
-  logic [UnitSize*PB-1:0] accf_q, accf_d, accl_q, accl_d, outf_q, outf_d, outl_q, outl_d;
-  logic [UnitSize*PB-1:0] mf, ml;
+  logic [UnitSize-1:0] in_unit_q, in_unit_d, first_unit_q, first_unit_d;
+  logic [UnitSize*BoxBits-1:0] accf_q, accf_d, accl_q, accl_d, outf_q, outf_d, outl_q, outl_d;
+  logic [UnitSize*BoxBits-1:0] mf, ml;
   logic [PB-1:0] outj0_q, outj0_d;
+`ifndef SYNTHESIS
+`ifndef FORMAL
+  localparam logic [UnitSize*PB-1:0] ColumnTopBits = {UnitSize{1'b1, {BoxBits{1'b0}}}};
+  logic [UnitSize*BoxBits-1:0] hull_f, hull_l;
+`endif  // FORMAL
+`endif  // SYNTHESIS
   logic room;
   logic [RowBits-1:0] row;
   logic [UnitSize-1:0] pend_next;
 
-  // The collect buffer merged with this cycle's pieces. Every combinational block writes each
-  // module-level variable once, from block-local temporaries (Icarus 11: see
-  // trirast_halfspace_stamp_tester.sv).
-  always_comb begin
-    logic [UnitSize*PB-1:0] f, l;
-    f = accf_q;
-    l = accl_q;
-    for (int r = 0; r < UnitSize; r++) begin
-      if (merge_i[r]) begin
-        if (!acc_q[r] || merge_first_i[r*PB +: PB] < accf_q[r*PB +: PB])
-          f[r*PB +: PB] = merge_first_i[r*PB +: PB];
-        if (!acc_q[r] || merge_last_i[r*PB +: PB] > accl_q[r*PB +: PB])
-          l[r*PB +: PB] = merge_last_i[r*PB +: PB];
-      end
-    end
-    merged = acc_q | merge_i;
-    mf = f;
-    ml = l;
+  // The collect buffer merged with this cycle's pieces (the header says which piece sets what).
+  logic [UnitSize-1:0] upd_f, upd_l;  // the piece sets the row's first (last) column
+  assign upd_f = merge_i & (~acc_q | ({UnitSize{band_back_i}} & ~in_unit_q));
+  assign upd_l = merge_i & (~acc_q | {UnitSize{!band_back_i}} | first_unit_q);
+  assign merged = acc_q | merge_i;
+  for (genvar r = 0; r < UnitSize; r++) begin : g_row
+    assign mf[r*BoxBits +: BoxBits] = upd_f[r] ? merge_first_i[r*PB +: BoxBits]
+                                               : accf_q[r*BoxBits +: BoxBits];
+    assign ml[r*BoxBits +: BoxBits] = upd_l[r] ? merge_last_i[r*PB +: BoxBits]
+                                               : accl_q[r*BoxBits +: BoxBits];
   end
   assign any_o = |merged;
+  assign in_unit_d = (unit_next_i || band_load_i) ? '0 : in_unit_q | merge_i;
+  assign first_unit_d = (unit_next_i || band_load_i) ? '0 : first_unit_q | (merge_i & ~acc_q);
 
   // The emit buffer: the lowest pending row goes when the FIFO has room.
   assign room = (CountBits + 1)'(fifo_count_i) + (CountBits + 1)'(fifo_pending_i) <
@@ -90,9 +103,22 @@ module trirast_halfspace_span_emitter #(
   always_comb begin
     logic [PixBits-1:0] y, xb;
     logic [PixBits:0] xe;
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [BoxBits-1:0] first, last;  // a column; its bits above PixBits (small builds) are zero
+    /* verilator lint_on UNUSEDSIGNAL */
+    // The row's run by a mux of its UnitSize rows: Yosys 0.23 maps the indexed part-select
+    // outf_q[row*BoxBits +: BoxBits] to a shifter, 590 more iCE40 LUTs at UnitSize 8.
     y = y0_i + PixBits'(outj0_q) + PixBits'(row);
-    xb = x0_i + PixBits'(outf_q[row*PB +: PB]);
-    xe = {1'b0, x0_i} + (PixBits+1)'(outl_q[row*PB +: PB]) + 1'b1;
+    first = '0;
+    last = '0;
+    for (int r = 0; r < UnitSize; r++) begin
+      if (row == RowBits'(r)) begin
+        first = outf_q[r*BoxBits +: BoxBits];
+        last = outl_q[r*BoxBits +: BoxBits];
+      end
+    end
+    xb = x0_i + PixBits'(first);
+    xe = {1'b0, x0_i} + (PixBits+1)'(last) + 1'b1;
     push_data_o = {tag_i, y, xb, xe};
   end
 
@@ -106,11 +132,9 @@ module trirast_halfspace_span_emitter #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      acc_q <= '0;
-      pend_q <= '0;
+      {acc_q, pend_q, in_unit_q, first_unit_q} <= '0;
     end else begin
-      acc_q <= acc_d;
-      pend_q <= pend_d;
+      {acc_q, pend_q, in_unit_q, first_unit_q} <= {acc_d, pend_d, in_unit_d, first_unit_d};
     end
   end
   always_ff @(posedge clk_i) begin
@@ -119,6 +143,28 @@ module trirast_halfspace_span_emitter #(
 
   // A band is handed over only when the previous one is out.
   `ASSERT_IMPLIES(HalfspaceBandLoadWhenFree_A, band_load_i, free_o, clk_i, !rst_ni)
+`ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys), whose
+`ifndef FORMAL     // proof of the ports cuts the stamp tester's outputs free
+  // Pieces lie in the box: a column's top bit (PB = BoxBits + 1) is clear.
+  `ASSERT(HalfspacePieceInBox_A, ((merge_first_i | merge_last_i) & ColumnTopBits) == '0, clk_i,
+          !rst_ni)
+  // The walk's order makes the widened run the hull of the row's pieces: the compares it saves.
+  always_comb begin
+    logic [UnitSize*BoxBits-1:0] hf, hl;
+    hf = accf_q;
+    hl = accl_q;
+    for (int r = 0; r < UnitSize; r++) begin
+      if (merge_i[r] && (!acc_q[r] || merge_first_i[r*PB +: BoxBits] < accf_q[r*BoxBits +: BoxBits]))
+        hf[r*BoxBits +: BoxBits] = merge_first_i[r*PB +: BoxBits];
+      if (merge_i[r] && (!acc_q[r] || merge_last_i[r*PB +: BoxBits] > accl_q[r*BoxBits +: BoxBits]))
+        hl[r*BoxBits +: BoxBits] = merge_last_i[r*PB +: BoxBits];
+    end
+    hull_f = hf;
+    hull_l = hl;
+  end
+  `ASSERT(HalfspaceRunIsHull_A, mf == hull_f && ml == hull_l, clk_i, !rst_ni)
+`endif  // FORMAL
+`endif  // SYNTHESIS
   `ASSERT_KNOWN(HalfspaceEmitterKnown_A, {push_o, free_o, any_o, stall_o}, clk_i, !rst_ni)
   `ASSERT_KNOWN_IF(HalfspacePushDataKnown_A, push_o, push_data_o, clk_i, !rst_ni)
 endmodule

@@ -41,6 +41,8 @@ module trirast_halfspace_tile_walker #(
   output logic [UnitSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_o,
   output logic                                  band_load_o,
   output logic [trirast_pkg::BoxBits:0]         band_j0_o,
+  output logic                                  band_back_o,  // the band runs right to left
+  output logic                                  unit_next_o,  // the next unit follows this cycle
   input  logic                                  emit_any_i,   // the band (with this cycle) has a run
   input  logic                                  emit_free_i,  // the emitter can take a band
   // ---- observation ----
@@ -351,6 +353,8 @@ module trirast_halfspace_tile_walker #(
 
   // The triangle's last cycle: its last band handed over with no span, or its last span pushed.
   assign band_load_o = band_go;
+  assign band_back_o = back_q;
+  assign unit_next_o = eu_en;
   assign last_o = (band_go && band_last && !emit_any_i) || (state_q == WDrain && emit_free_i);
   assign retire_o = band_go && band_last && !emit_any_i && !spans_q;
 

@@ -65,7 +65,7 @@ module trirast_halfspace_top #(
   logic [PixBits-1:0] x0, y0;
   logic [UnitSize-1:0] merge;
   logic [UnitSize*PB-1:0] merge_first, merge_last;
-  logic band_load, emit_any, emit_free;
+  logic band_load, band_back, unit_next, emit_any, emit_free;
   logic [PB-1:0] band_j0;
 
   trirast_halfspace_tile_walker #(
@@ -90,6 +90,8 @@ module trirast_halfspace_top #(
     .merge_last_o  (merge_last),
     .band_load_o   (band_load),
     .band_j0_o     (band_j0),
+    .band_back_o   (band_back),
+    .unit_next_o   (unit_next),
     .emit_any_i    (emit_any),
     .emit_free_i   (emit_free),
     .busy_o        (walker_busy),
@@ -122,6 +124,8 @@ module trirast_halfspace_top #(
     .merge_last_i  (merge_last),
     .band_load_i   (band_load),
     .band_j0_i     (band_j0),
+    .band_back_i   (band_back),
+    .unit_next_i   (unit_next),
     .any_o         (emit_any),
     .free_o        (emit_free),
     .push_o        (push),
