@@ -49,7 +49,7 @@ module trirast_halfspace_span_emitter #(
   localparam int PixBits = trirast_pkg::PixBits;
   localparam int RowBits = (UnitSize > 1) ? $clog2(UnitSize) : 1;
 
-  localparam int BoxBits = trirast_pkg::BoxBits;  // a column in the box: < Xmax < 2^BoxBits
+  localparam int BoxBits = trirast_pkg::BoxBits;  // a column in the box: <= Xmax < 2^BoxBits
 
   logic [UnitSize-1:0] acc_q, acc_d, pend_q, pend_d, merged;
   logic [UnitSize-1:0] in_unit_q, in_unit_d, first_unit_q, first_unit_d;
