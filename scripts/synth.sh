@@ -201,7 +201,14 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
 
 gen_wrapper() {  # gen_wrapper NAME TOP UNIT CONFIG [--tie PORT=VALUE ...] [--param NAME=VALUE ...]: $WORK/CONFIG/NAME.sv
   local name="$1" top="$2" unit="$3" cfg="$4"; shift 4
-  yosys -q -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg"); hierarchy -top $top; proc;
+  # The ports are read with the instance's parameters (the tile walker's pieces are StampSize wide).
+  local chparams="" prev="" a
+  for a in "$@"; do
+    [ "$prev" = --param ] && chparams+=" -set ${a%%=*} ${a#*=}"
+    prev="$a"
+  done
+  yosys -q -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg");
+    ${chparams:+chparam$chparams $top;} hierarchy -top $top; proc;
     write_json $WORK/$cfg/$name.ports.json" >/dev/null 2>&1
   python3 "$ROOT/scripts/synth_wrap.py" --json "$WORK/$cfg/$name.ports.json" \
     --top "$top" --name "$name" --out "$WORK/$cfg/$name.sv" "$@"

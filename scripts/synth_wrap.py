@@ -12,8 +12,9 @@ bits of the input register, the first output port the highest bits of the output
       [--tie PORT=VALUE ...] [--param NAME=VALUE ...]
 
 VALUE is a number or a constant expression (e.g. trirast_pkg::DefaultEndpoints), cast to the
-port's width. --param overrides a parameter of TOP in the instance (e.g. StampSize=4); the port
-list must not depend on it (it is read from TOP at its defaults).
+port's width. --param overrides a parameter of TOP in the instance (e.g. StampSize=4); the JSON's
+port list must be read with the same overrides where it depends on them (scripts/synth.sh passes
+them to `hierarchy -chparam`).
 """
 import argparse
 import json

@@ -38,10 +38,11 @@ class HalfspaceTileWalker {
     const int64_t U = p_.unit();
     const int64_t j0 = band * U;
     const bool early_end = p_.walk == HalfspaceWalk::Zigzag;
+    const bool back = backward(band);
     bool seen = false;
     int64_t tested = 0;
     for (int64_t n = 0; n < s.units; ++n) {
-      const int64_t col = backward(band) ? s.units - 1 - n : n;
+      const int64_t col = back ? s.units - 1 - n : n;
       const HalfspaceUnitTest t = classify(s, col * U, j0);
       ++tested;
       visit(col * U, j0, t);

@@ -17,6 +17,7 @@
 
 module trirast_halfspace_span_emitter #(
   parameter int UnitSize = 8,
+  parameter int StampSize = 2,  // S: the walker's pieces per cycle; row r takes piece r mod S
   parameter int CountBits = 4,
   parameter int EntryBits = trirast_pkg::TagBits + 3 * trirast_pkg::PixBits + 1
 ) (
@@ -29,10 +30,10 @@ module trirast_halfspace_span_emitter #(
   input  logic [trirast_pkg::TagBits-1:0]       tag_i,
   input  logic [trirast_pkg::PixBits-1:0]       x0_i,
   input  logic [trirast_pkg::PixBits-1:0]       y0_i,
-  // ---- the walker's pieces of the current band, row r of the band ----
+  // ---- the walker's pieces of the current band: row r has one (merge_i[r]), piece r mod S ----
   input  logic [UnitSize-1:0]                   merge_i,
-  input  logic [UnitSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_i,
-  input  logic [UnitSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_i,
+  input  logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_i,
+  input  logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_i,
   // ---- band hand-over (a valid/ready pair: band_load_i only when free_o) ----
   input  logic                                  band_load_i,
   input  logic [trirast_pkg::BoxBits:0]         band_j0_i,
@@ -71,10 +72,14 @@ module trirast_halfspace_span_emitter #(
   assign upd_f = merge_i & (~acc_q | ({UnitSize{band_back_i}} & ~in_unit_q));
   assign upd_l = merge_i & (~acc_q | {UnitSize{!band_back_i}} | first_unit_q);
   assign merged = acc_q | merge_i;
+  // Row r's piece, piece r mod S (its column's top bit, PB = BoxBits + 1, is clear: in the box).
+  logic [UnitSize*PB-1:0] piece_f, piece_l;
   for (genvar r = 0; r < UnitSize; r++) begin : g_row
-    assign mf[r*BoxBits +: BoxBits] = upd_f[r] ? merge_first_i[r*PB +: BoxBits]
+    assign piece_f[r*PB +: PB] = merge_first_i[(r % StampSize)*PB +: PB];
+    assign piece_l[r*PB +: PB] = merge_last_i[(r % StampSize)*PB +: PB];
+    assign mf[r*BoxBits +: BoxBits] = upd_f[r] ? piece_f[r*PB +: BoxBits]
                                                : accf_q[r*BoxBits +: BoxBits];
-    assign ml[r*BoxBits +: BoxBits] = upd_l[r] ? merge_last_i[r*PB +: BoxBits]
+    assign ml[r*BoxBits +: BoxBits] = upd_l[r] ? piece_l[r*PB +: BoxBits]
                                                : accl_q[r*BoxBits +: BoxBits];
   end
   assign any_o = |merged;
@@ -145,8 +150,12 @@ module trirast_halfspace_span_emitter #(
   `ASSERT_IMPLIES(HalfspaceBandLoadWhenFree_A, band_load_i, free_o, clk_i, !rst_ni)
 `ifndef SYNTHESIS  // simulation only: neither synthesis nor the formal flow (Yosys), whose
 `ifndef FORMAL     // proof of the ports cuts the stamp tester's outputs free
-  // Pieces lie in the box: a column's top bit (PB = BoxBits + 1) is clear.
-  `ASSERT(HalfspacePieceInBox_A, ((merge_first_i | merge_last_i) & ColumnTopBits) == '0, clk_i,
+  // Merged pieces lie in the box: a column's top bit (PB = BoxBits + 1) is clear.
+  logic [UnitSize*PB-1:0] merge_cols;
+  for (genvar r = 0; r < UnitSize; r++) begin : g_merge_cols
+    assign merge_cols[r*PB +: PB] = {PB{merge_i[r]}};
+  end
+  `ASSERT(HalfspacePieceInBox_A, ((piece_f | piece_l) & merge_cols & ColumnTopBits) == '0, clk_i,
           !rst_ni)
   // The walk's order makes the widened run the hull of the row's pieces: the compares it saves.
   always_comb begin
@@ -154,10 +163,10 @@ module trirast_halfspace_span_emitter #(
     hf = accf_q;
     hl = accl_q;
     for (int r = 0; r < UnitSize; r++) begin
-      if (merge_i[r] && (!acc_q[r] || merge_first_i[r*PB +: BoxBits] < accf_q[r*BoxBits +: BoxBits]))
-        hf[r*BoxBits +: BoxBits] = merge_first_i[r*PB +: BoxBits];
-      if (merge_i[r] && (!acc_q[r] || merge_last_i[r*PB +: BoxBits] > accl_q[r*BoxBits +: BoxBits]))
-        hl[r*BoxBits +: BoxBits] = merge_last_i[r*PB +: BoxBits];
+      if (merge_i[r] && (!acc_q[r] || piece_f[r*PB +: BoxBits] < accf_q[r*BoxBits +: BoxBits]))
+        hf[r*BoxBits +: BoxBits] = piece_f[r*PB +: BoxBits];
+      if (merge_i[r] && (!acc_q[r] || piece_l[r*PB +: BoxBits] > accl_q[r*BoxBits +: BoxBits]))
+        hl[r*BoxBits +: BoxBits] = piece_l[r*PB +: BoxBits];
     end
     hull_f = hf;
     hull_l = hl;

@@ -1,7 +1,7 @@
 // The half-space unit's walk stage control: the tile walker (docs/unit.md "The half-space unit",
 // stage 2; docs/timing.md). It walks the box in bands of U rows (U = TileSize, or StampSize
 // without tiles) and each band in U x U units, one unit test per cycle from the edge values at
-// the unit's four corners (kept incrementally: E at the unit, at the band's first and last unit),
+// the unit's four corners (kept incrementally: E at the unit, and at the band's two end units),
 // and a partial tile's stamps one per cycle through the stamp tester. Its pieces of coverage go
 // to the span emitter; at the end of a band it hands the band to the emitter as soon as the
 // emitter is free (WWait until then). States: WIdle, WUnit, WStamp, WWait, WDrain (the last band
@@ -36,9 +36,9 @@ module trirast_halfspace_tile_walker #(
   output logic [trirast_pkg::PixBits-1:0]       x0_o,
   output logic [trirast_pkg::PixBits-1:0]       y0_o,
   // ---- pieces of the current band and the band hand-over ----
-  output logic [UnitSize-1:0]                   merge_o,
-  output logic [UnitSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_o,
-  output logic [UnitSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_o,
+  output logic [UnitSize-1:0]                   merge_o,        // row r of the band has a piece,
+  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_o,  // ... piece r mod S
+  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_o,
   output logic                                  band_load_o,
   output logic [trirast_pkg::BoxBits:0]         band_j0_o,
   output logic                                  band_back_o,  // the band runs right to left
@@ -78,7 +78,9 @@ module trirast_halfspace_tile_walker #(
   logic [BoxBits-1:0] xmax_q, xmax_d, ymax_q, ymax_d;
   logic [3*EdgeBits-1:0] a_q, a_d, b_q, b_d;        // A, B: the steps a = A*u, b = B*u, >> F
   logic [3*EdgeBits-1:0] eu_q, eu_d;                // E at the current unit (i0, j0)
-  logic [3*EdgeBits-1:0] ebl_q, ebl_d, ebr_q, ebr_d;  // E at the band's first / last unit
+  // E at the band row's end units: ebn on the side the next band starts from, ebo on the other
+  // (the same side without zig-zag). A next band starts at ebn + U*b; zig-zag's sides then swap.
+  logic [3*EdgeBits-1:0] ebn_q, ebn_d, ebo_q, ebo_d;
   logic [PB-1:0] i0_q, i0_d, j0_q, j0_d, si_q, si_d, sj_q, sj_d, iend_q, iend_d;
   logic back_q, back_d, seen_q, seen_d, spans_q, spans_d;
   // The unit test's corner offsets, set at the load: E is linear, so of a unit's four corners
@@ -165,35 +167,32 @@ module trirast_halfspace_tile_walker #(
   );
 
   // ---- pieces for the emitter (row r of the band) ----
+  // Row r's piece is piece r mod S: a stamp row starts at an S-aligned row of the unit, so a
+  // stamp's row dj is band row srow + dj with dj = r mod S; an accepted tile gives every row the
+  // same piece [i0, tile_i1]. The pieces are S muxes, and merge_o says which rows take theirs.
   logic [PB-1:0] tile_i1;  // last column of the tile inside the box
   assign tile_i1 = (i0_q + PB'(U - 1) > {1'b0, xmax_q}) ? {1'b0, xmax_q} : i0_q + PB'(U - 1);
   always_comb begin
     logic [PB-1:0] srow;
     logic [U-1:0] m;
-    logic [U*PB-1:0] mf, ml;
     srow = stamp_mode ? sj_q - j0_q : '0;
     m = '0;
-    mf = '0;
-    ml = '0;
     for (int r = 0; r < U; r++) begin
-      if (state_q == WUnit && accept) begin
-        m[r] = j0_q + PB'(r) <= {1'b0, ymax_q};
-        mf[r*PB +: PB] = i0_q;
-        ml[r*PB +: PB] = tile_i1;
-      end
+      if (state_q == WUnit && accept) m[r] = j0_q + PB'(r) <= {1'b0, ymax_q};
       for (int dj = 0; dj < S; dj++) begin
         if ((stamp_mode || (state_q == WUnit && !Tiles)) && srow + PB'(dj) == PB'(r) &&
             st_any[dj]) begin
           m[r] = 1'b1;
-          mf[r*PB +: PB] = st_first[dj*PB +: PB];
-          ml[r*PB +: PB] = st_last[dj*PB +: PB];
         end
       end
     end
-    // One write each (Icarus 11: see trirast_halfspace_stamp_tester.sv).
-    merge_o = m;
-    merge_first_o = mf;
-    merge_last_o = ml;
+    merge_o = m;  // one write (Icarus 11: see trirast_halfspace_stamp_tester.sv)
+  end
+  for (genvar dj = 0; dj < S; dj++) begin : g_piece
+    // With tiles, WUnit's piece is the accepted tile's; else (WStamp, or the unit without tiles)
+    // the stamp row's.
+    assign merge_first_o[dj*PB +: PB] = (Tiles && !stamp_mode) ? i0_q : st_first[dj*PB +: PB];
+    assign merge_last_o[dj*PB +: PB] = (Tiles && !stamp_mode) ? tile_i1 : st_last[dj*PB +: PB];
   end
 
   // ---- the walk ----
@@ -217,13 +216,13 @@ module trirast_halfspace_tile_walker #(
   // among them through the registers' enables and one 2:1 mux per bit (a next band's start or the
   // rest), so that the unit test's carry chain is followed by the control alone.
   localparam int L = $clog2(U);
-  logic [3*EdgeBits-1:0] ebl_next, ebr_next, eu_next, eu_band;
+  logic [3*EdgeBits-1:0] ebn_next, ebo_next, eu_next, eu_band;
   logic [3*StampBits-1:0] esr_next, es_next;
   logic next_back;  // the next band runs right to left
   assign next_back = WalkZigzag && !back_q;
   always_comb begin
     for (int k = 0; k < 3; k++) begin
-      logic [EdgeBits-1:0] ak, bk, bl, br;
+      logic [EdgeBits-1:0] ak, bk, bn, bo;
       /* verilator lint_off UNUSEDSIGNAL */
       logic [EdgeBits:0] nxt;  // its low bit only carries back_q in
       /* verilator lint_on UNUSEDSIGNAL */
@@ -233,11 +232,13 @@ module trirast_halfspace_tile_walker #(
                                           (b_st[k*StampBits +: StampBits] << $clog2(S));
       es_next[k*StampBits +: StampBits] = es_q[k*StampBits +: StampBits] +
                                          (a_st[k*StampBits +: StampBits] << $clog2(S));
-      bl = ebl_q[k*EdgeBits +: EdgeBits] + (bk << L);
-      br = ebr_q[k*EdgeBits +: EdgeBits] + (bk << L);
-      ebl_next[k*EdgeBits +: EdgeBits] = bl;
-      ebr_next[k*EdgeBits +: EdgeBits] = br;
-      eu_band[k*EdgeBits +: EdgeBits] = next_back ? br : bl;
+      // The next band row's ends; zig-zag swaps the sides (the band after next starts on this
+      // band's side), so the next band's start is always bn: no select between the sides.
+      bn = ebn_q[k*EdgeBits +: EdgeBits] + (bk << L);
+      bo = ebo_q[k*EdgeBits +: EdgeBits] + (bk << L);
+      ebn_next[k*EdgeBits +: EdgeBits] = WalkZigzag ? bo : bn;
+      ebo_next[k*EdgeBits +: EdgeBits] = WalkZigzag ? bn : bo;
+      eu_band[k*EdgeBits +: EdgeBits] = bn;
       // The band's next unit, E + U*A or (right to left) E - U*A = E + ~(U*A) + 1: one adder, its
       // carry in back_q as the low bit of both operands.
       nxt = {eu_q[k*EdgeBits +: EdgeBits], 1'b1} + {(ak << L) ^ {EdgeBits{back_q}}, back_q};
@@ -327,10 +328,11 @@ module trirast_halfspace_tile_walker #(
       e0 = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
       eu_d[k*EdgeBits +: EdgeBits] = band_next ? eu_band[k*EdgeBits +: EdgeBits]
                                    : state_q == WIdle ? e0 : eu_next[k*EdgeBits +: EdgeBits];
-      ebl_d[k*EdgeBits +: EdgeBits] = state_q == WIdle ? e0 : ebl_next[k*EdgeBits +: EdgeBits];
-      ebr_d[k*EdgeBits +: EdgeBits] = state_q == WIdle
-          ? EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F]))
-          : ebr_next[k*EdgeBits +: EdgeBits];
+      // The load: band 0 starts at E0 (left); zig-zag's band 1 at E_end (right), row order's at E0.
+      ebn_d[k*EdgeBits +: EdgeBits] = state_q == WIdle
+          ? (WalkZigzag ? EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F])) : e0)
+          : ebn_next[k*EdgeBits +: EdgeBits];
+      ebo_d[k*EdgeBits +: EdgeBits] = state_q == WIdle ? e0 : ebo_next[k*EdgeBits +: EdgeBits];
     end
     i0_step = back_q ? i0_q - PB'(U) : i0_q + PB'(U);
     i0_d = band_next ? (next_back ? iend_q : '0) : state_q == WIdle ? '0 : i0_step;
@@ -372,7 +374,7 @@ module trirast_halfspace_tile_walker #(
     end
     if (eu_en) {eu_q, i0_q, last_unit_q} <= {eu_d, i0_d, last_unit_d};
     if (band_en) begin
-      {ebl_q, ebr_q, j0_q, back_q, band_last_q} <= {ebl_d, ebr_d, j0_d, back_d, band_last_d};
+      {ebn_q, ebo_q, j0_q, back_q, band_last_q} <= {ebn_d, ebo_d, j0_d, back_d, band_last_d};
     end
     if (es_en) {si_q, es_q, st_inside_q} <= {si_d, es_d, st_inside_d};
     if (esr_en) {sj_q, esr_q} <= {sj_d, esr_d};

@@ -64,7 +64,7 @@ module trirast_halfspace_top #(
   logic [TagBits-1:0] tag;
   logic [PixBits-1:0] x0, y0;
   logic [UnitSize-1:0] merge;
-  logic [UnitSize*PB-1:0] merge_first, merge_last;
+  logic [StampSize*PB-1:0] merge_first, merge_last;  // row r's piece: r mod StampSize
   logic band_load, band_back, unit_next, emit_any, emit_free;
   logic [PB-1:0] band_j0;
 
@@ -108,6 +108,7 @@ module trirast_halfspace_top #(
 
   trirast_halfspace_span_emitter #(
     .UnitSize  (UnitSize),
+    .StampSize (StampSize),
     .CountBits (CountBits),
     .EntryBits (EntryBits)
   ) u_emitter (
