@@ -13,8 +13,8 @@ bits of the input register, the first output port the highest bits of the output
 
 VALUE is a number or a constant expression (e.g. trirast_pkg::DefaultEndpoints), cast to the
 port's width. --param overrides a parameter of TOP in the instance (e.g. StampSize=4); the JSON's
-port list must be read with the same overrides where it depends on them (scripts/synth.sh passes
-them to `hierarchy -chparam`).
+port list must be read with the same overrides where it depends on them (scripts/synth.sh sets
+them with `chparam -set` before `hierarchy`; Yosys 0.23's `hierarchy -chparam` fails an assertion).
 """
 import argparse
 import json
