@@ -3,9 +3,9 @@
 # (tb/fuzz/libfuzzer/CMakeLists.txt: the improved unit only, instrumented).
 #
 # trirast_rtl_build_specs(OUT_VAR ENDPOINTS DEPTH): the builds, one entry
-#   unit:top:sources variable:prefix suffix:width configuration:N:DEPTH[:STAMP:TILE:ZIGZAG:FORM]
+#   unit:top:sources variable:prefix suffix:width configuration:N:DEPTH[:STAMP:TILE:WALK:FORM]
 # per Verilated model, smallest first within a unit (the half-space unit's entries add its build
-# parameters StampSize, TileSize, WalkZigzag, CornerForm; its N is unused):
+# parameters StampSize, TileSize, WalkMode (0 row, 1 zigzag, 2 forward), CornerForm; its N is unused):
 #   * every width configuration docs/synth.md names (TRIRAST_RTL_WIDTH_CONFIGS, the same as
 #     scripts/synth.sh CONFIGS) at the hardware maximums the runtime options need (NumEndpoints =
 #     ENDPOINTS, FifoDepth = DEPTH), so no configuration a fuzz run draws is skipped;
@@ -84,14 +84,14 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
     "improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products:default:${endpoints}:${depth}:0")
   list(APPEND _builds
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8f:default:1:${depth}:2:8:2:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s4t16r:default:1:${depth}:4:16:0:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s1t0z:default:1:${depth}:1:0:1:0")
   if(TRIRAST_RTL_EXTRA_WIDTHS)
     list(APPEND _builds
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s1t0z:default:1:${depth}:1:0:1:1"
-    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8z:hslimit:1:${depth}:2:8:1:0"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8f:default:1:${depth}:2:8:2:1"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s1t0f:default:1:${depth}:1:0:2:1"
+    "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s2t8f:hslimit:1:${depth}:2:8:2:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s4t16r:hslimit:1:${depth}:4:16:0:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_s1t0z:hslimit:1:${depth}:1:0:1:0"
     "halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_hslimit_radix16_s2t8z:hslimit:1:${depth}:2:8:1:1")
@@ -101,10 +101,10 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     "speed:trad:trirast_trad_top:TRIRAST_RTL_TRAD_SOURCES:_d8:default:1:8"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_d8:default:1:8:1"
     "speed:improved2:trirast_improved2_top:TRIRAST_RTL_I2_SOURCES:_products_d8:default:1:8:0"
-    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8z:default:1:${depth}:2:8:1:0")
+    "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_s2t8f:default:1:${depth}:2:8:2:0")
   if(TRIRAST_RTL_EXTRA_WIDTHS)
     list(APPEND _builds
-      "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8z:default:1:${depth}:2:8:1:1")
+      "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8f:default:1:${depth}:2:8:2:1")
   endif()
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()
@@ -240,7 +240,7 @@ function(trirast_add_rtl_builds)
     list(GET _f 6 _depth)
     set(_stamp 0)
     set(_tile 0)
-    set(_zigzag false)
+    set(_walk 0)
     set(_form 0)
     if(_unit STREQUAL "improved2")
       list(GET _f 7 _form)
@@ -248,11 +248,8 @@ function(trirast_add_rtl_builds)
     if(_unit STREQUAL "halfspace")
       list(GET _f 7 _stamp)
       list(GET _f 8 _tile)
-      list(GET _f 9 _z)
+      list(GET _f 9 _walk)
       list(GET _f 10 _form)
-      if(_z)
-        set(_zigzag true)
-      endif()
     endif()
     set(_prefix V${_top}${_suffix})
     set(_run_speed nullptr)
@@ -273,7 +270,7 @@ function(trirast_add_rtl_builds)
     if(_unit STREQUAL "improved")
       list(APPEND _params -GNumEndpoints=${_n})
     elseif(_unit STREQUAL "halfspace")
-      list(APPEND _params -GStampSize=${_stamp} -GTileSize=${_tile} "-GWalkZigzag=1'b${_z}"
+      list(APPEND _params -GStampSize=${_stamp} -GTileSize=${_tile} -GWalkMode=${_walk}
                           -GCornerForm=${_form})
     elseif(_unit STREQUAL "improved2")
       list(APPEND _params -GCornerForm=${_form} -GNumEndpoints=${_n})
@@ -346,7 +343,7 @@ void run${_prefix}(const SetupResult& s, const RasterConfig& c, uint32_t seed, E
     target_sources(${A_TARGET} PRIVATE ${_gen}/build${_prefix}.cpp)
     string(APPEND _decls "void run${_prefix}(const SetupResult&, const RasterConfig&, uint32_t, EngineResult&);\n")
     if(NOT _speed)
-      string(APPEND _list_${_unit} "      {\"${_prefix}\", ${_s}, ${_coord}, ${_box}, ${_n}, ${_depth}, &run${_prefix}, ${_stamp}, ${_tile}, ${_zigzag}, ${_form}, ${_run_speed}},\n")
+      string(APPEND _list_${_unit} "      {\"${_prefix}\", ${_s}, ${_coord}, ${_box}, ${_n}, ${_depth}, &run${_prefix}, ${_stamp}, ${_tile}, ${_walk}, ${_form}, ${_run_speed}},\n")
     endif()
   endforeach()
   file(CONFIGURE OUTPUT ${_gen}/rtl_builds_list.cpp CONTENT "\

@@ -371,8 +371,8 @@ def main():
              "saturates and is read as \"beyond the box\"), `N` endpoints per cycle, `fixed` the "
              "fixed divider (Q iterations per division), `divide` the divide boundary mode."
              + (" The half-space unit (`halfspace-*` engines): `s` stamp size (s x s pixels "
-                "tested per cycle), `t` tile size for hierarchical rejection (`t-` none), `row` "
-                "or `zigzag` tile walk; its area is synthesized per stamp size at tile 8, zigzag "
+                "tested per cycle), `t` tile size for hierarchical rejection (`t-` none), `row`, "
+                "`zigzag` or `forward` tile walk; its area is synthesized per stamp size at tile 8, forward "
                 "(scripts/synth.sh) and unknown (`-`) elsewhere (it has no width formula)."
                 if any(p.get("unit") == "halfspace" for p in points) else "")
              + (" The second-generation unit (`improved2-*` engines, docs/improved2.md): "

@@ -23,7 +23,7 @@
 #   improved unit (trirast_improved_top) and, when rtl/trad/trirast_trad_top.sv exists, the traditional one
 #   (trirast_trad_top, unit name "trad"); when rtl/halfspace/trirast_halfspace.f exists, the half-space
 #   unit (trirast_halfspace_top) at the default configuration only, once per stamp size of HS_STAMPS
-#   with TileSize HS_TILE and WalkZigzag HS_ZIGZAG (unit names "halfspace-s1", "halfspace-s2", ...),
+#   with TileSize HS_TILE and WalkMode HS_WALK (unit names "halfspace-s1", "halfspace-s2", ...),
 #   in its default corner form (products, CornerForm 0) and in its digit-serial form (CornerForm 1,
 #   --hs-corner-form radix16: "halfspace-radix16-s1", ...).
 # - nextpnr-ice40 (HX8K, ct256, seed 1) of registered wrappers: rtl/common/trirast_synth_shell.sv (inputs
@@ -106,7 +106,7 @@ if [ -f "$ROOT/rtl/trad/trirast_trad_top.sv" ]; then UNITS="improved trad"; fi
 # The half-space unit: synthesized at the default configuration only, one unit name per stamp size.
 HS_STAMPS="1 2 4"
 HS_TILE=8     # TileSize (the CLI's --tile default)
-HS_ZIGZAG=1   # WalkZigzag (the CLI's --hs-walk default, zigzag)
+HS_WALK=2     # WalkMode (the CLI's --hs-walk default, forward)
 HS_UNITS=""
 # The second-generation improved unit: synthesized at the default configuration only, both forms.
 I2_UNITS=""
@@ -127,10 +127,10 @@ top_of() {
     *) echo trirast_improved_top ;;
   esac
 }
-hs_params() {  # hs_params UNIT: "StampSize TileSize WalkZigzag CornerForm" of a half-space unit name
+hs_params() {  # hs_params UNIT: "StampSize TileSize WalkMode CornerForm" of a half-space unit name
   local form=0
   [[ "$1" == halfspace-radix16-* ]] && form=1
-  echo "${1##*-s} $HS_TILE $HS_ZIGZAG $form"
+  echo "${1##*-s} $HS_TILE $HS_WALK $form"
 }
 
 filelist() {  # filelist UNIT: the unit's sources, rtl/UNIT/trirast_UNIT.f (scripts/rtl_filelist.sh)
@@ -174,7 +174,7 @@ yosys_stat() {  # yosys_stat UNIT CONFIG TARGET
   else synth="synth_xilinx -family xc7 -top $top"; fi
   if [[ "$unit" == halfspace-* ]]; then
     read -r s t z f <<< "$(hs_params "$unit")"
-    pre="chparam -set StampSize $s -set TileSize $t -set WalkZigzag $z -set CornerForm $f $top;"
+    pre="chparam -set StampSize $s -set TileSize $t -set WalkMode $z -set CornerForm $f $top;"
   fi
   [ "$unit" = improved2-products ] && pre="chparam -set CornerForm 0 -set FifoRam 0 $top;"
   rm -f "$WORK/$cfg/$unit.$target.stat"
@@ -307,14 +307,14 @@ for unit in $HS_UNITS; do
   for cfg in default "$FIT_CONFIG"; do
     # shellcheck disable=SC2086
     wanted "pnr.$unit.$cfg" && { gen_wrapper "trirast_synth_hs_s$s" trirast_halfspace_top "$unit" "$cfg" $TIE_DEPTH \
-      --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
+      --param "StampSize=$s" --param "TileSize=$t" --param "WalkMode=$z" ||
       echo "synth.sh: half-space wrapper (stamp $s, $cfg) failed" >&2; }
   done
 done
 for unit in $HS_UNITS; do
   read -r s t z _ <<< "$(hs_params "$unit")"
   wanted "pnr.$unit.walker" && { gen_wrapper "trirast_synth_hs_walker_s$s" trirast_halfspace_tile_walker "$unit" default \
-    --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" ||
+    --param "StampSize=$s" --param "TileSize=$t" --param "WalkMode=$z" ||
     echo "synth.sh: half-space walker wrapper (stamp $s) failed" >&2; }
 done
 # The second-generation unit reads only the vertices of the triangle port (A, B and the bias are
@@ -334,16 +334,17 @@ for unit in $HSR_UNITS; do
   read -r s t z f <<< "$(hs_params "$unit")"
   # shellcheck disable=SC2086
   wanted "pnr.$unit.default" && { gen_wrapper "trirast_synth_hsr_s$s" trirast_halfspace_top "$unit" default \
-    $TIE_DEPTH --tie tri_c_i=0 --param "StampSize=$s" --param "TileSize=$t" --param "WalkZigzag=1'b$z" \
+    $TIE_DEPTH --tie tri_c_i=0 --param "StampSize=$s" --param "TileSize=$t" --param "WalkMode=$z" \
     --param "CornerForm=$f" || echo "synth.sh: half-space radix-16 wrapper (stamp $s) failed" >&2; }
 done
 if [ -n "$HSR_UNITS" ] && wanted pnr.halfspace-radix16.setup; then
   gen_wrapper trirast_synth_hsr_setup trirast_halfspace_setup_stage "${HSR_UNITS%% *}" default \
-    --tie tri_c_i=0 --param CornerForm=1 ||
+    --tie tri_c_i=0 --param CornerForm=1 --param "FormEend=$((HS_WALK == 1))" ||
     echo "synth.sh: half-space radix-16 setup wrapper failed" >&2
 fi
 if [ -n "$HS_UNITS" ] && wanted pnr.halfspace.setup; then
-  gen_wrapper trirast_synth_hs_setup trirast_halfspace_setup_stage "${HS_UNITS%% *}" default ||
+  gen_wrapper trirast_synth_hs_setup trirast_halfspace_setup_stage "${HS_UNITS%% *}" default \
+    --param "FormEend=$((HS_WALK == 1))" ||
     echo "synth.sh: half-space setup wrapper failed" >&2
 fi
 
@@ -566,7 +567,7 @@ OUT="$ROOT/docs/synth.md"
     echo "others from the run above."
   done
   echo
-  echo "Units: \`trirast_improved_top\` (improved)$([[ " $UNITS " == *" trad "* ]] && echo ", \`trirast_trad_top\` (traditional, \`trad\`)")$([ -n "$HS_UNITS" ] && echo " and \`trirast_halfspace_top\` (half-space, \`halfspace-sS\` at stamp size S, TileSize $HS_TILE, WalkZigzag $HS_ZIGZAG; default configuration only)"), NumEndpoints = 1,"
+  echo "Units: \`trirast_improved_top\` (improved)$([[ " $UNITS " == *" trad "* ]] && echo ", \`trirast_trad_top\` (traditional, \`trad\`)")$([ -n "$HS_UNITS" ] && echo " and \`trirast_halfspace_top\` (half-space, \`halfspace-sS\` at stamp size S, TileSize $HS_TILE, WalkMode $HS_WALK; default configuration only)"), NumEndpoints = 1,"
   echo "FifoDepth = 8. The runtime configuration inputs (viewport, boundary and divider mode,"
   echo "endpoints, FIFO depth) are free ports, so every mode is in the counts (docs/rtl.md)."
   [ -n "$HSR_UNITS" ] && echo "The half-space unit's rows \`halfspace-radix16-sS\` are its digit-serial corner form (CornerForm 1, \`--hs-corner-form radix16\`: the set-up's edge values from the improved2 unit's radix-16 corner unit, no multipliers, C not read); \`halfspace-sS\` is the default, products (CornerForm 0). Both forms have the same spans; their cycles differ by the set-up (docs/timing.md)."
@@ -729,7 +730,7 @@ OUT="$ROOT/docs/synth.md"
   if [ -n "$HS_UNITS" ]; then
     echo "### The half-space unit"
     echo
-    echo "Placed at the default configuration (TileSize $HS_TILE, WalkZigzag $HS_ZIGZAG) once per stamp size, with"
+    echo "Placed at the default configuration (TileSize $HS_TILE, WalkMode $HS_WALK) once per stamp size, with"
     echo "its setup stage (\`trirast_halfspace_setup_stage\`: the improved unit's interface with its corner"
     echo "products, and the edge values at the box corner) and its tile walker with the stamp tester"
     echo "(\`trirast_halfspace_tile_walker\`) each alone in a wrapper, so that a unit that does not fit says which part"

@@ -112,7 +112,7 @@ TEST(Cli, RasterVectorsWritesTheKitsDirectory) {
   EXPECT_GT(lines("spans.hex"), 4u);
   std::ifstream params(out + "/params.txt"), args(out + "/plusargs.txt"), readme(out + "/README.txt");
   std::string p((std::istreambuf_iterator<char>(params)), {}), a((std::istreambuf_iterator<char>(args)), {});
-  EXPECT_EQ(p, "unit halfspace\nFifoDepth 8\nStampSize 2\nTileSize 8\nWalkZigzag 1\nCornerForm 0\n");
+  EXPECT_EQ(p, "unit halfspace\nFifoDepth 8\nStampSize 2\nTileSize 8\nWalkMode 2\nCornerForm 0\n");
   EXPECT_NE(a.find("+ntris=4 +nspans=" + std::to_string(lines("spans.hex")) + " "), std::string::npos) << a;
   EXPECT_NE(a.find("+sink=periodic +sink_ready=2 +sink_stall=1 "), std::string::npos) << a;
   EXPECT_TRUE(readme.good());

@@ -38,12 +38,12 @@ void summary(const std::string& text, long long& hit, long long& total, long lon
 }
 
 // The half-space unit walks a band right to left only in its zigzag order: the point counts on
-// the zigzag build and stays 0 on the row build, and both reports list every point with its count.
+// a zigzag build and stays 0 on the row build, and both reports list every point with its count.
 TEST(CliCoverage, RasterReportsEveryPointOfTheRun) {
   TempDir dir;
   const std::string scene = " --scene builtin:mixed:objects=2,tess=8 --width 320 --height 240";
   const CommandResult zig = run_command(kBin + " raster --engine halfspace-rtl" + scene +
-                                        " --stamp 2 --tile 8 --hs-walk zigzag --coverage " +
+                                        " --stamp 1 --tile none --hs-walk zigzag --coverage " +
                                         dir.file("zig.md"));
   ASSERT_EQ(zig.status, 0) << zig.err;
   const CommandResult row = run_command(kBin + " raster --engine halfspace-rtl" + scene +

@@ -102,15 +102,15 @@ TEST(HalfspaceDatapath, EqualsGoldenOnRandomTriangles) {
 }
 
 TEST(HalfspaceDatapath, WalkerWorkIsPlausible) {
-  // One large triangle: 16x16 tiles are accepted inside it; the zig-zag walk, which ends a band
-  // after its last non-rejected tile, tests fewer units than the row walk.
+  // One large triangle: 16x16 tiles are accepted inside it; the zig-zag and forward walks, which
+  // end a band after its last non-rejected tile, test fewer units than the row walk.
   RasterConfig cfg;
   cfg.halfspace.tile = 16;
   std::vector<InputTriangle> tris = {{{10, 500, 30}, {10, 40, 400}, 0}};
   const SetupResult setup = setup_scene(tris, cfg);
   ASSERT_EQ(setup.tris.size(), 1u);
-  uint64_t units[2];
-  for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) {
+  uint64_t units[3];
+  for (HalfspaceWalk w : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag, HalfspaceWalk::Forward}) {
     cfg.halfspace.walk = w;
     EngineResult r;
     make_halfspace_datapath_engine()->run(setup, cfg, r);
@@ -119,6 +119,7 @@ TEST(HalfspaceDatapath, WalkerWorkIsPlausible) {
     EXPECT_GT(r.work["hs_units_rejected"], 0u);
   }
   EXPECT_LT(units[1], units[0]);
+  EXPECT_LT(units[2], units[0]);
 }
 
 // A partial tile's stamp values of the edges that cross the tile fit UnitWidths::hs_stamp_value

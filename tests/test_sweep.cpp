@@ -233,18 +233,18 @@ TEST_F(QuickSweep, ErrorsAreWhereTheyShouldBe) {
 
 // The half-space unit in the sweep (--engines halfspace-*): its stamp, tile and walk as points,
 // exact against the golden, its RTL with its model's cycles, and its area where synthesis has
-// its stamp size at the synthesized tile and walk (tile 8, zigzag), unknown elsewhere.
+// its stamp size at the synthesized tile and walk (tile 8, forward), unknown elsewhere.
 TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
   // The full sweep's points: every stamp x tile x walk once, with distinct names.
   const std::vector<SweepPoint> full = sweep_points(false, {"halfspace-sc"});
-  ASSERT_EQ(full.size(), 18u);
+  ASSERT_EQ(full.size(), 27u);
   std::set<std::string> names;
   for (const SweepPoint& p : full) {
     EXPECT_EQ(p.kind(), UnitKind::Halfspace);
     EXPECT_TRUE(p.rtl()) << p.label();
     names.insert(p.config_name());
   }
-  EXPECT_EQ(names.size(), 18u);
+  EXPECT_EQ(names.size(), 27u);
   EXPECT_TRUE(names.count("S8 c16 b14 s4 t- row"));
   // Not in the default engines: the default sweep has no half-space point.
   for (const SweepPoint& p : sweep_points(false, {}))
@@ -271,10 +271,10 @@ TEST(SweepHalfspace, StampTileAndWalkAreSweptExactWithSynthesizedArea) {
     EXPECT_EQ(row.at("box_bits"), "14") << row.at("config");
   }
   EXPECT_EQ(hs, 4);  // quick: three model points and the RTL
-  const auto* s1 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s1 t8 zigzag");
-  const auto* s2 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s2 t8 zigzag");
+  const auto* s1 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s1 t8 forward");
+  const auto* s2 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s2 t8 forward");
   const auto* s4 = find_row(cfgs, "halfspace-sc", "S8 c16 b14 s4 t16 row");
-  const auto* rtl = find_row(cfgs, "halfspace-rtl", "S8 c16 b14 s2 t8 zigzag");
+  const auto* rtl = find_row(cfgs, "halfspace-rtl", "S8 c16 b14 s2 t8 forward");
   ASSERT_TRUE(s1 && s2 && s4 && rtl);
   EXPECT_EQ(s1->at("luts"), "5403");
   EXPECT_EQ(s2->at("luts"), "5944");
@@ -598,7 +598,7 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   EXPECT_NE(with_trad.estimate(UnitKind::Trad, trad_small).luts, trad_before.luts);
   EXPECT_LT(with_trad.estimate(UnitKind::Trad, trad_small).luts, 2092);
   EXPECT_EQ(with_trad.estimate(UnitKind::Improved, n4).luts, e.luts);
-  // The half-space unit: synthesized per stamp size at tile 8, zigzag; no width formula.
+  // The half-space unit: synthesized per stamp size at tile 8, forward; no width formula.
   write_file(dir.file("hs.csv"),
              "unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz\n"
              "improved,default,xilinx7,6605,2320,818,0,9,\n"
@@ -614,6 +614,8 @@ TEST(AreaModel, SynthesisWhereCoveredEstimateElsewhere) {
   hs_cfg.halfspace.walk = HalfspaceWalk::Row;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
   hs_cfg.halfspace.walk = HalfspaceWalk::Zigzag;
+  EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
+  hs_cfg.halfspace.walk = HalfspaceWalk::Forward;
   hs_cfg.halfspace.stamp = 4;
   EXPECT_FALSE(hs.area(UnitKind::Halfspace, hs_cfg).known());
   EXPECT_FALSE(hs.estimate(UnitKind::Halfspace, RasterConfig{}).known());

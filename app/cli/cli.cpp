@@ -89,9 +89,9 @@ std::vector<OptionSpec> scene_options() {
       {"--divider", "MODE", "divider iterations, adaptive (bits the box needs) | fixed (box-bits + 1)", "adaptive"},
       {"--stamp", "S", "stamp of S x S pixels tested per cycle, 1 | 2 | 4", "2"},
       {"--tile", "T", "tile of T x T pixels rejected/accepted from its corners, 8 | 16 | none", "8"},
-      {"--hs-walk", "ORDER", "tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile)", "zigzag"},
+      {"--hs-walk", "ORDER", "tile order, row (every tile) | zigzag (alternate bands, end a band after its last non-rejected tile) | forward (every band left to right, ended as zigzag ends it)", "forward"},
       {"--corner-form", "FORM", "corner values by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first)", "radix16"},
-      {"--hs-corner-form", "FORM", "edge values at the box corner by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first: 2 + nL cycles, plus 1 + nR for a box wider than one unit: a tile, or a stamp without tiles)", "dsp"},
+      {"--hs-corner-form", "FORM", "edge values at the box corner by dsp (products, 1 cycle) | radix16 (digit-serial, MSB first: 2 + nL cycles, plus 1 + nR in the zigzag walk for a box wider than one unit: a tile, or a stamp without tiles)", "dsp"},
       {"--endpoints", "N", "rows (endpoints per edge) walked per cycle, 1 | 2 | 4", "1"},
       {"--fifo-depth", "D", "span FIFO entries (>= --endpoints)", "8"},
       {"--sink-stall", "PATTERN", "the downstream of the span output: a ready pattern none | periodic:READY:STALL (cycles) | random:SEED:PERCENT (stall percent 0..99), or queue:RATE:CAPACITY, a pixel queue that reacts to what it took (consumes RATE pixels per cycle; ready while fewer than CAPACITY pixels are queued)", "none"},
@@ -497,7 +497,7 @@ int cmd_raster(int argc, char** argv) {
 // ---------------------------------------------------------------------------------------------
 // The routed clock a timed engine's cycles are read at (compare's time column): its unit's iCE40
 // HX8K Fmax at the run's widths from docs/synth.csv, when scripts/synth.sh placed and routed that
-// configuration (FIFO 8, N = 1; the half-space unit's tile 8 and zigzag walk). `why` says where
+// configuration (FIFO 8, N = 1; the half-space unit's tile 8 and forward walk). `why` says where
 // the figure came from, or why there is none.
 double routed_fmax_mhz(const AreaModel& area, const std::string& engine, const RasterConfig& cfg,
                        std::string& why) {

@@ -51,7 +51,7 @@ expect.hex   per triangle p: {first[32], count[32], accept[32], first_span[32], 
              setup_retire_o, walk_retire_o)
 params.txt   "unit UNIT" and the top's parameters, "NAME VALUE" per line (run.sh gives them to
              the simulator: trirast_UNIT_top's NumEndpoints, FifoDepth, CornerForm, StampSize,
-             TileSize, WalkZigzag, as the unit has them)
+             TileSize, WalkMode, as the unit has them)
 plusargs.txt the bench's run-time plusargs: +kit_format (this format's number, 1: the bench
              refuses another) +ntris +nspans; the static inputs +vp_xmax +vp_ymax
              (cfg_vp_xmax_i, cfg_vp_ymax_i), +fifo_depth (cfg_fifo_depth_i), +endpoints
@@ -204,7 +204,7 @@ void write_kit_vectors(const std::string& dir, const std::string& engine, const 
   if (name == "improved2") params << "CornerForm " << cfg.improved2.corner_form << "\n";
   if (name == "halfspace")
     params << "StampSize " << cfg.halfspace.stamp << "\nTileSize " << cfg.halfspace.tile
-           << "\nWalkZigzag " << (cfg.halfspace.walk == HalfspaceWalk::Zigzag ? 1 : 0)
+           << "\nWalkMode " << int(cfg.halfspace.walk)
            << "\nCornerForm " << cfg.halfspace.corner_form << "\n";
 
   const SinkPattern sink = SinkPattern::parse(cfg.sink_stall);

@@ -25,7 +25,7 @@ const std::map<std::string, std::string>& table() {
       {"config.divider", "the improved unit's divider iterations: adaptive or fixed (--divider)"},
       {"config.stamp", "the half-space unit's stamp side in pixels (--stamp)"},
       {"config.tile", "the half-space unit's tile side in pixels, 0 for no tiles (--tile)"},
-      {"config.hs_walk", "the half-space unit's tile order: row or zigzag (--hs-walk)"},
+      {"config.hs_walk", "the half-space unit's tile order: row, zigzag or forward (--hs-walk)"},
       {"config.corner_form", "the second-generation unit's corner form: dsp or radix16 (--corner-form)"},
       {"config.hs_corner_form", "the half-space unit's corner form: dsp or radix16 (--hs-corner-form)"},
       {"config.traversal", "the golden's pixel traversal (--traversal)"},

@@ -145,19 +145,19 @@ std::vector<SweepPoint> sweep_points(bool quick, const std::vector<std::string>&
     p.cfg.halfspace.walk = walk;
     if (seen.insert(p.label()).second) pts.push_back(p);
   };
-  const auto Row = HalfspaceWalk::Row, Zz = HalfspaceWalk::Zigzag;
+  const auto Row = HalfspaceWalk::Row, Zz = HalfspaceWalk::Zigzag, Fw = HalfspaceWalk::Forward;
   auto add_hs_points = [&] {
     if (quick) {
-      add_hs("halfspace-sc", 1, 8, Zz);
-      add_hs("halfspace-sc", 2, 8, Zz);
+      add_hs("halfspace-sc", 1, 8, Fw);
+      add_hs("halfspace-sc", 2, 8, Fw);
       add_hs("halfspace-sc", 4, 16, Row);
     } else {
       for (int stamp : {1, 2, 4})
         for (int tile : {8, 16, 0})
-          for (HalfspaceWalk walk : {Zz, Row}) add_hs("halfspace-sc", stamp, tile, walk);
+          for (HalfspaceWalk walk : {Fw, Zz, Row}) add_hs("halfspace-sc", stamp, tile, walk);
     }
-    add_hs("halfspace-datapath", 2, 8, Zz);
-    add_hs("halfspace-rtl", 2, 8, Zz);
+    add_hs("halfspace-datapath", 2, 8, Fw);
+    add_hs("halfspace-rtl", 2, 8, Fw);
     if (!quick) {
       add_hs("halfspace-rtl", 4, 16, Row);
       add_hs("halfspace-rtl", 1, 0, Zz);

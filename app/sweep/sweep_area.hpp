@@ -64,7 +64,7 @@ class AreaModel {
   AreaModel(const std::string& synth_csv, const std::string& synth_script);
   // Area of one configuration of a unit. Synthesis covers improved units with N = 1, FIFO 8 and no
   // quotient truncation (divider and boundary modes are runtime inputs of the RTL), and the
-  // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, zigzag), per
+  // half-space unit at the tile size and walk scripts/synth.sh builds (TileSize 8, forward), per
   // stamp size, and the second-generation unit per corner form (FIFO 8, N = 1). The half-space
   // unit has no width formula: elsewhere its area is unknown; the second-generation unit's
   // formula is scaled to its own synthesis of the corner form (unknown without it).

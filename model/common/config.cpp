@@ -45,10 +45,18 @@ const char* divider_mode_name(DividerMode mode) {
 HalfspaceWalk parse_halfspace_walk(const std::string& text) {
   if (text == "row") return HalfspaceWalk::Row;
   if (text == "zigzag") return HalfspaceWalk::Zigzag;
-  throw std::invalid_argument("--hs-walk: expected row or zigzag, got '" + text + "'");
+  if (text == "forward") return HalfspaceWalk::Forward;
+  throw std::invalid_argument("--hs-walk: expected row, zigzag or forward, got '" + text + "'");
 }
 
-const char* halfspace_walk_name(HalfspaceWalk walk) { return walk == HalfspaceWalk::Zigzag ? "zigzag" : "row"; }
+const char* halfspace_walk_name(HalfspaceWalk walk) {
+  switch (walk) {
+    case HalfspaceWalk::Row: return "row";
+    case HalfspaceWalk::Zigzag: return "zigzag";
+    case HalfspaceWalk::Forward: return "forward";
+  }
+  return "?";
+}
 
 int parse_corner_form(const std::string& text, const std::string& option) {
   if (text == "dsp") return 0;

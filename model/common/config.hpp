@@ -28,8 +28,11 @@ const char* divider_mode_name(DividerMode mode);
 
 // How the half-space unit walks the box's tiles (docs/timing.md, "The half-space unit"):
 // Row = every tile of every band, left to right; Zigzag = bands alternate direction and a band
-// ends at the first tile rejected after a tile that was not (the rest of the band is empty).
-enum class HalfspaceWalk { Row, Zigzag };
+// ends at the first tile rejected after a tile that was not (the rest of the band is empty);
+// Forward = every band left to right, with the zig-zag walk's early band end (the default: no
+// right-to-left band, so the set-up forms no value at the band row's far end).
+// The values are the RTL walker's WalkMode parameter.
+enum class HalfspaceWalk { Row = 0, Zigzag = 1, Forward = 2 };
 HalfspaceWalk parse_halfspace_walk(const std::string& text);
 const char* halfspace_walk_name(HalfspaceWalk walk);
 
@@ -48,7 +51,7 @@ constexpr int kMaxViewport = 16384;  // largest --width / --height
 struct HalfspaceConfig {
   int stamp = 2;                                // S: the stamp tester tests S x S pixels per cycle (1, 2, 4)
   int tile = 8;                                 // T: tile edge for hierarchical rejection (8, 16; 0 = none)
-  HalfspaceWalk walk = HalfspaceWalk::Zigzag;  // tile order
+  HalfspaceWalk walk = HalfspaceWalk::Forward;  // tile order
   // How the set-up forms the edge values at the box corner: 0 = products in one cycle (the xc7
   // form, the default), 1 = the digit-serial corner unit, radix 16 (no multipliers: the iCE40 HX
   // form; cycles only, the values are the same).

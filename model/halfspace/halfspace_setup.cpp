@@ -41,7 +41,8 @@ HalfspaceSetupOut HalfspaceSetupStage::run(const TriangleSetup& t) const {
   }
   if (cfg_.halfspace.corner_form == 0) return o;
   o.corner_digits_e0 = corner_serial_digits(t, o.x0, o.y0, cfg_);
-  if (xlast > 0) o.corner_digits_eend = corner_serial_digits(t, o.x0 + xlast, o.y0, cfg_);
+  // Run 2 (E_end) only for the zig-zag walk, whose odd bands start there.
+  if (xlast > 0 && p_.walk == HalfspaceWalk::Zigzag) o.corner_digits_eend = corner_serial_digits(t, o.x0 + xlast, o.y0, cfg_);
   return o;
 }
 

@@ -5,7 +5,8 @@
 // accept it (all inside every edge: a tile only) or leave it partial (its stamps are tested).
 // Row walk: every unit, left to right. Zig-zag walk: even bands left to right, odd bands right to
 // left; the first unit rejected after a unit that was not ends the band (the units a band does
-// not reject are contiguous, so the rest of the band is rejected).
+// not reject are contiguous, so the rest of the band is rejected). Forward walk: every band left
+// to right, with the zig-zag walk's early band end.
 #pragma once
 #include <cstdint>
 
@@ -37,7 +38,7 @@ class HalfspaceTileWalker {
   int64_t walk_band(const HalfspaceSetupOut& s, int64_t band, Visit&& visit) const {
     const int64_t U = p_.unit();
     const int64_t j0 = band * U;
-    const bool early_end = p_.walk == HalfspaceWalk::Zigzag;
+    const bool early_end = p_.walk != HalfspaceWalk::Row;
     const bool back = backward(band);
     bool seen = false;
     int64_t tested = 0;

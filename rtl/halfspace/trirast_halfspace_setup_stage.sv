@@ -7,17 +7,18 @@
 //   StEdge : E0, the value at the box corner, and the value at the last unit of band row 0,
 //            E_end = E0 + ((Xmax & ~(U-1)) * A) << F.
 //            CornerForm 0 (products): one cycle; E0 = the interface's E_L (its multipliers, with
-//            C), E_end from one more multiplier per edge; both registered.
+//            C), E_end from one more multiplier per edge (unread with FormEend 0: synthesis
+//            removes it); both registered.
 //            CornerForm 1 (radix 16): the digit-serial corner unit
 //            (rtl/common/trirast_corner_serial.sv, the improved2 unit's iCE40 form: no
 //            multipliers), MSB first, CornerDigitBits operand bits per cycle. Run 1 starts in
 //            StEdge's first cycle and forms E0 in nL digit cycles (nL: the digits of the
 //            operands cx0 - vx, cy0 - vy); E0 is registered in the cycle after. When the box is
-//            wider than one unit, run 2 starts in that cycle and forms E_end at
-//            x0 + (Xmax & ~(U-1)) in nR digit cycles; else E_end = E0. StHold follows the
-//            cycle whose corner unit holds E_end: StEdge lasts 2 + nL cycles, plus 1 + nR with
-//            run 2. The values are vertex-relative (A*(cx - vx) + B*(cy - vy) - bias): C is not
-//            read.
+//            wider than one unit and FormEend is set (the zig-zag walk), run 2 starts in that
+//            cycle and forms E_end at x0 + (Xmax & ~(U-1)) in nR digit cycles; else E_end = E0.
+//            StHold follows the cycle whose corner unit holds E_end: StEdge lasts 2 + nL cycles,
+//            plus 1 + nR with run 2. The values are vertex-relative (A*(cx - vx) + B*(cy - vy) -
+//            bias): C is not read.
 //   StHold : the set-up triangle waits for the walk stage; hand-off when hand_ready_i (radix 16:
 //            E_end is the corner unit's output, held: nothing starts a run before the next StEdge).
 `include "trirast_assert.svh"
@@ -26,7 +27,10 @@
 module trirast_halfspace_setup_stage #(
   parameter int UnitSize = 8,        // U: tile side, or the stamp side without tiles
   parameter int CornerForm = 0,      // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
-  parameter int CornerDigitBits = 4  // CornerForm 1: the corner unit's digit, 4 bits (radix 16)
+  parameter int CornerDigitBits = 4, // CornerForm 1: the corner unit's digit, 4 bits (radix 16)
+  // 1: E_end is formed (the zig-zag walk, whose odd bands start there); 0: the walker does not
+  // read hand_eend_o, and CornerForm 1 runs no run 2 (StEdge lasts 2 + nL cycles).
+  parameter bit FormEend = 1'b1
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -121,7 +125,7 @@ module trirast_halfspace_setup_stage #(
     end
     logic start, second, busy, run_done;
     assign run_done = state_q == StEdge && run_q != RunStart && !busy;
-    assign second = run_done && run_q == RunE0 && xlast != '0;
+    assign second = FormEend && run_done && run_q == RunE0 && xlast != '0;
     assign start = (state_q == StEdge && run_q == RunStart) || second;
     logic [2:0] far_unused, fneg_unused;
     trirast_corner_serial #(.DigitBits (CornerDigitBits)) u_corner (

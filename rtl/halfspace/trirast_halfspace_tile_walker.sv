@@ -12,7 +12,10 @@
 module trirast_halfspace_tile_walker #(
   parameter int StampSize = 2,   // S: 1, 2, 4
   parameter int TileSize = 8,    // T: 8, 16, or 0 (no tiles)
-  parameter bit WalkZigzag = 1'b1,        // zig-zag bands with early band end; 0: row order
+  // The tile order: 0 row (every unit, left to right); 1 zig-zag (odd bands right to left, with
+  // the early band end: the first rejected unit after one that was not); 2 forward (every band
+  // left to right, with the early band end).
+  parameter int WalkMode = 2,
   parameter int UnitSize = (TileSize > 0) ? TileSize : StampSize,  // derived
   // Signed bits of the edge values at a unit's corners, up to U - 1 pixels past the box (and so
   // past the coordinate range): trirast_pkg::HalfspaceEdgeBits<U> (docs/unit.md). Derived.
@@ -216,10 +219,12 @@ module trirast_halfspace_tile_walker #(
   // among them through the registers' enables and one 2:1 mux per bit (a next band's start or the
   // rest), so that the unit test's carry chain is followed by the control alone.
   localparam int L = $clog2(U);
+  localparam bit Zigzag = WalkMode == 1;    // odd bands right to left
+  localparam bit EarlyEnd = WalkMode != 0;  // a rejected unit after a covered one ends the band
   logic [3*EdgeBits-1:0] ebn_next, ebo_next, eu_next, eu_band;
   logic [3*StampBits-1:0] esr_next, es_next;
   logic next_back;  // the next band runs right to left
-  assign next_back = WalkZigzag && !back_q;
+  assign next_back = Zigzag && !back_q;
   always_comb begin
     for (int k = 0; k < 3; k++) begin
       logic [EdgeBits-1:0] ak, bk, bn, bo;
@@ -236,8 +241,8 @@ module trirast_halfspace_tile_walker #(
       // band's side), so the next band's start is always bn: no select between the sides.
       bn = ebn_q[k*EdgeBits +: EdgeBits] + (bk << L);
       bo = ebo_q[k*EdgeBits +: EdgeBits] + (bk << L);
-      ebn_next[k*EdgeBits +: EdgeBits] = WalkZigzag ? bo : bn;
-      ebo_next[k*EdgeBits +: EdgeBits] = WalkZigzag ? bn : bo;
+      ebn_next[k*EdgeBits +: EdgeBits] = Zigzag ? bo : bn;
+      ebo_next[k*EdgeBits +: EdgeBits] = Zigzag ? bn : bo;
       eu_band[k*EdgeBits +: EdgeBits] = bn;
       // The band's next unit, E + U*A or (right to left) E - U*A = E + ~(U*A) + 1: one adder, its
       // carry in back_q as the low bit of both operands.
@@ -272,9 +277,10 @@ module trirast_halfspace_tile_walker #(
       rej = c == 0;
       acc = Tiles && c == 1;
       // The unit's test (without tiles every test is the unit's) or its last stamp is done; the
-      // band ends (its last unit, or zigzag's rejected unit after a covered one) or waits.
+      // band ends (its last unit, or the early band end: a rejected unit after a covered one) or
+      // waits.
       unit_done = (state_q == WUnit && (rej || acc || !Tiles)) || stamp_done;
-      band_end_or_wait = (unit_done && (last_unit || (WalkZigzag && seen_q && state_q == WUnit &&
+      band_end_or_wait = (unit_done && (last_unit || (EarlyEnd && seen_q && state_q == WUnit &&
                                                       rej))) || state_q == WWait;
       go = band_end_or_wait && emit_free_i;            // the band is handed over
       next_band = go && !band_last;                    // ... and a next band starts
@@ -328,9 +334,10 @@ module trirast_halfspace_tile_walker #(
       e0 = EdgeBits'($signed(hand_e0_i[k*InBits + F +: InBits - F]));
       eu_d[k*EdgeBits +: EdgeBits] = band_next ? eu_band[k*EdgeBits +: EdgeBits]
                                    : state_q == WIdle ? e0 : eu_next[k*EdgeBits +: EdgeBits];
-      // The load: band 0 starts at E0 (left); zig-zag's band 1 at E_end (right), row order's at E0.
+      // The load: band 0 starts at E0 (left); zig-zag's band 1 at E_end (right), the other walks'
+      // at E0.
       ebn_d[k*EdgeBits +: EdgeBits] = state_q == WIdle
-          ? (WalkZigzag ? EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F])) : e0)
+          ? (Zigzag ? EdgeBits'($signed(hand_eend_i[k*InBits + F +: InBits - F])) : e0)
           : ebn_next[k*EdgeBits +: EdgeBits];
       ebo_d[k*EdgeBits +: EdgeBits] = state_q == WIdle ? e0 : ebo_next[k*EdgeBits +: EdgeBits];
     end
@@ -342,7 +349,8 @@ module trirast_halfspace_tile_walker #(
     j0_d = state_q == WIdle ? '0 : j0_q + PB'(U);
     band_last_d = j0_d + PB'(U) > {1'b0, state_q == WIdle ? hand_ymax_i : ymax_q};
     back_d = state_q != WIdle && next_back;
-    // Seen a unit not rejected in this band (zigzag: the next rejected one ends it).
+    // Seen a unit not rejected in this band (with the early band end, the next rejected one ends
+    // it).
     seen_d = !load && !band_next && (seen_q || (state_q == WUnit && !reject));
     spans_d = !load && (spans_q || (band_go && emit_any_i));
     // A partial tile's stamps: from the unit's corner, along the stamp row, then the next row.
@@ -421,7 +429,7 @@ module trirast_halfspace_tile_walker #(
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)
   // Cover points (docs/coverage.md): every state and the walk's cases: a unit (tile or stamp)
   // rejected (outside an edge), accepted whole (inside all three: tiles only), partial (stamps
-  // walked: tiles only); a band ended early (zigzag: a rejected unit after a covered one), a band
+  // walked: tiles only); a band ended early (zigzag, forward: a rejected unit after a covered one), a band
   // walked right to left (zigzag), a band's hand-off waiting for the emitter, and a triangle
   // retired without a span.
   `COVER(WalkWIdle_C, state_q == WIdle, clk_i, !rst_ni)
@@ -432,7 +440,7 @@ module trirast_halfspace_tile_walker #(
   `COVER(WalkUnitRejected_C, state_q == WUnit && reject, clk_i, !rst_ni)
   `COVER(WalkUnitAccepted_C, state_q == WUnit && accept, clk_i, !rst_ni)
   `COVER(WalkUnitPartial_C, state_q == WUnit && !reject && !accept && Tiles, clk_i, !rst_ni)
-  `COVER(WalkBandEndEarly_C, state_q == WUnit && WalkZigzag && seen_q && reject && !last_unit,
+  `COVER(WalkBandEndEarly_C, state_q == WUnit && EarlyEnd && seen_q && reject && !last_unit,
          clk_i, !rst_ni)
   `COVER(WalkBandBackward_C, state_q == WUnit && back_q, clk_i, !rst_ni)
   `COVER(WalkRetireNoSpan_C, retire_o, clk_i, !rst_ni)

@@ -7,7 +7,8 @@
 //   behind a registered push) and span port.
 // The triangle port is trirast_improved_top's; the span port's checks are trirast_span_port's
 // (TRIRAST_SPAN_PORT_CHECKS).
-// Build parameters: StampSize (1, 2, 4), TileSize (8, 16; 0 = no tiles), WalkZigzag, CornerForm.
+// Build parameters: StampSize (1, 2, 4), TileSize (8, 16; 0 = no tiles), WalkMode (0 row,
+// 1 zig-zag, 2 forward: trirast_halfspace_tile_walker.sv), CornerForm.
 // Every boundary is a valid/ready handshake: triangle port, hand-off, band hand-over to the
 // emitter, FIFO push (admitted by the occupancy test count + pending <= DEPTH - 1), span port.
 `include "trirast_assert.svh"
@@ -16,7 +17,7 @@
 module trirast_halfspace_top #(
   parameter int StampSize = 2,
   parameter int TileSize = 8,
-  parameter bit WalkZigzag = 1'b1,
+  parameter int WalkMode = 2,    // 0: row; 1: zig-zag; 2: forward (the CLI's --hs-walk)
   parameter int CornerForm = 0,  // 0: products (DSPs on xc7); 1: MSB-first radix 16 (iCE40 HX)
   parameter int FifoDepth = trirast_pkg::DefaultFifoDepth,     // span FIFO entries (power of 2)
   parameter int CountBits = $clog2(FifoDepth + 1)              // derived: do not override
@@ -52,7 +53,11 @@ module trirast_halfspace_top #(
   logic unused_obs;  // walk_state is observed in traces only
   assign unused_obs = ^walk_state;
 
-  trirast_halfspace_setup_stage #(.UnitSize (UnitSize), .CornerForm (CornerForm)) u_setup (
+  trirast_halfspace_setup_stage #(
+    .UnitSize   (UnitSize),
+    .CornerForm (CornerForm),
+    .FormEend   (WalkMode == 1)  // only the zig-zag walk starts a band at E_end
+  ) u_setup (
     `TRIRAST_CONNECT_SETUP_STAGE,
     .hand_a_o         (hand_a),
     .hand_b_o         (hand_b),
@@ -71,7 +76,7 @@ module trirast_halfspace_top #(
   trirast_halfspace_tile_walker #(
     .StampSize  (StampSize),
     .TileSize   (TileSize),
-    .WalkZigzag (WalkZigzag)
+    .WalkMode   (WalkMode)
   ) u_walker (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),

@@ -25,9 +25,10 @@ struct RtlBuild {
   int endpoints, fifo_depth;                    // NumEndpoints, FifoDepth it was verilated with
   // Runs the scene through a fresh instance (cycle_loop.hpp); returns the cycle loop's counts.
   void (*run)(const SetupResult&, const RasterConfig&, uint32_t x_seed, EngineResult&);
-  // The half-space unit's build parameters StampSize, TileSize (0: none), WalkZigzag (0 otherwise).
+  // The half-space unit's build parameters StampSize, TileSize (0: none), WalkMode (the value of
+  // HalfspaceWalk; 0 otherwise).
   int stamp, tile;
-  bool zigzag;
+  int walk;
   // The CornerForm of the second-generation and half-space units (RasterConfig::improved2 /
   // halfspace.corner_form; 0 otherwise).
   int corner_form;

@@ -465,7 +465,9 @@ void draw_fuzz_hs_config(FuzzDraws& d, RasterConfig& cfg, const std::vector<Half
     static const int stamps[] = {1, 2, 4}, tiles[] = {0, 8, 16};
     cfg.halfspace.stamp = stamps[d.below(3)];
     cfg.halfspace.tile = tiles[d.below(3)];
-    cfg.halfspace.walk = d.chance(50) ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row;
+    static const HalfspaceWalk walks[] = {HalfspaceWalk::Row, HalfspaceWalk::Zigzag,
+                                          HalfspaceWalk::Forward};
+    cfg.halfspace.walk = walks[d.below(3)];
   }
   cfg.validate();
 }

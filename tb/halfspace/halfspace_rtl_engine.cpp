@@ -17,15 +17,15 @@ namespace rtl {
 
 namespace {
 
-std::string describe_hs(int stamp, int tile, bool zigzag, int corner_form) {
+std::string describe_hs(int stamp, int tile, HalfspaceWalk walk, int corner_form) {
   return "--stamp " + std::to_string(stamp) + " --tile " +
          (tile ? std::to_string(tile) : std::string("none")) + " --hs-walk " +
-         (zigzag ? "zigzag" : "row") + " --hs-corner-form " + corner_form_name(corner_form);
+         halfspace_walk_name(walk) + " --hs-corner-form " + corner_form_name(corner_form);
 }
 
 bool same_unit(const RtlBuild& b, const RasterConfig& cfg) {
   return b.stamp == cfg.halfspace.stamp && b.tile == cfg.halfspace.tile &&
-         b.zigzag == (cfg.halfspace.walk == HalfspaceWalk::Zigzag) &&
+         b.walk == int(cfg.halfspace.walk) &&
          b.corner_form == cfg.halfspace.corner_form;
 }
 
@@ -49,8 +49,8 @@ const RtlBuild& pick_build(const RasterConfig& cfg) {
   if (!unit)
     throw std::invalid_argument(
         "--stamp/--tile/--hs-walk/--hs-corner-form: " +
-        describe_hs(cfg.halfspace.stamp, cfg.halfspace.tile,
-                    cfg.halfspace.walk == HalfspaceWalk::Zigzag, cfg.halfspace.corner_form) +
+        describe_hs(cfg.halfspace.stamp, cfg.halfspace.tile, cfg.halfspace.walk,
+                    cfg.halfspace.corner_form) +
         " is not covered by the halfspace-rtl engine's Verilated models (no build of these "
         "parameters at these widths" + add);
   throw std::invalid_argument("--fifo-depth: " + std::to_string(cfg.fifo_depth) +
@@ -65,7 +65,7 @@ std::string halfspace_built_configurations() {
   for (const RtlBuild& b : halfspace_builds())
     s += (s.empty() ? "" : "; ") + std::to_string(b.subpixel_bits) + ":" +
          std::to_string(b.coord_int_bits) + ":" + std::to_string(b.box_bits) + " " +
-         describe_hs(b.stamp, b.tile, b.zigzag, b.corner_form) + " DEPTH<=" + std::to_string(b.fifo_depth);
+         describe_hs(b.stamp, b.tile, HalfspaceWalk(b.walk), b.corner_form) + " DEPTH<=" + std::to_string(b.fifo_depth);
   return "S:coord:box " + s;
 }
 
@@ -79,8 +79,7 @@ std::vector<HalfspaceParams> halfspace_built_params(const RasterConfig& cfg) {
   std::vector<HalfspaceParams> out;
   for (const RtlBuild& b : halfspace_builds())
     if (same_widths(b, cfg) && cfg.fifo_depth <= b.fifo_depth)
-      out.push_back({b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row,
-                     b.corner_form});
+      out.push_back({b.stamp, b.tile, HalfspaceWalk(b.walk), b.corner_form});
   return out;
 }
 

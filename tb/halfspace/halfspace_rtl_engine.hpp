@@ -17,7 +17,7 @@ namespace trirast {
 std::unique_ptr<Engine> make_halfspace_rtl_engine();
 
 namespace rtl {
-// "S:coord:box 8:16:14 --stamp 2 --tile 8 --hs-walk zigzag DEPTH<=1024; ...": the builds.
+// "S:coord:box 8:16:14 --stamp 2 --tile 8 --hs-walk forward DEPTH<=1024; ...": the builds.
 std::string halfspace_built_configurations();
 // Whether a Verilated build covers cfg's widths, --stamp/--tile/--hs-walk and --fifo-depth.
 bool halfspace_build_covers(const RasterConfig& cfg);

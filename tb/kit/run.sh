@@ -71,7 +71,7 @@ while read -r name value rest; do
   [ -z "$rest" ] && [ -n "$value" ] || die "$VEC/params.txt:$lineno: expected NAME VALUE"
   if [ "$name" = unit ]; then UNIT="$value"; continue; fi
   case "$name" in
-    NumEndpoints|FifoDepth|CornerForm|StampSize|TileSize|WalkZigzag) ;;
+    NumEndpoints|FifoDepth|CornerForm|StampSize|TileSize|WalkMode) ;;
     *) die "$VEC/params.txt:$lineno: $name is not a parameter of the kit's bench" ;;
   esac
   [[ "$value" =~ ^[0-9]+$ ]] || die "$VEC/params.txt:$lineno: $name $value is not a number"

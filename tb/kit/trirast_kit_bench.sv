@@ -14,7 +14,7 @@ module trirast_kit_bench #(
   parameter int CornerForm = 1,    // improved2, halfspace (the vectors' params file sets it)
   parameter int StampSize = 2,     // halfspace
   parameter int TileSize = 8,      // halfspace
-  parameter int WalkZigzag = 1,    // halfspace
+  parameter int WalkMode = 2,      // halfspace: 0 row, 1 zigzag, 2 forward
   // the bench's memories: triangles and expected spans it can hold
   parameter int MaxTris = 1024,
   parameter int MaxSpans = 65536
@@ -143,7 +143,7 @@ module trirast_kit_bench #(
   trirast_halfspace_top #(
     .StampSize  (StampSize),
     .TileSize   (TileSize),
-    .WalkZigzag (WalkZigzag != 0),
+    .WalkMode   (WalkMode),
     .CornerForm (CornerForm),
     .FifoDepth  (FifoDepth)
   ) u_dut (

@@ -20,7 +20,7 @@
 #include <cstring>
 #include <string>
 
-#include "Vtrirast_halfspace_top_s2t8z.h"
+#include "Vtrirast_halfspace_top_s2t8f.h"
 #include "Vtrirast_improved2_top.h"
 #include "Vtrirast_improved_top.h"
 #include "Vtrirast_trad_top.h"
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
     spans = run<Vtrirast_improved2_top>(
         "improved2", [](auto& top) { top.cfg_endpoints_i = 1; }, offer_edges);
   } else if (unit == "halfspace") {
-    spans = run<Vtrirast_halfspace_top_s2t8z>("halfspace", [](auto&) {}, offer_edges);
+    spans = run<Vtrirast_halfspace_top_s2t8f>("halfspace", [](auto&) {}, offer_edges);
   } else if (unit == "trad") {
     spans = run<Vtrirast_trad_top>("trad", [](auto&) {}, [&](auto& top) {
       trirast::rtl::Bits<8> vx, vy;

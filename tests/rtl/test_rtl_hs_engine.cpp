@@ -32,7 +32,7 @@ using test::tri;
 
 // The stamp / tile / walk / corner form a Verilated build of the unit was made for.
 HalfspaceShape shape_of(const rtl::RtlBuild& b) {
-  return {b.stamp, b.tile, b.zigzag ? HalfspaceWalk::Zigzag : HalfspaceWalk::Row, b.corner_form};
+  return {b.stamp, b.tile, HalfspaceWalk(b.walk), b.corner_form};
 }
 
 // The shapes Verilated at the default widths (rtl_builds.hpp).

@@ -58,27 +58,32 @@ TEST(ScHalfspaceHand, OneTileSixteenStamps) {
   }
 }
 
-TEST(ScHalfspaceHand, StampsWithoutTilesZigzag) {
+TEST(ScHalfspaceHand, StampsWithoutTilesZigzagAndForward) {
   // Stamp 4, no tiles, zig-zag: band 0 tests stamps 0, 1 in 4, 5 (hand-off end of 5, rows 0..3
   // pushed in 6..9, in the FIFO at the end of 7..10, popped in 8..11); band 1 runs right to left:
   // stamp (4, 4) is rejected (all four corners outside the hypotenuse), stamp (0, 4) is not:
   // cycles 6, 7; the emitter is busy until 9, so band 1 goes to it at the end of 9 and rows 4..7
   // are pushed in 10..13, in the FIFO at the end of 11..14, popped in 12..15.
   // radix16: two units a band, two runs (E_end at x0 + 4, 3 digits as well), 8 cycles later.
-  for (int form : {0, 1}) {
-    RasterConfig cfg;
-    cfg.halfspace.stamp = 4;
-    cfg.halfspace.tile = 0;
-    cfg.halfspace.walk = HalfspaceWalk::Zigzag;
-    cfg.halfspace.corner_form = form;
-    const uint64_t late = form ? 8 : 0;
-    const EngineResult r = run_hs({right_triangle()}, cfg);
-    ASSERT_EQ(r.cycles.size(), 1u);
-    EXPECT_EQ(r.cycles[0].setup_done_cycle, 3u + late) << "form " << form;
-    EXPECT_EQ(r.cycles[0].first_span_cycle, 8u + late) << "form " << form;
-    EXPECT_EQ(r.cycles[0].done_cycle, 15u + late) << "form " << form;
-    EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u);
-    EXPECT_EQ(r.total_cycles, 16u + late) << "form " << form;
+  // Forward: band 1 tests (0, 4) and (4, 4) in 6, 7, the same cycles; radix16 has no run 2 (no
+  // band starts at E_end), so it is 4 cycles later, not 8.
+  for (HalfspaceWalk walk : {HalfspaceWalk::Zigzag, HalfspaceWalk::Forward}) {
+    for (int form : {0, 1}) {
+      RasterConfig cfg;
+      cfg.halfspace.stamp = 4;
+      cfg.halfspace.tile = 0;
+      cfg.halfspace.walk = walk;
+      cfg.halfspace.corner_form = form;
+      const uint64_t late = form ? (walk == HalfspaceWalk::Zigzag ? 8 : 4) : 0;
+      const std::string what = std::string(halfspace_walk_name(walk)) + " form " + std::to_string(form);
+      const EngineResult r = run_hs({right_triangle()}, cfg);
+      ASSERT_EQ(r.cycles.size(), 1u);
+      EXPECT_EQ(r.cycles[0].setup_done_cycle, 3u + late) << what;
+      EXPECT_EQ(r.cycles[0].first_span_cycle, 8u + late) << what;
+      EXPECT_EQ(r.cycles[0].done_cycle, 15u + late) << what;
+      EXPECT_EQ(r.work.at("stall_cycles.tile_walker"), 2u) << what;
+      EXPECT_EQ(r.total_cycles, 16u + late) << what;
+    }
   }
 }
 

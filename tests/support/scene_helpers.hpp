@@ -75,12 +75,13 @@ struct HalfspaceShape {
   int corner_form = 0;
 };
 
-// Every shape the unit supports: stamps 1, 2, 4 x tiles none, 8, 16 x row and zig-zag walks.
+// Every shape the unit supports: stamps 1, 2, 4 x tiles none, 8, 16 x row, zig-zag and forward
+// walks.
 inline std::vector<HalfspaceShape> every_halfspace_shape() {
   std::vector<HalfspaceShape> shapes;
   for (int stamp : {1, 2, 4})
     for (int tile : {0, 8, 16})
-      for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag})
+      for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag, HalfspaceWalk::Forward})
         shapes.push_back({stamp, tile, walk});
   return shapes;
 }

@@ -118,7 +118,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::vector<HalfspaceParams> v;
     for (int stamp : {1, 2, 4})
       for (int tile : {8, 16})
-        for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag}) v.push_back({stamp, tile, walk});
+        for (HalfspaceWalk walk : {HalfspaceWalk::Row, HalfspaceWalk::Zigzag, HalfspaceWalk::Forward})
+          v.push_back({stamp, tile, walk});
     return v;
   }();
   draw_fuzz_hs_config(d, cfg, kTiled);
