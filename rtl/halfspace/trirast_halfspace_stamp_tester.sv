@@ -4,6 +4,10 @@
 // every E >= 0 (or its edge holds the whole stamp inside: inside_i) and it lies in the box. Per
 // stamp row: any pixel, first and last covered column. With tiles its values are tile-relative,
 // the low EdgeBits of E (the walker's OffBits: exact for an edge that crosses the tile).
+// The stamp origin is StampSize-aligned and inside the box (the walker asserts both,
+// HalfspaceStampAligned_A and HalfspaceUnitInBox_A / HalfspaceStampInTile_A): a pixel's column is
+// i0 with its low bits set to di (no adder), and it is in the box unless the stamp holds Xmax's
+// column and di passes Xmax's low bits (no compare of magnitudes); the same for rows.
 module trirast_halfspace_stamp_tester #(
   parameter int StampSize = 2,
   parameter int EdgeBits = trirast_pkg::EdgeBits  // its values' bits (the walker's StampBits)
@@ -21,6 +25,11 @@ module trirast_halfspace_stamp_tester #(
   output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_last_o
 );
   localparam int PB = trirast_pkg::BoxBits + 1;
+  localparam int SL = $clog2(StampSize);
+  localparam int SB = (SL > 0) ? SL : 1;  // a pixel's offset in the stamp (StampSize 1: 0)
+  logic last_col, last_row;  // the stamp holds the box's last column (row)
+  assign last_col = (i0_i >> SL) == ({1'b0, xmax_i} >> SL);
+  assign last_row = (j0_i >> SL) == ({1'b0, ymax_i} >> SL);
 
   // Icarus 11: a combinational block writes each module-level variable once, from block-local
   // temporaries (docs/rtl.md, "Icarus"); a variable written twice glitches, and the glitch wakes
@@ -34,10 +43,10 @@ module trirast_halfspace_stamp_tester #(
     for (int dj = StampSize - 1; dj >= 0; dj--) begin
       for (int di = StampSize - 1; di >= 0; di--) begin
         logic in;
-        logic [PB-1:0] i, j;
-        i = i0_i + PB'(di);
-        j = j0_i + PB'(dj);
-        in = (i <= {1'b0, xmax_i}) && (j <= {1'b0, ymax_i});
+        logic [PB-1:0] i;
+        i = i0_i | PB'(di);
+        in = (!last_col || SB'(di) <= SB'(xmax_i & trirast_pkg::BoxBits'(StampSize - 1))) &&
+             (!last_row || SB'(dj) <= SB'(ymax_i & trirast_pkg::BoxBits'(StampSize - 1)));
         for (int k = 0; k < 3; k++) begin
           logic [EdgeBits-1:0] v;
           v = e_i[k*EdgeBits +: EdgeBits] + EdgeBits'(di) * a_i[k*EdgeBits +: EdgeBits] +

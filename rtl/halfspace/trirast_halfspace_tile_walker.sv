@@ -173,15 +173,22 @@ module trirast_halfspace_tile_walker #(
   // Row r's piece is piece r mod S: a stamp row starts at an S-aligned row of the unit, so a
   // stamp's row dj is band row srow + dj with dj = r mod S; an accepted tile gives every row the
   // same piece [i0, tile_i1]. The pieces are S muxes, and merge_o says which rows take theirs.
-  logic [PB-1:0] tile_i1;  // last column of the tile inside the box
-  assign tile_i1 = (i0_q + PB'(U - 1) > {1'b0, xmax_q}) ? {1'b0, xmax_q} : i0_q + PB'(U - 1);
+  // The last column of the tile inside the box, min(i0 + U - 1, Xmax), with no adder or compare
+  // of magnitudes: i0 is U-aligned and <= Xmax, so i0 + U - 1 is i0 with its low L bits set, and
+  // it passes Xmax exactly when i0 is in Xmax's unit (HalfspaceTileEnds_A).
+  localparam int L = $clog2(U);
+  localparam int LB = (L > 0) ? L : 1;  // a row of the unit (U = 1: one bit, always 0)
+  logic [PB-1:0] tile_i1;
+  assign tile_i1 = (i0_q >> L) == ({1'b0, xmax_q} >> L) ? {1'b0, xmax_q} : i0_q | PB'(U - 1);
   always_comb begin
     logic [PB-1:0] srow;
     logic [U-1:0] m;
     srow = stamp_mode ? sj_q - j0_q : '0;
     m = '0;
     for (int r = 0; r < U; r++) begin
-      if (state_q == WUnit && accept) m[r] = j0_q + PB'(r) <= {1'b0, ymax_q};
+      // j0 + r <= Ymax, j0 U-aligned: every row but in the box's last band, whose rows go to
+      // Ymax's low bits (HalfspaceTileEnds_A).
+      if (state_q == WUnit && accept) m[r] = !band_last || LB'(r) <= LB'(ymax_q & BoxBits'(U - 1));
       for (int dj = 0; dj < S; dj++) begin
         if ((stamp_mode || (state_q == WUnit && !Tiles)) && srow + PB'(dj) == PB'(r) &&
             st_any[dj]) begin
@@ -200,8 +207,8 @@ module trirast_halfspace_tile_walker #(
 
   // ---- the walk ----
   logic last_unit, band_last, stamp_last_col, stamp_last_row;
-  logic [PB-1:0] tile_j1;
-  assign tile_j1 = (j0_q + PB'(U - 1) > {1'b0, ymax_q}) ? {1'b0, ymax_q} : j0_q + PB'(U - 1);
+  logic [PB-1:0] tile_j1;  // the tile's last row in the box (as tile_i1; j0 is in Ymax's unit
+  assign tile_j1 = band_last ? {1'b0, ymax_q} : j0_q | PB'(U - 1);  // in the last band)
   // The stamp's column (row) is the tile's last, si_q + S > tile_i1 (sj_q + S > tile_j1), with no
   // adder before a compare: units are U-aligned and stamps S-aligned in them, so it is the unit's
   // last stamp column, or si_q + S > xmax_q, which for an S-aligned si_q is si_q/S >= xmax_q/S.
@@ -218,7 +225,6 @@ module trirast_halfspace_tile_walker #(
   // The next values, from registers only (none waits for this cycle's test): the test selects
   // among them through the registers' enables and one 2:1 mux per bit (a next band's start or the
   // rest), so that the unit test's carry chain is followed by the control alone.
-  localparam int L = $clog2(U);
   localparam bit Zigzag = WalkMode == 1;    // odd bands right to left
   localparam bit EarlyEnd = WalkMode != 0;  // a rejected unit after a covered one ends the band
   logic [3*EdgeBits-1:0] ebn_next, ebo_next, eu_next, eu_band;
@@ -401,6 +407,16 @@ module trirast_halfspace_tile_walker #(
   // The walker's position stays inside the box while it tests.
   `ASSERT_IMPLIES(HalfspaceUnitInBox_A, state_q == WUnit,
                  i0_q <= {1'b0, xmax_q} && j0_q <= {1'b0, ymax_q}, clk_i, !rst_ni)
+  // The tile's ends from aligned positions are min(i0 + U - 1, Xmax) and min(j0 + U - 1, Ymax).
+  `ASSERT_IMPLIES(HalfspaceTileEnds_A, state_q == WUnit || state_q == WStamp,
+                 (i0_q & PB'(U - 1)) == '0 && (j0_q & PB'(U - 1)) == '0 &&
+                 tile_i1 == ((i0_q + PB'(U - 1) > {1'b0, xmax_q}) ? {1'b0, xmax_q} : i0_q + PB'(U - 1)) &&
+                 tile_j1 == ((j0_q + PB'(U - 1) > {1'b0, ymax_q}) ? {1'b0, ymax_q} : j0_q + PB'(U - 1)),
+                 clk_i, !rst_ni)
+  // The stamp tester's origin is S-aligned (it reads it so: trirast_halfspace_stamp_tester.sv).
+  `ASSERT_IMPLIES(HalfspaceStampAligned_A, Tiles ? state_q == WStamp : state_q == WUnit,
+                 ((Tiles ? si_q : i0_q) & PB'(S - 1)) == '0 && ((Tiles ? sj_q : j0_q) & PB'(S - 1)) == '0,
+                 clk_i, !rst_ni)
   `ASSERT_IMPLIES(HalfspaceStampInTile_A, state_q == WStamp, si_q <= tile_i1 && sj_q <= tile_j1,
           clk_i, !rst_ni)
   // The flip-flops and the short forms above say what their definitions say: the test's signs
