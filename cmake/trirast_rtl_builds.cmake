@@ -50,6 +50,15 @@ set(TRIRAST_RTL_WIDTH_CONFIGS default:8:16:14 small:4:12:10 wide:8:20:14 tiny:0:
 # when build/ is new) and refuses other widths and that form with the build it lacks.
 option(TRIRAST_RTL_EXTRA_WIDTHS "Verilate the non-default width configurations too" ON)
 
+# TRIRAST_RTL_DEFAULT_RUN_ONLY (OFF by default; scripts/build.sh and scripts/test.sh set it OFF):
+# Verilate only the builds a default run takes, each unit's default configuration (N = 1,
+# DEPTH = 8; the half-space unit's --stamp 2 --tile 8 --hs-walk forward) with its speed build
+# (10 models, against 16 with TRIRAST_RTL_EXTRA_WIDTHS OFF alone). scripts/demo.sh's first build
+# (a new build/, target trirast): every engine runs at its defaults, and a run that needs another
+# build is refused naming the builds there are. The test programs that name a model (tests/rtl)
+# do not build in it.
+option(TRIRAST_RTL_DEFAULT_RUN_ONLY "Verilate only the builds a default run takes" OFF)
+
 # TRIRAST_RTL_COVERAGE (ON by default): the cover points of rtl/ (`COVER, trirast_assert.svh) in
 # every Verilated build: Verilator --coverage-user with TRIRAST_COVERAGE defined, and VM_COVERAGE=1
 # for the harnesses, which read each run's counts from the model's coverage database
@@ -105,6 +114,19 @@ function(trirast_rtl_build_specs out_var endpoints depth)
   if(TRIRAST_RTL_EXTRA_WIDTHS)
     list(APPEND _builds
       "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8f:default:1:${depth}:2:8:2:1")
+  endif()
+  if(TRIRAST_RTL_DEFAULT_RUN_ONLY)  # the default widths' default configurations and their speed builds
+    set(_kept)
+    foreach(_b ${_builds})
+      string(REGEX REPLACE "^speed:" "" _spec "${_b}")
+      string(REPLACE ":" ";" _f "${_spec}")
+      list(GET _f 3 _suffix)
+      list(GET _f 4 _cfg)
+      if(_cfg STREQUAL "default" AND _suffix MATCHES "^(_n1|_d8|_products_d8|_s2t8f)$")
+        list(APPEND _kept "${_b}")
+      endif()
+    endforeach()
+    set(_builds ${_kept})
   endif()
   set(${out_var} ${_builds} PARENT_SCOPE)
 endfunction()

@@ -3,7 +3,9 @@
 # as arguments (e.g. scripts/build.sh trirast). The full log goes to build/build.log; the terminal
 # gets one progress line per step of ten percent (and the time), or with --quiet nothing on
 # success. On failure prints the end of the log and exits non-zero. Extra configuration:
-#   --cmake-arg ARG   passed to cmake's configure step (e.g. -DTRIRAST_RTL_EXTRA_WIDTHS=OFF)
+#   --cmake-arg ARG   passed to cmake's configure step (e.g. -DTRIRAST_RTL_EXTRA_WIDTHS=OFF);
+#                     without one naming TRIRAST_RTL_DEFAULT_RUN_ONLY, it is set OFF (every model
+#                     the tests use; scripts/demo.sh's first build sets it ON)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mkdir -p build
@@ -16,12 +18,14 @@ while [ $# -gt 0 ]; do
     --quiet) quiet=1 ;;
     --cmake-arg) [ $# -ge 2 ] || { echo "build.sh: --cmake-arg needs a value" >&2; exit 2; }
                  cmake_args+=("$2"); shift ;;
-    -h|--help) sed -n '2,7p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,9p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) echo "build.sh: unknown option '$1' (see --help)" >&2; exit 2 ;;
     *) targets+=(--target "$1") ;;
   esac
   shift
 done
+[[ " ${cmake_args[*]-} " == *TRIRAST_RTL_DEFAULT_RUN_ONLY* ]] ||
+  cmake_args+=(-DTRIRAST_RTL_DEFAULT_RUN_ONLY=OFF)
 start=$SECONDS
 # Progress: make's "[ NN%]" lines, one line each time the tens digit moves, with the elapsed time.
 progress() {

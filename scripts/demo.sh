@@ -5,13 +5,16 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 start=$SECONDS
 ./scripts/deps.sh
-# A new build/ Verilates the default widths' RTL models alone (the demo runs every engine at the
-# default widths); scripts/build.sh and scripts/test.sh add the other width configurations later.
+# A new build/ Verilates only the RTL models a default run takes (the demo runs every engine at its
+# defaults: cmake/trirast_rtl_builds.cmake, TRIRAST_RTL_DEFAULT_RUN_ONLY); scripts/build.sh adds
+# the other models of the default widths, scripts/test.sh every width configuration too.
 # An existing build/ is used as it is configured.
 build_args=()
 if [ ! -f build/CMakeCache.txt ]; then
-  build_args=(--cmake-arg -DTRIRAST_RTL_EXTRA_WIDTHS=OFF)
-  echo "== building trirast (first build: the default widths' RTL models; progress below)"
+  build_args=(--cmake-arg -DTRIRAST_RTL_EXTRA_WIDTHS=OFF --cmake-arg -DTRIRAST_RTL_DEFAULT_RUN_ONLY=ON)
+  echo "== building trirast (first build: the RTL models a default run takes; progress below)"
+elif grep -q '^TRIRAST_RTL_DEFAULT_RUN_ONLY:BOOL=ON$' build/CMakeCache.txt; then
+  build_args=(--cmake-arg -DTRIRAST_RTL_DEFAULT_RUN_ONLY=ON)
 fi
 ./scripts/build.sh ${build_args[@]+"${build_args[@]}"} trirast
 out=out/demo

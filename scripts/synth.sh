@@ -756,12 +756,12 @@ OUT="$ROOT/docs/synth.md"
       st="${unit#halfspace-s}"
       echo "- stamp ${st}x$st, the whole unit at the $FIT_CONFIG configuration (as the improved unit above): $(hs_part "$unit.$FIT_CONFIG")."
     done
-    for unit in $HS_UNITS; do
-      if [ "$(pnr_status "$unit.$FIT_CONFIG")" = "placed, routing did not complete" ]; then
+    for job in $(for unit in $HS_UNITS; do echo "$unit.walker $unit.$FIT_CONFIG"; done); do
+      if [ "$(pnr_status "$job")" = "placed, routing did not complete" ]; then
         echo
         echo "(\"routing did not complete\": nextpnr's router stopped converging on the nearly full device,"
         echo "its unrouted and overused wire counts unchanged over millions of iterations, and the run was"
-        echo "stopped: see \`pnr/$unit.$FIT_CONFIG/nextpnr.log\` in the work directory.)"
+        echo "stopped: see \`pnr/$job/nextpnr.log\` in the work directory.)"
       fi
     done
     echo
@@ -773,8 +773,17 @@ OUT="$ROOT/docs/synth.md"
       esac
     done
     if [ "$(pnr_status halfspace.setup)" = "does not fit the HX8K" ]; then
-      echo "So the part of the half-space unit that does not fit the HX8K is its setup stage, as for the"
-      echo "improved unit: iCE40 has no multipliers, and the interface's corner products are LUTs there."
+      echo "So in the products form the part of the half-space unit that does not fit the HX8K is its"
+      echo "setup stage, as for the improved unit: iCE40 has no multipliers, and the interface's corner"
+      echo "products are LUTs there."
+      rfit=""; rnofit=""
+      for unit in $HSR_UNITS; do
+        case "$(pnr_status "$unit.default")" in
+          routed*) rfit="$rfit ${unit#halfspace-radix16-s}" ;;
+          *) rnofit="$rnofit ${unit#halfspace-radix16-s}" ;;
+        esac
+      done
+      [ -n "$rfit" ] && echo "In the digit-serial corner form the whole unit fits at stamp size$(echo "$rfit" | sed 's/ /, /g; s/^,//')$([ -n "$rnofit" ] && echo ", not at$(echo "$rnofit" | sed 's/ /, /g; s/^,//')")."
       [ -n "$fit" ] && echo "The tile walker with the stamp tester fits alone at stamp size$(echo "$fit" | sed 's/ /, /g; s/^,//')."
       [ -n "$nofit" ] && echo "At stamp size$(echo "$nofit" | sed 's/ /, /g; s/^,//') the walker alone does not fit either (its wrapper adds a flip-flop per input bit and two per output bit)."
       echo "The walker's Fmax is the traversal's own on iCE40, for information: its paths into the span"

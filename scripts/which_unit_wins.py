@@ -22,14 +22,18 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-UNITS = ["improved", "improved2", "improved2p", "trad", "hs1", "hs2", "hs4"]
+UNITS = ["improved", "improved2", "improved2p", "trad", "hs1", "hs2", "hs4", "hsr1", "hsr2", "hsr4"]
 LABEL = {"improved": "improved", "improved2": "improved2 radix-16",
          "improved2p": "improved2 products", "trad": "traditional", "hs1": "half-space S1",
-         "hs2": "half-space S2", "hs4": "half-space S4"}
+         "hs2": "half-space S2", "hs4": "half-space S4", "hsr1": "half-space radix-16 S1",
+         "hsr2": "half-space radix-16 S2", "hsr4": "half-space radix-16 S4"}
 SYNTH_UNIT = {"improved": "improved", "improved2": "improved2", "improved2p": "improved2-products",
-              "trad": "trad", "hs1": "halfspace-s1", "hs2": "halfspace-s2", "hs4": "halfspace-s4"}
+              "trad": "trad", "hs1": "halfspace-s1", "hs2": "halfspace-s2", "hs4": "halfspace-s4",
+              "hsr1": "halfspace-radix16-s1", "hsr2": "halfspace-radix16-s2",
+              "hsr4": "halfspace-radix16-s4"}
 COLOR = {"improved": "tab:blue", "improved2": "tab:purple", "improved2p": "tab:cyan",
-         "trad": "tab:orange", "hs1": "tab:olive", "hs2": "tab:green", "hs4": "tab:red"}
+         "trad": "tab:orange", "hs1": "tab:olive", "hs2": "tab:green", "hs4": "tab:red",
+         "hsr1": "tab:brown", "hsr2": "tab:pink", "hsr4": "tab:gray"}
 EXACT = [u for u in UNITS if u != "trad"]  # the traditional unit draws its own pixels
 NA = "n/a[^noclock]"
 MIN_BIN = 20  # bins with fewer triangles are shown but do not decide the winners' ranges
@@ -397,7 +401,9 @@ def main():
       "second-generation improved unit in both corner forms (radix-16: digit-serial corners, the "
       "iCE40 form and the default, `--corner-form radix16`; products: DSP products, the xc7 form, "
       "`--corner-form dsp`), the traditional unit and the half-space unit at stamp sizes 1, 2 and "
-      "4 (S1, S2, S4; tile 8, zig-zag walk). The cycles are the SystemC models' (`improved-sc`, "
+      "4 (S1, S2, S4; tile 8, forward walk) in both of its corner forms (products, the default and "
+      "the xc7 form, `--hs-corner-form dsp`; radix-16, the iCE40 form, `--hs-corner-form "
+      "radix16`). The cycles are the SystemC models' (`improved-sc`, "
       "`improved2-sc`, `trad-sc`, `halfspace-sc`; equal to the RTL's for every triangle, which the "
       "test suite checks) at the CLI defaults: 1024x768, S = 8, coordinates 16 bits, box 14 bits, "
       "N = 1, FIFO 8, sink always ready.")
@@ -420,7 +426,8 @@ def main():
       "(/usr/share/assimp/models/OBJ/WusonOBJ.obj and spider.obj), each through the default mesh "
       "camera. A scene's totals are what `trirast raster --engine E --scene SCENE --cycles "
       "FILE.csv` reports for it (1 + the largest `done_cycle`), E = `improved-sc`, "
-      "`improved2-sc [--corner-form dsp]`, `trad-sc` or `halfspace-sc --stamp S`; the tool calls "
+      "`improved2-sc [--corner-form dsp]`, `trad-sc` or `halfspace-sc --stamp S "
+      "[--hs-corner-form radix16]`; the tool calls "
       "the same SystemC models directly. Per triangle, a unit's cycles are what the triangle adds "
       "to the scene's total: its done cycle minus the latest done cycle of the triangles "
       "completed before it (so a scene's per-triangle cycles sum to its total).")
@@ -549,7 +556,7 @@ def main():
     w("")
     pairs = [("improved2", "trad"), ("improved", "improved2"), ("improved2", "improved2p"),
              ("improved2", "hs4"), ("improved", "trad"), ("improved", "hs4"), ("trad", "hs4"),
-             ("hs2", "hs4")]
+             ("hs2", "hs4"), ("hsr1", "hsr2")]
     time_pairs = [(p, q) for i, p in enumerate(clocked) for q in clocked[i + 1:]]
 
     def f_ns(r, u):

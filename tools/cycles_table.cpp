@@ -44,7 +44,7 @@ int sc_main(int argc, char** argv) {
   std::printf(
       "| scene | triangles | improved cycles | trad cycles | improved vs trad | improved cyc/tri "
       "(setup, walk) | trad cyc/tri (setup, walk) | improved N=4 | improved divide | "
-      "improved fixed divider | half-space cycles (S2 T8 zigzag) | half-space vs improved | "
+      "improved fixed divider | half-space cycles (S2 T8 forward) | half-space vs improved | "
       "half-space cyc/tri (setup, walk) | half-space S4 T16 | half-space S1 no tiles |\n");
   std::printf("|---|---:|---:|---:|---:|---|---|---:|---:|---:|---:|---:|---|---:|---:|\n");
   uint64_t sum_i = 0, sum_t = 0, sum_h = 0, sum_g = 0, sum_gd = 0;

@@ -1,7 +1,9 @@
 // Which unit wins where (scripts/which_unit_wins.sh turns the output into docs/which-unit-wins.md):
 // the timed SystemC models of the improved unit, the second-generation improved unit in both corner
 // forms (radix-16 digit-serial, the iCE40 form and the default; DSP products, the xc7 form), the
-// traditional unit and the half-space unit (stamp 1, 2, 4; tile 8, zigzag walk), the CLI defaults
+// traditional unit and the half-space unit (stamp 1, 2, 4; tile 8, forward walk; in both corner
+// forms: DSP products, the CLI default and the xc7 form; radix-16 digit-serial, the iCE40 form),
+// the CLI defaults
 // otherwise (N = 1, FIFO 8, sink always ready, S = 8, 1024x768)
 // on the benchmark scenes and meshes, and on a sweep of scenes whose triangles all have one box
 // size and aspect ratio.
@@ -20,7 +22,7 @@
 //                     <unit>: the total cycles of each unit on a scene of equal-shaped triangles
 //                     (cycles per triangle = total / triangles)
 // The unit columns are improved, improved2 (radix-16 corners), improved2p (product corners), trad,
-// hs1, hs2, hs4.
+// hs1, hs2, hs4 (product corners), hsr1, hsr2, hsr4 (radix-16 corners).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -47,11 +49,12 @@ namespace {
 struct Unit {
   const char* name;
   int stamp;        // half-space stamp size, 0 for the Bresenham units
-  int corner_form;  // the second-generation unit's corner form (Improved2Config), else -1
+  int corner_form;  // the corner form of the second-generation or half-space unit, else -1
 };
 const Unit kUnits[] = {{"improved", 0, -1}, {"improved2", 0, 1}, {"improved2p", 0, 0},
-                       {"trad", 0, -1},     {"hs1", 1, -1},      {"hs2", 2, -1},
-                       {"hs4", 4, -1}};
+                       {"trad", 0, -1},     {"hs1", 1, 0},       {"hs2", 2, 0},
+                       {"hs4", 4, 0},       {"hsr1", 1, 1},      {"hsr2", 2, 1},
+                       {"hsr4", 4, 1}};
 
 std::unique_ptr<Engine> make(const Unit& u) {
   if (u.stamp > 0) return make_halfspace_sc_engine();
@@ -60,9 +63,13 @@ std::unique_ptr<Engine> make(const Unit& u) {
 }
 
 RasterConfig config_of(const Unit& u) {
-  RasterConfig cfg;  // the defaults: tile 8, zigzag; radix-16 corners
-  if (u.stamp > 0) cfg.halfspace.stamp = u.stamp;
-  if (u.corner_form >= 0) cfg.improved2.corner_form = u.corner_form;
+  RasterConfig cfg;  // the defaults: tile 8, forward walk
+  if (u.stamp > 0) {
+    cfg.halfspace.stamp = u.stamp;
+    cfg.halfspace.corner_form = u.corner_form;
+  } else if (u.corner_form >= 0) {
+    cfg.improved2.corner_form = u.corner_form;
+  }
   return cfg;
 }
 

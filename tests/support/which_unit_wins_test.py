@@ -13,19 +13,20 @@ import re
 import subprocess
 import sys
 
-UNITS = ["improved", "improved2", "improved2p", "trad", "hs1", "hs2", "hs4"]
+UNITS = ["improved", "improved2", "improved2p", "trad", "hs1", "hs2", "hs4", "hsr1", "hsr2", "hsr4"]
 LABEL = {"improved": "improved", "improved2": "improved2 radix-16",
          "improved2p": "improved2 products", "trad": "traditional", "hs1": "half-space S1",
-         "hs2": "half-space S2", "hs4": "half-space S4"}
+         "hs2": "half-space S2", "hs4": "half-space S4", "hsr1": "half-space radix-16 S1",
+         "hsr2": "half-space radix-16 S2", "hsr4": "half-space radix-16 S4"}
 # Per-triangle cycles of each unit (every triangle of a scene costs the same).
 PER_TRI = {"improved": 20, "improved2": 105.6, "improved2p": 90, "trad": 30.9, "hs1": 80,
-           "hs2": 30, "hs4": 12}
+           "hs2": 30, "hs4": 12, "hsr1": 84, "hsr2": 34, "hsr4": 16}
 FMAX = {"improved2": 52.80, "trad": 20.60}  # the routed ice40 default rows below
 # The default rows' LUTs (xilinx7) and LUT4s (ice40) below.
 XC7 = {"improved": 6510, "improved2": 4671, "improved2p": 3819, "trad": 2092, "hs1": 5194,
-       "hs2": 5546, "hs4": 8037}
+       "hs2": 5546, "hs4": 8037, "hsr1": 5563, "hsr2": 5978, "hsr4": 7553}
 ICE40 = {"improved": 15932, "improved2": 5590, "improved2p": 16787, "trad": 4586, "hs1": 13550,
-         "hs2": 14053, "hs4": 14691}
+         "hs2": 14053, "hs4": 14691, "hsr1": 5783, "hsr2": 5908, "hsr4": 6540}
 SYNTH = """unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz
 improved,default,ice40,15932,2896,3404,0,0,
 improved,default,xilinx7,6510,2320,818,0,9,
@@ -38,6 +39,12 @@ halfspace-s2,default,ice40,14053,2866,3035,0,0,
 halfspace-s2,default,xilinx7,5546,2273,769,0,15,
 halfspace-s4,default,ice40,14691,2865,4695,0,0,
 halfspace-s4,default,xilinx7,8037,2273,1191,0,33,99.00
+halfspace-radix16-s1,default,ice40,5783,3000,2400,5,0,
+halfspace-radix16-s1,default,xilinx7,5563,2300,700,2,9,
+halfspace-radix16-s2,default,ice40,5908,3000,2500,5,0,
+halfspace-radix16-s2,default,xilinx7,5978,2300,750,2,9,
+halfspace-radix16-s4,default,ice40,6540,3000,2800,5,0,
+halfspace-radix16-s4,default,xilinx7,7553,2300,900,2,21,
 improved2,default,ice40,5590,1913,2619,29,0,52.80
 improved2,default,xilinx7,4671,2047,697,7,0,
 improved2-products,default,ice40,16787,2624,2279,6,0,
