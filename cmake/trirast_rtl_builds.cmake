@@ -115,14 +115,10 @@ function(trirast_rtl_build_specs out_var endpoints depth)
     list(APPEND _builds
       "speed:halfspace:trirast_halfspace_top:TRIRAST_RTL_HS_SOURCES:_radix16_s2t8f:default:1:${depth}:2:8:2:1")
   endif()
-  if(TRIRAST_RTL_DEFAULT_RUN_ONLY)  # the default widths' default configurations and their speed builds
+  if(TRIRAST_RTL_DEFAULT_RUN_ONLY)  # the speed builds (a default run's) and their checked builds
     set(_kept)
     foreach(_b ${_builds})
-      string(REGEX REPLACE "^speed:" "" _spec "${_b}")
-      string(REPLACE ":" ";" _f "${_spec}")
-      list(GET _f 3 _suffix)
-      list(GET _f 4 _cfg)
-      if(_cfg STREQUAL "default" AND _suffix MATCHES "^(_n1|_d8|_products_d8|_s2t8f)$")
+      if(_b MATCHES "^speed:" OR "speed:${_b}" IN_LIST _builds)
         list(APPEND _kept "${_b}")
       endif()
     endforeach()
