@@ -3,9 +3,15 @@
 // combinational): a = A*u, b = B*u and the corner values E_L = E(c(x0, y0)) + bias,
 // E_R = E(c(x1, y0)) + bias. The corner values are the unit's only multipliers: with the pixel
 // centre c = x*u + h, A*c = (A*x << F) + (A << (F - 1)), so each is a (p + 1) x PixBits product.
+// BoxAtAccept (the half-space unit) forms the box's first and last pixels from the port's
+// vertices in the accept cycle and registers them with the triangle: StBox keeps the empty test
+// and Xmax = x1 - x0, Ymax = y1 - y0. The cycles are the same; the logic moves into the port's
+// cycle, whose inputs come from the upstream's registers (docs/port.md).
 `include "trirast_ports.svh"
 
-module trirast_box_stage (
+module trirast_box_stage #(
+  parameter bit BoxAtAccept = 1'b0  // 1: first/last pixel from the port's vertices at accept
+) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
   // ---- configuration ----
@@ -90,13 +96,25 @@ module trirast_box_stage (
     last_px = (l > $signed(WBits'(limit))) ? $signed(WBits'(limit)) : l;
   endfunction
 
-  always_comb begin
-    fx = first_px(min3(vx_q));
-    lx = last_px(max3(vx_q), vp_xmax_i);
-    fy = first_px(min3(vy_q));
-    ly = last_px(max3(vy_q), vp_ymax_i);
-    empty_o = (fx > lx) || (fy > ly);
+  if (BoxAtAccept) begin : g_box_at_accept
+    // The viewport is static, so its clip at accept equals the clip in StBox.
+    logic signed [WBits-1:0] fx_q, lx_q, fy_q, ly_q;
+    always_ff @(posedge clk_i) begin
+      if (accept_i) begin
+        fx_q <= first_px(min3(vx_i));
+        lx_q <= last_px(max3(vx_i), vp_xmax_i);
+        fy_q <= first_px(min3(vy_i));
+        ly_q <= last_px(max3(vy_i), vp_ymax_i);
+      end
+    end
+    assign {fx, lx, fy, ly} = {fx_q, lx_q, fy_q, ly_q};
+  end else begin : g_box_in_stbox
+    assign fx = first_px(min3(vx_q));
+    assign lx = last_px(max3(vx_q), vp_xmax_i);
+    assign fy = first_px(min3(vy_q));
+    assign ly = last_px(max3(vy_q), vp_ymax_i);
   end
+  assign empty_o = (fx > lx) || (fy > ly);
 
   always_comb begin
     {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d, x0_d, y0_d, xmax_d, ymax_d} =

@@ -2,7 +2,8 @@
 // improved unit's interface (bounding box, the edges' A, B), the corner values in one of two
 // forms (CornerForm, as the improved2 unit's), and the FSM
 // StIdle -> StBox -> StEdge -> StHold -> StIdle.
-//   StIdle : tri_ready_o (the top gates it with the reset); the handshake registers the triangle.
+//   StIdle : tri_ready_o (the top gates it with the reset); the handshake registers the triangle
+//            and its box's first and last pixels (trirast_box_stage BoxAtAccept).
 //   StBox  : the bounding box; an empty box retires the triangle here (box_retire_o).
 //   StEdge : E0, the value at the box corner, and the value at the last unit of band row 0,
 //            E_end = E0 + ((Xmax & ~(U-1)) * A) << F.
@@ -71,7 +72,7 @@ module trirast_halfspace_setup_stage #(
   assign accept = tri_valid_i && tri_ready_o;
 
   // CornerForm 1 reads the vertices and the bias, not the products (el_o): synthesis removes them.
-  trirast_box_stage u_interface (
+  trirast_box_stage #(.BoxAtAccept (1'b1)) u_interface (
     `TRIRAST_CONNECT_BOX_STAGE(accept, box_en, empty),
     .a_o       (hand_a_o),
     .b_o       (hand_b_o),
