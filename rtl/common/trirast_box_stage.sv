@@ -4,9 +4,10 @@
 // E_R = E(c(x1, y0)) + bias. The corner values are the unit's only multipliers: with the pixel
 // centre c = x*u + h, A*c = (A*x << F) + (A << (F - 1)), so each is a (p + 1) x PixBits product.
 // BoxAtAccept (the half-space unit) forms the box's first and last pixels from the port's
-// vertices in the accept cycle and registers them with the triangle: StBox keeps the empty test
-// and Xmax = x1 - x0, Ymax = y1 - y0. The cycles are the same; the logic moves into the port's
-// cycle, whose inputs come from the upstream's registers (docs/port.md).
+// vertices in the accept cycle and registers them with the triangle: StBox keeps the clip at 0 and
+// one subtraction per axis (Xmax, Ymax and the empty test). The cycles are the same; the logic
+// moves into the port's cycle, whose inputs come from the upstream's registers (docs/port.md).
+`include "trirast_assert.svh"
 `include "trirast_ports.svh"
 
 module trirast_box_stage #(
@@ -49,6 +50,7 @@ module trirast_box_stage #(
   localparam int WBits = P + 2;                   // box arithmetic
   localparam int ProdBits = CoefBits + PixBits + 1;  // A * x (x unsigned)
   localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);  // h = u/2
+  localparam logic signed [WBits-1:0] HalfLess1 = Half - 1;        // h - 1
 
   // The accepted triangle.
   logic [TagBits-1:0] tag_q, tag_d;
@@ -62,7 +64,8 @@ module trirast_box_stage #(
 
   // First and last pixel whose centre lies in [lo, hi], clipped to [0, limit]:
   // first = ceil((lo - h)/u) = -((h - lo) >> F), last = floor((hi - h)/u) = (hi - h) >> F.
-  logic signed [WBits-1:0] fx, lx, fy, ly;
+  logic signed [WBits-1:0] fx, fy;    // the box's first pixel
+  logic [BoxBits-1:0] xmax, ymax;      // its x1 - x0, y1 - y0
 
   // Vertex k of a packed coordinate triple, sign-extended to WBits.
   function automatic logic signed [WBits-1:0] coord(input logic [3*P-1:0] v, input int k);
@@ -96,25 +99,67 @@ module trirast_box_stage #(
     last_px = (l > $signed(WBits'(limit))) ? $signed(WBits'(limit)) : l;
   endfunction
 
+  // The box's first and last pixel of three vertices (BoxAtAccept), two carry chains deep: three
+  // compares select the smallest and the largest vertex; then, side by side, each one's pixel and
+  // the last pixel's clip, vmax >= thr with thr = (limit + 1)*u + h, the first coordinate whose
+  // last pixel (vmax - h) >> F passes limit. The first pixel is left unclipped: StBox clips it at
+  // 0 by its sign, before the subtraction that gives Xmax and the empty test.
+  function automatic logic [2*WBits-1:0] first_last(input logic [3*P-1:0] v,
+                                                    input logic signed [WBits-1:0] limit,
+                                                    input logic signed [WBits-1:0] thr);
+    logic signed [WBits-1:0] vmin, vmax, f, l;
+    logic lt01, lt02, lt12;
+    lt01 = coord(v, 0) < coord(v, 1);
+    lt02 = coord(v, 0) < coord(v, 2);
+    lt12 = coord(v, 1) < coord(v, 2);
+    vmin = (lt01 && lt02) ? coord(v, 0) : lt12 ? coord(v, 1) : coord(v, 2);
+    vmax = (!lt01 && !lt02) ? coord(v, 0) : !lt12 ? coord(v, 1) : coord(v, 2);
+    f = (vmin + HalfLess1) >>> F;  // ceil((vmin - h)/u)
+    l = (vmax - Half) >>> F;
+    first_last = {f, (vmax >= thr) ? limit : l};
+  endfunction
+
   if (BoxAtAccept) begin : g_box_at_accept
-    // The viewport is static, so its clip at accept equals the clip in StBox.
     logic signed [WBits-1:0] fx_q, lx_q, fy_q, ly_q;
+    // The clip thresholds from the viewport, registered in every cycle, reset included: the
+    // viewport is static and applied before reset is released (docs/port.md), so at accept they
+    // are its own, and the clip at accept equals the clip in StBox.
+    logic signed [WBits-1:0] xthr_q, ythr_q;
     always_ff @(posedge clk_i) begin
+      xthr_q <= ((WBits'(vp_xmax_i) + 1) << F) + Half;
+      ythr_q <= ((WBits'(vp_ymax_i) + 1) << F) + Half;
       if (accept_i) begin
-        fx_q <= first_px(min3(vx_i));
-        lx_q <= last_px(max3(vx_i), vp_xmax_i);
-        fy_q <= first_px(min3(vy_i));
-        ly_q <= last_px(max3(vy_i), vp_ymax_i);
+        {fx_q, lx_q} <= first_last(vx_i, WBits'(vp_xmax_i), xthr_q);
+        {fy_q, ly_q} <= first_last(vy_i, WBits'(vp_ymax_i), ythr_q);
       end
     end
-    assign {fx, lx, fy, ly} = {fx_q, lx_q, fy_q, ly_q};
+    // One subtraction per axis: its sign is the empty test, its low bits Xmax (Ymax).
+    logic signed [WBits:0] dx, dy;
+    assign fx = fx_q[WBits-1] ? '0 : fx_q;
+    assign fy = fy_q[WBits-1] ? '0 : fy_q;
+    assign dx = (WBits+1)'(lx_q) - (WBits+1)'(fx);
+    assign dy = (WBits+1)'(ly_q) - (WBits+1)'(fy);
+    assign {xmax, ymax} = {BoxBits'(dx), BoxBits'(dy)};
+    assign empty_o = dx[WBits] || dy[WBits];
+    // The same box as the StBox form's from the vertices the stage holds (simulation, formal).
+    logic signed [WBits-1:0] ref_fx, ref_lx, ref_fy, ref_ly;
+    assign ref_fx = first_px(min3(vx_q));
+    assign ref_lx = last_px(max3(vx_q), vp_xmax_i);
+    assign ref_fy = first_px(min3(vy_q));
+    assign ref_ly = last_px(max3(vy_q), vp_ymax_i);
+    `ASSERT_IMPLIES(BoxAtAcceptIsBox_A, box_i, fx == ref_fx && fy == ref_fy &&
+                    empty_o == (ref_fx > ref_lx || ref_fy > ref_ly) && (empty_o ||
+                    (xmax == BoxBits'(ref_lx - ref_fx) && ymax == BoxBits'(ref_ly - ref_fy))),
+                    clk_i, !rst_ni)
   end else begin : g_box_in_stbox
+    logic signed [WBits-1:0] lx, ly;
     assign fx = first_px(min3(vx_q));
     assign lx = last_px(max3(vx_q), vp_xmax_i);
     assign fy = first_px(min3(vy_q));
     assign ly = last_px(max3(vy_q), vp_ymax_i);
+    assign {xmax, ymax} = {BoxBits'(lx - fx), BoxBits'(ly - fy)};
+    assign empty_o = (fx > lx) || (fy > ly);
   end
-  assign empty_o = (fx > lx) || (fy > ly);
 
   always_comb begin
     {tag_d, vx_d, vy_d, a_d, b_d, c_d, bias_d, x0_d, y0_d, xmax_d, ymax_d} =
@@ -126,8 +171,8 @@ module trirast_box_stage #(
       // The box fits BoxBits (the harness rejects larger ones, as the model does).
       x0_d   = PixBits'(fx);
       y0_d   = PixBits'(fy);
-      xmax_d = BoxBits'(lx - fx);
-      ymax_d = BoxBits'(ly - fy);
+      xmax_d = xmax;
+      ymax_d = ymax;
     end
   end
 
