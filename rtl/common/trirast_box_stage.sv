@@ -64,7 +64,7 @@ module trirast_box_stage #(
 
   // First and last pixel whose centre lies in [lo, hi], clipped to [0, limit]:
   // first = ceil((lo - h)/u) = -((h - lo) >> F), last = floor((hi - h)/u) = (hi - h) >> F.
-  logic signed [WBits-1:0] fx, fy;    // the box's first pixel
+  logic [PixBits-1:0] box_x0, box_y0;  // the box's first pixel
   logic [BoxBits-1:0] xmax, ymax;      // its x1 - x0, y1 - y0
 
   // Vertex k of a packed coordinate triple, sign-extended to WBits.
@@ -98,6 +98,17 @@ module trirast_box_stage #(
     l = (hi - Half) >>> F;
     last_px = (l > $signed(WBits'(limit))) ? $signed(WBits'(limit)) : l;
   endfunction
+
+  // The StBox form, from the held vertices: the improved unit's box, and BoxAtAccept's reference.
+  logic signed [WBits-1:0] held_fx, held_lx, held_fy, held_ly;
+  logic held_empty;
+  logic [BoxBits-1:0] held_xmax, held_ymax;
+  assign held_fx = first_px(min3(vx_q));
+  assign held_lx = last_px(max3(vx_q), vp_xmax_i);
+  assign held_fy = first_px(min3(vy_q));
+  assign held_ly = last_px(max3(vy_q), vp_ymax_i);
+  assign held_empty = (held_fx > held_lx) || (held_fy > held_ly);
+  assign {held_xmax, held_ymax} = {BoxBits'(held_lx - held_fx), BoxBits'(held_ly - held_fy)};
 
   // The box's first and last pixel of three vertices (BoxAtAccept), two carry chains deep: three
   // compares select the smallest and the largest vertex; then, side by side, each one's pixel and
@@ -134,31 +145,22 @@ module trirast_box_stage #(
       end
     end
     // One subtraction per axis: its sign is the empty test, its low bits Xmax (Ymax).
+    logic signed [WBits-1:0] fx, fy;
     logic signed [WBits:0] dx, dy;
     assign fx = fx_q[WBits-1] ? '0 : fx_q;
     assign fy = fy_q[WBits-1] ? '0 : fy_q;
+    assign {box_x0, box_y0} = {PixBits'(fx), PixBits'(fy)};
     assign dx = (WBits+1)'(lx_q) - (WBits+1)'(fx);
     assign dy = (WBits+1)'(ly_q) - (WBits+1)'(fy);
     assign {xmax, ymax} = {BoxBits'(dx), BoxBits'(dy)};
     assign empty_o = dx[WBits] || dy[WBits];
-    // The same box as the StBox form's from the vertices the stage holds (simulation, formal).
-    logic signed [WBits-1:0] ref_fx, ref_lx, ref_fy, ref_ly;
-    assign ref_fx = first_px(min3(vx_q));
-    assign ref_lx = last_px(max3(vx_q), vp_xmax_i);
-    assign ref_fy = first_px(min3(vy_q));
-    assign ref_ly = last_px(max3(vy_q), vp_ymax_i);
-    `ASSERT_IMPLIES(BoxAtAcceptIsBox_A, box_i, fx == ref_fx && fy == ref_fy &&
-                    empty_o == (ref_fx > ref_lx || ref_fy > ref_ly) && (empty_o ||
-                    (xmax == BoxBits'(ref_lx - ref_fx) && ymax == BoxBits'(ref_ly - ref_fy))),
+    // The same box as the StBox form's (simulation, formal; synthesis removes the held form).
+    `ASSERT_IMPLIES(BoxAtAcceptIsBox_A, box_i, fx == held_fx && fy == held_fy &&
+                    empty_o == held_empty && (empty_o || (xmax == held_xmax && ymax == held_ymax)),
                     clk_i, !rst_ni)
   end else begin : g_box_in_stbox
-    logic signed [WBits-1:0] lx, ly;
-    assign fx = first_px(min3(vx_q));
-    assign lx = last_px(max3(vx_q), vp_xmax_i);
-    assign fy = first_px(min3(vy_q));
-    assign ly = last_px(max3(vy_q), vp_ymax_i);
-    assign {xmax, ymax} = {BoxBits'(lx - fx), BoxBits'(ly - fy)};
-    assign empty_o = (fx > lx) || (fy > ly);
+    assign {box_x0, box_y0} = {PixBits'(held_fx), PixBits'(held_fy)};
+    assign {xmax, ymax, empty_o} = {held_xmax, held_ymax, held_empty};
   end
 
   always_comb begin
@@ -169,8 +171,8 @@ module trirast_box_stage #(
     end
     if (box_i) begin
       // The box fits BoxBits (the harness rejects larger ones, as the model does).
-      x0_d   = PixBits'(fx);
-      y0_d   = PixBits'(fy);
+      x0_d   = box_x0;
+      y0_d   = box_y0;
       xmax_d = xmax;
       ymax_d = ymax;
     end
