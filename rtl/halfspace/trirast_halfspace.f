@@ -10,5 +10,6 @@ trirast_halfspace_setup_stage.sv
 trirast_halfspace_stamp_tester.sv
 trirast_halfspace_walk_decide.sv
 trirast_halfspace_tile_walker.sv
+trirast_halfspace_late_select.sv
 trirast_halfspace_span_emitter.sv
 trirast_halfspace_top.sv

@@ -26,12 +26,15 @@ module trirast_halfspace_span_emitter #(
   input  logic [CountBits-1:0]                  fifo_depth_i,
   input  logic [CountBits-1:0]                  fifo_count_i,
   input  logic                                  fifo_pending_i,  // a span in the FIFO's push register
+  input  logic                                  fifo_pop_i,      // the FIFO's head is taken
   // ---- the triangle (stable while the walk stage is busy) ----
   input  logic [trirast_pkg::TagBits-1:0]       tag_i,
   input  logic [trirast_pkg::PixBits-1:0]       x0_i,
   input  logic [trirast_pkg::PixBits-1:0]       y0_i,
   // ---- the walker's pieces of the current band: row r has one (merge_i[r]), piece r mod S ----
   input  logic [UnitSize-1:0]                   merge_i,
+  input  logic [UnitSize-1:0]                   merge_tile_i,  // ... or has one if accept_i
+  input  logic                                  accept_i,
   input  logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_i,
   input  logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_i,
   // ---- band hand-over (a valid/ready pair: band_load_i only when free_o) ----
@@ -39,7 +42,8 @@ module trirast_halfspace_span_emitter #(
   input  logic [trirast_pkg::BoxBits:0]         band_j0_i,
   input  logic                                  band_back_i,  // the band runs right to left
   input  logic                                  unit_next_i,  // the walker's next unit follows
-  output logic                                  any_o,    // the band has a row with a run
+  output logic                                  held_o,   // the band has a row with a run before this cycle
+  output logic                                  any_o,    // ... or with this cycle's pieces
   output logic                                  free_o,   // nothing left to push after this cycle
   // ---- FIFO pushes ----
   output logic                                  push_o,
@@ -69,9 +73,17 @@ module trirast_halfspace_span_emitter #(
 
   // The collect buffer merged with this cycle's pieces (the header says which piece sets what).
   logic [UnitSize-1:0] upd_f, upd_l;  // the piece sets the row's first (last) column
-  assign upd_f = merge_i & (~acc_q | ({UnitSize{band_back_i}} & ~in_unit_q));
-  assign upd_l = merge_i & (~acc_q | {UnitSize{!band_back_i}} | first_unit_q);
-  assign merged = acc_q | merge_i;
+  logic [UnitSize-1:0] merge, set_f, set_l;
+  assign merge = merge_i | ({UnitSize{accept_i}} & merge_tile_i);
+  assign set_f = ~acc_q | ({UnitSize{band_back_i}} & ~in_unit_q);
+  assign set_l = ~acc_q | {UnitSize{!band_back_i}} | first_unit_q;
+  trirast_halfspace_late_select #(.Bits (2 * UnitSize)) u_upd (
+    .sel_i      (accept_i),
+    .if_set_i   ({(merge_i | merge_tile_i) & set_f, (merge_i | merge_tile_i) & set_l}),
+    .if_clear_i ({merge_i & set_f, merge_i & set_l}),
+    .o          ({upd_f, upd_l})
+  );
+  assign merged = acc_q | merge;
   // Row r's piece, piece r mod S (its column's top bit, PB = BoxBits + 1, is clear: in the box).
   logic [UnitSize*PB-1:0] piece_f, piece_l;
   for (genvar r = 0; r < UnitSize; r++) begin : g_row
@@ -82,13 +94,25 @@ module trirast_halfspace_span_emitter #(
     assign ml[r*BoxBits +: BoxBits] = upd_l[r] ? piece_l[r*PB +: BoxBits]
                                                : accl_q[r*BoxBits +: BoxBits];
   end
+  assign held_o = |acc_q;
   assign any_o = |merged;
-  assign in_unit_d = (unit_next_i || band_load_i) ? '0 : in_unit_q | merge_i;
-  assign first_unit_d = (unit_next_i || band_load_i) ? '0 : first_unit_q | (merge_i & ~acc_q);
+  assign in_unit_d = (unit_next_i || band_load_i) ? '0 : in_unit_q | merge;
+  assign first_unit_d = (unit_next_i || band_load_i) ? '0 : first_unit_q | (merge & ~acc_q);
 
   // The emit buffer: the lowest pending row goes when the FIFO has room.
-  assign room = (CountBits + 1)'(fifo_count_i) + (CountBits + 1)'(fifo_pending_i) <
-                (CountBits + 1)'(fifo_depth_i);
+  // room, registered: the next cycle's count + pending (count + pending - pop now, plus this
+  // cycle's push) against the depth.
+  logic room_q, room_d;
+  assign room = room_q;
+  assign room_d = (CountBits + 1)'(fifo_count_i) + (CountBits + 1)'(fifo_pending_i) -
+                  (CountBits + 1)'(fifo_pop_i) + (CountBits + 1)'(push_o) <
+                  (CountBits + 1)'(fifo_depth_i);
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) room_q <= 1'b1;  // empty, and the depth is at least 1
+    else room_q <= room_d;
+  end
+  `ASSERT(HalfspaceRoomHeld_A, room_q == ((CountBits + 1)'(fifo_count_i) +
+          (CountBits + 1)'(fifo_pending_i) < (CountBits + 1)'(fifo_depth_i)), clk_i, !rst_ni)
   always_comb begin
     logic [RowBits-1:0] lowest;
     lowest = '0;
@@ -153,7 +177,7 @@ module trirast_halfspace_span_emitter #(
   // Merged pieces lie in the box: a column's top bit (PB = BoxBits + 1) is clear.
   logic [UnitSize*PB-1:0] merge_cols;
   for (genvar r = 0; r < UnitSize; r++) begin : g_merge_cols
-    assign merge_cols[r*PB +: PB] = {PB{merge_i[r]}};
+    assign merge_cols[r*PB +: PB] = {PB{merge[r]}};
   end
   `ASSERT(HalfspacePieceInBox_A, ((piece_f | piece_l) & merge_cols & ColumnTopBits) == '0, clk_i,
           !rst_ni)
@@ -163,9 +187,9 @@ module trirast_halfspace_span_emitter #(
     hf = accf_q;
     hl = accl_q;
     for (int r = 0; r < UnitSize; r++) begin
-      if (merge_i[r] && (!acc_q[r] || piece_f[r*PB +: BoxBits] < accf_q[r*BoxBits +: BoxBits]))
+      if (merge[r] && (!acc_q[r] || piece_f[r*PB +: BoxBits] < accf_q[r*BoxBits +: BoxBits]))
         hf[r*BoxBits +: BoxBits] = piece_f[r*PB +: BoxBits];
-      if (merge_i[r] && (!acc_q[r] || piece_l[r*PB +: BoxBits] > accl_q[r*BoxBits +: BoxBits]))
+      if (merge[r] && (!acc_q[r] || piece_l[r*PB +: BoxBits] > accl_q[r*BoxBits +: BoxBits]))
         hl[r*BoxBits +: BoxBits] = piece_l[r*PB +: BoxBits];
     end
     hull_f = hf;

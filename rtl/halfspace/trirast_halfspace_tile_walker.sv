@@ -40,13 +40,16 @@ module trirast_halfspace_tile_walker #(
   output logic [trirast_pkg::PixBits-1:0]       y0_o,
   // ---- pieces of the current band and the band hand-over ----
   output logic [UnitSize-1:0]                   merge_o,        // row r of the band has a piece,
+  output logic [UnitSize-1:0]                   merge_tile_o,   // ... or has one if accept_o
+  output logic                                  accept_o,       // the unit is accepted whole
   output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_first_o,  // ... piece r mod S
   output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] merge_last_o,
   output logic                                  band_load_o,
   output logic [trirast_pkg::BoxBits:0]         band_j0_o,
   output logic                                  band_back_o,  // the band runs right to left
   output logic                                  unit_next_o,  // the next unit follows this cycle
-  input  logic                                  emit_any_i,   // the band (with this cycle) has a run
+  input  logic                                  emit_held_i,  // the band has a run from an earlier cycle
+  input  logic                                  emit_any_i,   // ... or from this cycle (assertions only)
   input  logic                                  emit_free_i,  // the emitter can take a band
   // ---- observation ----
   output logic                                  busy_o,
@@ -182,13 +185,14 @@ module trirast_halfspace_tile_walker #(
   assign tile_i1 = (i0_q >> L) == ({1'b0, xmax_q} >> L) ? {1'b0, xmax_q} : i0_q | PB'(U - 1);
   always_comb begin
     logic [PB-1:0] srow;
-    logic [U-1:0] m;
+    logic [U-1:0] m, mt;
     srow = stamp_mode ? sj_q - j0_q : '0;
     m = '0;
+    mt = '0;
     for (int r = 0; r < U; r++) begin
       // j0 + r <= Ymax, j0 U-aligned: every row but in the box's last band, whose rows go to
       // Ymax's low bits (HalfspaceTileEnds_A).
-      if (state_q == WUnit && accept) m[r] = !band_last || LB'(r) <= LB'(ymax_q & BoxBits'(U - 1));
+      mt[r] = Tiles && state_q == WUnit && (!band_last || LB'(r) <= LB'(ymax_q & BoxBits'(U - 1)));
       for (int dj = 0; dj < S; dj++) begin
         if ((stamp_mode || (state_q == WUnit && !Tiles)) && srow + PB'(dj) == PB'(r) &&
             st_any[dj]) begin
@@ -196,6 +200,7 @@ module trirast_halfspace_tile_walker #(
         end
       end
     end
+    merge_tile_o = mt;
     merge_o = m;  // one write (Icarus 11: see trirast_halfspace_stamp_tester.sv)
   end
   for (genvar dj = 0; dj < S; dj++) begin : g_piece
@@ -263,25 +268,36 @@ module trirast_halfspace_tile_walker #(
   // band (at the hand-over), the stamps of a partial tile; and the next state. Formed here from the
   // registers alone once for each outcome of the unit test (rejected, accepted, neither); the
   // outcome then picks one (u_decide), so that only a select follows the test's carry chains.
-  localparam int CtlBits = 6;
+  localparam int CtlBits = 7;
   logic load, band_go, band_next, eu_en, band_en, es_en, esr_en, stamp_col, stamp_row, stamp_done;
+  logic band_any;  // the band has a run, this cycle's pieces included
   logic [CtlBits-1:0] ctl, ctl_if [3];  // the controls if rejected, accepted, neither
   hs_walk_state_e state_if [3];    // the next state ...
-  hs_walk_state_e over_state, rest_state;
+  hs_walk_state_e rest_state;
   assign load = state_q == WIdle && hand_valid_i;
   assign stamp_col = stamp_mode && !stamp_last_col;                    // the next stamp
   assign stamp_row = stamp_mode && stamp_last_col && !stamp_last_row;  // the next stamp row
   assign stamp_done = stamp_mode && stamp_last_col && stamp_last_row;  // the tile's last stamp
-  // The next state at a band's hand-over, and outside WUnit, WStamp and WWait.
-  assign over_state = !emit_free_i ? WWait : !band_last ? WUnit : emit_any_i ? WDrain : WIdle;
+  // This cycle's pieces apart from an accepted tile's: a stamp row's come from the stamp tester,
+  // not from the unit test (HalfspaceBandAny_A checks the sum with the emitter's rows).
+  logic stamp_any;
+  assign stamp_any = (stamp_mode || (state_q == WUnit && !Tiles)) && |st_any;
   assign rest_state = state_q == WIdle ? (hand_valid_i ? WUnit : WIdle)
                     : state_q == WDrain && !emit_free_i ? WDrain : WIdle;
   always_comb begin
     for (int c = 0; c < 3; c++) begin
-      logic rej, acc, unit_done, band_end_or_wait, go, next_band, step, part;
-      hs_walk_state_e next;
+      logic rej, acc, unit_done, band_end_or_wait, go, next_band, step, part, any;
+      hs_walk_state_e next, over_state;
       rej = c == 0;
       acc = Tiles && c == 1;
+      // The band has a run: an earlier cycle's, a stamp row's, or the accepted tile's (its row 0
+      // is in the box).
+      any = emit_held_i || stamp_any || (acc && state_q == WUnit);
+      // The next state at a band's hand-over.
+      if (!emit_free_i) over_state = WWait;
+      else if (!band_last) over_state = WUnit;
+      else if (any) over_state = WDrain;
+      else over_state = WIdle;
       // The unit's test (without tiles every test is the unit's) or its last stamp is done; the
       // band ends (its last unit, or the early band end: a rejected unit after a covered one) or
       // waits.
@@ -296,7 +312,7 @@ module trirast_halfspace_tile_walker #(
       else if (band_end_or_wait) next = over_state;
       else if (unit_done) next = WUnit;
       else next = WStamp;
-      ctl_if[c] = {go, next_band, load || step || next_band, load || next_band,
+      ctl_if[c] = {any, go, next_band, load || step || next_band, load || next_band,
                    part || stamp_col || stamp_row, part || stamp_row};
       state_if[c] = next;
     end
@@ -315,7 +331,7 @@ module trirast_halfspace_tile_walker #(
     .ctl_o        (ctl),
     .state_o      (state_d)
   );
-  assign {band_go, band_next, eu_en, band_en, es_en, esr_en} = ctl;
+  assign {band_any, band_go, band_next, eu_en, band_en, es_en, esr_en} = ctl;
 
   always_comb begin
     logic [PB-1:0] i0_step;
@@ -358,7 +374,7 @@ module trirast_halfspace_tile_walker #(
     // Seen a unit not rejected in this band (with the early band end, the next rejected one ends
     // it).
     seen_d = !load && !band_next && (seen_q || (state_q == WUnit && !reject));
-    spans_d = !load && (spans_q || (band_go && emit_any_i));
+    spans_d = !load && (spans_q || (band_go && band_any));
     // A partial tile's stamps: from the unit's corner, along the stamp row, then the next row.
     si_d = stamp_col ? si_q + PB'(S) : i0_q;
     sj_d = stamp_mode ? sj_q + PB'(S) : j0_q;
@@ -369,10 +385,11 @@ module trirast_halfspace_tile_walker #(
 
   // The triangle's last cycle: its last band handed over with no span, or its last span pushed.
   assign band_load_o = band_go;
+  assign accept_o = accept;
   assign band_back_o = back_q;
   assign unit_next_o = eu_en;
-  assign last_o = (band_go && band_last && !emit_any_i) || (state_q == WDrain && emit_free_i);
-  assign retire_o = band_go && band_last && !emit_any_i && !spans_q;
+  assign last_o = (band_go && band_last && !band_any) || (state_q == WDrain && emit_free_i);
+  assign retire_o = band_go && band_last && !band_any && !spans_q;
 
   assign tag_o = tag_q;
   assign x0_o = x0_q;
@@ -440,6 +457,9 @@ module trirast_halfspace_tile_walker #(
   `ASSERT_IMPLIES(HalfspaceStampLast_A, state_q == WStamp,
                  stamp_last_col == (si_q + PB'(S) > tile_i1) &&
                  stamp_last_row == (sj_q + PB'(S) > tile_j1), clk_i, !rst_ni)
+  // The band's run as the walker decides it is the emitter's (its rows with this cycle's pieces).
+  `ASSERT_IMPLIES(HalfspaceBandAny_A, state_q == WUnit || state_q == WStamp || state_q == WWait,
+                 band_any == emit_any_i, clk_i, !rst_ni)
   `ASSERT_IMPLIES(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o, state_q == WIdle, clk_i,
           !rst_ni)
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)

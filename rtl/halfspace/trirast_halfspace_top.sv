@@ -68,9 +68,10 @@ module trirast_halfspace_top #(
 
   logic [TagBits-1:0] tag;
   logic [PixBits-1:0] x0, y0;
-  logic [UnitSize-1:0] merge;
+  logic [UnitSize-1:0] merge, merge_tile;
+  logic accept;
   logic [StampSize*PB-1:0] merge_first, merge_last;  // row r's piece: r mod StampSize
-  logic band_load, band_back, unit_next, emit_any, emit_free;
+  logic band_load, band_back, unit_next, emit_held, emit_any, emit_free;
   logic [PB-1:0] band_j0;
 
   trirast_halfspace_tile_walker #(
@@ -91,12 +92,15 @@ module trirast_halfspace_top #(
     .x0_o          (x0),
     .y0_o          (y0),
     .merge_o       (merge),
+    .merge_tile_o  (merge_tile),
+    .accept_o      (accept),
     .merge_first_o (merge_first),
     .merge_last_o  (merge_last),
     .band_load_o   (band_load),
     .band_j0_o     (band_j0),
     .band_back_o   (band_back),
     .unit_next_o   (unit_next),
+    .emit_held_i   (emit_held),
     .emit_any_i    (emit_any),
     .emit_free_i   (emit_free),
     .busy_o        (walker_busy),
@@ -122,16 +126,20 @@ module trirast_halfspace_top #(
     .fifo_depth_i  (cfg_fifo_depth_i),
     .fifo_count_i  (fifo_count_o),
     .fifo_pending_i (push_pending),
+    .fifo_pop_i    (span_valid_o && span_ready_i),
     .tag_i         (tag),
     .x0_i          (x0),
     .y0_i          (y0),
     .merge_i       (merge),
+    .merge_tile_i  (merge_tile),
+    .accept_i      (accept),
     .merge_first_i (merge_first),
     .merge_last_i  (merge_last),
     .band_load_i   (band_load),
     .band_j0_i     (band_j0),
     .band_back_i   (band_back),
     .unit_next_i   (unit_next),
+    .held_o        (emit_held),
     .any_o         (emit_any),
     .free_o        (emit_free),
     .push_o        (push),
