@@ -457,9 +457,17 @@ module trirast_halfspace_tile_walker #(
   `ASSERT_IMPLIES(HalfspaceStampLast_A, state_q == WStamp,
                  stamp_last_col == (si_q + PB'(S) > tile_i1) &&
                  stamp_last_row == (sj_q + PB'(S) > tile_j1), clk_i, !rst_ni)
-  // The band's run as the walker decides it is the emitter's (its rows with this cycle's pieces).
-  `ASSERT_IMPLIES(HalfspaceBandAny_A, state_q == WUnit || state_q == WStamp || state_q == WWait,
-                 band_any == emit_any_i, clk_i, !rst_ni)
+  // The band's run as the walker decides it is the emitter's (its rows with this cycle's pieces),
+  // for a test with one outcome: the emitter takes an accepted tile's rows by accept alone, the
+  // walker's controls give reject the priority.
+  `ASSERT_IMPLIES(HalfspaceBandAny_A, (state_q == WUnit || state_q == WStamp || state_q == WWait) &&
+                 !(accept && reject), band_any == emit_any_i, clk_i, !rst_ni)
+`ifndef FORMAL  // simulation: the edge values are the set-up's (the port proofs cut the box stage,
+                // so theirs may wrap, and a unit may be both)
+  // A unit is never both accepted and rejected: each edge's smallest corner value is at most its
+  // largest, and they do not wrap (HalfspaceEdgeBits).
+  `ASSERT_IMPLIES(HalfspaceTestOneOutcome_A, state_q == WUnit, !(accept && reject), clk_i, !rst_ni)
+`endif  // FORMAL
   `ASSERT_IMPLIES(HalfspaceHandOffOnlyIdle_A, hand_valid_i && hand_ready_o, state_q == WIdle, clk_i,
           !rst_ni)
   `ASSERT_KNOWN(HalfspaceWalkKnown_A, {busy_o, last_o, retire_o, band_load_o}, clk_i, !rst_ni)
