@@ -5,15 +5,20 @@
 # (scripts/test_sanitize.sh), then the multi-threaded golden's tests under ThreadSanitizer in
 # build-tsan/ (scripts/test_tsan.sh). The exit status is non-zero if any of them fails. Extra
 # arguments go to both ctest runs (e.g. -R cli). TRIRAST_SKIP_SANITIZE=1 runs the first suite only
-# (local use; CI runs all three).
+# (local use; CI runs all three). A ctest selection that matches no test fails (--no-tests=error).
+#   scripts/test.sh [CTEST_ARGS ...]     scripts/test.sh -h | --help   (this text)
 set -euo pipefail
+if [ "${1:-}" = -h ] || [ "${1:-}" = --help ]; then
+  sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
+  exit 0
+fi
 cd "$(dirname "$0")/.."
 ./scripts/deps.sh
 start=$SECONDS
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DTRIRAST_RTL_EXTRA_WIDTHS=ON -DTRIRAST_RTL_DEFAULT_RUN_ONLY=OFF >/dev/null
 cmake --build build -j2
 status=0
-( cd build && ctest --output-on-failure -j2 "$@" ) || status=1
+( cd build && ctest --output-on-failure --no-tests=error -j2 "$@" ) || status=1
 echo "test.sh: suite $([ $status -eq 0 ] && echo passed || echo FAILED) in build/ ($((SECONDS - start)) s)"
 if [ "${TRIRAST_SKIP_SANITIZE:-0}" != 1 ]; then
   start=$SECONDS
