@@ -9,7 +9,7 @@
 #   scripts/test.sh [CTEST_ARGS ...]     scripts/test.sh -h | --help   (this text)
 set -euo pipefail
 if [ "${1:-}" = -h ] || [ "${1:-}" = --help ]; then
-  sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'
+  awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"
   exit 0
 fi
 cd "$(dirname "$0")/.."

@@ -16,6 +16,10 @@
 # -fno-sanitize-address-use-after-scope), or every exception after a SystemC run would leave false
 # stack-buffer-overflow reports behind. Heap, globals, use-after-free, leaks and UBSan are checked.
 set -euo pipefail
+if [ "${1:-}" = -h ] || [ "${1:-}" = --help ]; then  # this text (as scripts/test.sh)
+  awk 'NR > 1 && /^#/ { sub(/^# ?/, ""); print; next } NR > 1 { exit }' "$0"
+  exit 0
+fi
 cd "$(dirname "$0")/.."
 build=build-asan
 mkdir -p "$build"
