@@ -416,7 +416,9 @@ def main():
       "whose row has no `fmax_mhz` has no time: its time columns say n/a, no clock is assumed. "
       "synth.csv holds no routed xc7 clock, so the xc7 per-area column divides the same "
       "iCE40-clocked triangles/s by the unit's xc7 LUTs. **Area**: the `luts` of the default "
-      "configuration's `xilinx7` row (xc7 LUTs; its DSP48 slices and block RAMs are not counted) "
+      "configuration's `xilinx7` row (xc7 LUTs, the fewer of Yosys's two LUT mappers, ABC and "
+      "ABC9, every unit the same way: the row's `xc7_mapper`; its DSP48 slices and block RAMs "
+      "are not counted) "
       "and of its `ice40` row (iCE40 cells: LUT4s). The clock-free per-area columns, triangles "
       "per 1,000 cycles per 1,000 LUTs, cover every unit.")
     w("")
