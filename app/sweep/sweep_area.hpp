@@ -35,7 +35,8 @@ struct Area {
   bool known() const { return !source.empty(); }
 };
 
-// One row of docs/synth.csv: unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz.
+// One row of docs/synth.csv: unit,config,target,luts,ffs,carry,bram,dsp,fmax_mhz (and xc7_mapper,
+// the xilinx7 row's Yosys LUT mapper, which the area model does not need).
 struct SynthRow {
   std::string unit, config, target;
   double luts = 0, ffs = 0;
