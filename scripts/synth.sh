@@ -171,6 +171,13 @@ run_job() {  # run_job NAME COMMAND...
   ) &
 }
 
+yosys_synth() {  # yosys_synth LOG STATFILE UNIT CONFIG COMMANDS [EXTRA-SOURCES]
+  # One Yosys run: the unit's sources at CONFIG (and EXTRA-SOURCES), COMMANDS, the cell counts into
+  # STATFILE.
+  yosys -q -l "$1" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$3" "$4") ${6:-};
+    $5; tee -o $2 stat" >/dev/null
+}
+
 yosys_stat() {  # yosys_stat UNIT CONFIG TARGET
   local unit="$1" cfg="$2" target="$3" top pre="" mapper base
   top=$(top_of "$unit")
@@ -182,17 +189,15 @@ yosys_stat() {  # yosys_stat UNIT CONFIG TARGET
   base="$WORK/$cfg/$unit.$target"
   rm -f "$base.stat" "$base.mapper" "$base.log"
   if [ "$target" = ice40 ]; then
-    yosys -q -l "$base.log" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg");
-      $pre synth_ice40 -top $top; tee -o $base.stat stat" >/dev/null
+    yosys_synth "$base.log" "$base.stat" "$unit" "$cfg" "$pre synth_ice40 -top $top"
     return
   fi
   # Xilinx 7: both of synth_xilinx's LUT mappers, ABC (the default) and ABC9 (-abc9, timing
   # driven); every unit's row is the one with fewer LUTs, its mapper named (XC7_MAPPERS).
   for mapper in $XC7_MAPPERS; do
     rm -f "$base.$mapper.stat"
-    yosys -q -l "$base.$mapper.log" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg");
-      $pre synth_xilinx $([ "$mapper" = abc9 ] && echo -abc9) -family xc7 -top $top;
-      tee -o $base.$mapper.stat stat" >/dev/null
+    yosys_synth "$base.$mapper.log" "$base.$mapper.stat" "$unit" "$cfg" \
+      "$pre synth_xilinx $([ "$mapper" = abc9 ] && echo -abc9) -family xc7 -top $top"
   done
   # (a mapper whose synthesis failed has no stat file; on a tie the first listed wins)
   mapper=$(for m in $XC7_MAPPERS; do
@@ -213,8 +218,8 @@ pnr() {  # pnr NAME UNIT CONFIG TOP [YOSYS-COMMANDS-BEFORE-SYNTH] [EXTRA-SOURCE]
   # improved and traditional units, so block RAM would change their timing); the second
   # generation's (FifoRam 1) and the half-space unit's FIFOs are built for block RAM (a
   # registered read): "bram" (their whole-unit jobs).
-  yosys -q -l "$d/yosys.log" -p "read_verilog -sv -I $ROOT/rtl/common $(sources "$unit" "$cfg") $extra;
-    $pre synth_ice40 $nobram -top $top -json $d/design.json; tee -o $d/design.stat stat" >/dev/null
+  yosys_synth "$d/yosys.log" "$d/design.stat" "$unit" "$cfg" \
+    "$pre synth_ice40 $nobram -top $top -json $d/design.json" "$extra"
   # PNR_TIMEOUT (seconds, environment; 0 or unset = none) stops a router that no longer converges.
   timeout "${PNR_TIMEOUT:-0}" nextpnr-ice40 --hx8k --package ct256 --json "$d/design.json" --pcf-allow-unconstrained \
     --freq "$PNR_FREQ" --seed 1 --timing-allow-fail --log "$d/nextpnr.log" >/dev/null 2>&1
