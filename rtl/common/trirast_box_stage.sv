@@ -50,7 +50,6 @@ module trirast_box_stage #(
   localparam int WBits = P + 2;                   // box arithmetic
   localparam int ProdBits = CoefBits + PixBits + 1;  // A * x (x unsigned)
   localparam logic signed [WBits-1:0] Half = WBits'(1) << (F - 1);  // h = u/2
-  localparam logic signed [WBits-1:0] HalfLess1 = Half - 1;        // h - 1
 
   // The accepted triangle.
   logic [TagBits-1:0] tag_q, tag_d;
@@ -110,24 +109,36 @@ module trirast_box_stage #(
   assign held_empty = (held_fx > held_lx) || (held_fy > held_ly);
   assign {held_xmax, held_ymax} = {BoxBits'(held_lx - held_fx), BoxBits'(held_ly - held_fy)};
 
-  // The box's first and last pixel of three vertices (BoxAtAccept), two carry chains deep: three
-  // compares select the smallest and the largest vertex; then, side by side, each one's pixel and
-  // the last pixel's clip, vmax >= thr with thr = (limit + 1)*u + h, the first coordinate whose
+  // The box's first and last pixel of three vertices (BoxAtAccept), two short carry chains deep:
+  // three compares select the smallest and the largest vertex; then, side by side, each one's pixel
+  // and the last pixel's clip, vmax >= thr with thr = (limit + 1)*u + h, the first coordinate whose
   // last pixel (vmax - h) >> F passes limit. The first pixel is left unclipped: StBox clips it at
-  // 0 by its sign, before the subtraction that gives Xmax and the empty test.
+  // 0 by its sign, before the subtraction that gives Xmax and the empty test. A compare is two
+  // chains of half the width side by side (the high halves' order, or their equality and the low
+  // halves' order); a pixel is the coordinate's pixel part plus or minus its fraction's carry:
+  // ceil((v - h)/u) = (v >> F) + (frac > h), floor((v - h)/u) = (v >> F) - (frac < h).
+  localparam int LoBits = WBits / 2;
+  localparam logic [F-1:0] FracBelowHalf = F'((1 << (F - 1)) - 1);  // h - 1, F bits
+  function automatic logic lt_halves(input logic signed [WBits-1:0] a,
+                                     input logic signed [WBits-1:0] b);
+    lt_halves = $signed(a[WBits-1:LoBits]) < $signed(b[WBits-1:LoBits]) ||
+                (a[WBits-1:LoBits] == b[WBits-1:LoBits] && a[LoBits-1:0] < b[LoBits-1:0]);
+  endfunction
   function automatic logic [2*WBits-1:0] first_last(input logic [3*P-1:0] v,
                                                     input logic signed [WBits-1:0] limit,
                                                     input logic signed [WBits-1:0] thr);
-    logic signed [WBits-1:0] vmin, vmax, f, l;
+    logic signed [WBits-1:0] vmin, vmax;
+    logic [WBits-F-1:0] f, l;  // pixels, signed
     logic lt01, lt02, lt12;
-    lt01 = coord(v, 0) < coord(v, 1);
-    lt02 = coord(v, 0) < coord(v, 2);
-    lt12 = coord(v, 1) < coord(v, 2);
+    lt01 = lt_halves(coord(v, 0), coord(v, 1));
+    lt02 = lt_halves(coord(v, 0), coord(v, 2));
+    lt12 = lt_halves(coord(v, 1), coord(v, 2));
     vmin = (lt01 && lt02) ? coord(v, 0) : lt12 ? coord(v, 1) : coord(v, 2);
     vmax = (!lt01 && !lt02) ? coord(v, 0) : !lt12 ? coord(v, 1) : coord(v, 2);
-    f = (vmin + HalfLess1) >>> F;  // ceil((vmin - h)/u)
-    l = (vmax - Half) >>> F;
-    first_last = {f, (vmax >= thr) ? limit : l};
+    f = vmin[WBits-1:F] + (WBits-F)'(vmin[F-1] && (vmin[F-1:0] & FracBelowHalf) != '0);  // ceil
+    l = vmax[WBits-1:F] - (WBits-F)'(!vmax[F-1]);                     // floor((vmax - h)/u)
+    first_last = {{{F{f[WBits-F-1]}}, f},
+                  lt_halves(vmax, thr) ? {{F{l[WBits-F-1]}}, l} : limit};
   endfunction
 
   if (BoxAtAccept) begin : g_box_at_accept

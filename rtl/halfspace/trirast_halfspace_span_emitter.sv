@@ -19,7 +19,11 @@ module trirast_halfspace_span_emitter #(
   parameter int UnitSize = 8,
   parameter int StampSize = 2,  // S: the walker's pieces per cycle; row r takes piece r mod S
   parameter int CountBits = 4,
-  parameter int EntryBits = trirast_pkg::TagBits + 3 * trirast_pkg::PixBits + 1
+  parameter int EntryBits = trirast_pkg::TagBits + 3 * trirast_pkg::PixBits + 1,
+  // 1: each buffer's column registers take their value from LUTs of their own (the iCE40 form:
+  // a logic cell pairs one LUT with one flip-flop, and a LUT that drives two flip-flops shares a
+  // cell with neither); 0: one select per column feeds both buffers (fewer LUTs: the xc7 form).
+  parameter bit OwnLuts = 1'b0
 ) (
   input  logic                                  clk_i,
   input  logic                                  rst_ni,
@@ -127,7 +131,36 @@ module trirast_halfspace_span_emitter #(
     if (push_o) left[row] = 1'b0;
     pend_next = left;
   end
-  assign free_o = ~|pend_next;
+  // free_o, registered: nothing left to push after the next cycle's push either, formed from the
+  // next cycle's pending rows and room (at the hand-over the merged rows, by accept last), so that
+  // the walker's control starts from a flip-flop (HalfspaceFreeHeld_A: the same as ~|pend_next).
+  function automatic logic drained(input logic [UnitSize-1:0] rows, input logic room_next);
+    logic any, more;  // a row, more than one
+    any = 1'b0;
+    more = 1'b0;
+    for (int r = 0; r < UnitSize; r++) begin
+      more = more || (any && rows[r]);
+      any = any || rows[r];
+    end
+    drained = !any || (!more && room_next);
+  endfunction
+  logic free_q, free_d, free_if_accept, free_if_not;
+  assign free_if_accept = drained(acc_q | merge_i | merge_tile_i, room_d);
+  assign free_if_not = drained(acc_q | merge_i, room_d);
+  logic free_load;  // free_d at the hand-over
+  trirast_halfspace_late_select #(.Bits (1)) u_free (
+    .sel_i      (accept_i),
+    .if_set_i   (free_if_accept),
+    .if_clear_i (free_if_not),
+    .o          (free_load)
+  );
+  assign free_d = band_load_i ? free_load : drained(pend_next, room_d);
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) free_q <= 1'b1;  // no row pending
+    else free_q <= free_d;
+  end
+  assign free_o = free_q;
+  `ASSERT(HalfspaceFreeHeld_A, free_q == ~|pend_next, clk_i, !rst_ni)
 
   always_comb begin
     logic [PixBits-1:0] y, xb;
@@ -152,11 +185,33 @@ module trirast_halfspace_span_emitter #(
   end
 
   assign acc_d = band_load_i ? '0 : merged;
-  assign accf_d = mf;
-  assign accl_d = ml;
+  logic [UnitSize*BoxBits-1:0] out_mf, out_ml;  // the emit buffer's at the hand-over
+  if (OwnLuts) begin : g_own_luts
+    // The collect buffer's columns: mf and ml, but zero on a row without a run (not read: its
+    // next piece sets them). Not a select between the piece and the register itself, which
+    // synthesis makes a flip-flop enable with the piece as its data (a piece drives the columns
+    // of UnitSize / StampSize rows: no LUT of their own).
+    // The emit buffer's: mf and ml with their own select, upd_f | ~acc_q (upd_l | ~acc_q), the
+    // same on every row it will push (a row without a run before this cycle takes its piece:
+    // upd_f and upd_l set) and different only on rows it does not push.
+    for (genvar r = 0; r < UnitSize; r++) begin : g_row
+      logic [BoxBits-1:0] pf, pl, af, al;
+      assign {pf, pl} = {piece_f[r*PB +: BoxBits], piece_l[r*PB +: BoxBits]};
+      assign {af, al} = {accf_q[r*BoxBits +: BoxBits], accl_q[r*BoxBits +: BoxBits]};
+      assign accf_d[r*BoxBits +: BoxBits] = upd_f[r] ? pf : af & {BoxBits{acc_q[r]}};
+      assign accl_d[r*BoxBits +: BoxBits] = upd_l[r] ? pl : al & {BoxBits{acc_q[r]}};
+      assign out_mf[r*BoxBits +: BoxBits] = (upd_f[r] || !acc_q[r]) ? pf : af;
+      assign out_ml[r*BoxBits +: BoxBits] = (upd_l[r] || !acc_q[r]) ? pl : al;
+      `ASSERT_IMPLIES(HalfspaceEmitLoadRun_A, merged[r],
+                      out_mf[r*BoxBits +: BoxBits] == mf[r*BoxBits +: BoxBits] &&
+                      out_ml[r*BoxBits +: BoxBits] == ml[r*BoxBits +: BoxBits], clk_i, !rst_ni)
+    end
+  end else begin : g_shared_luts
+    assign {accf_d, accl_d, out_mf, out_ml} = {mf, ml, mf, ml};
+  end
   assign pend_d = band_load_i ? merged : pend_next;
-  assign outf_d = band_load_i ? mf : outf_q;
-  assign outl_d = band_load_i ? ml : outl_q;
+  assign outf_d = band_load_i ? out_mf : outf_q;
+  assign outl_d = band_load_i ? out_ml : outl_q;
   assign outj0_d = band_load_i ? band_j0_i : outj0_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -1,13 +1,14 @@
 // The half-space unit's stamp tester (docs/unit.md "The half-space unit", stage 3): in one cycle
 // the three edge functions at the StampSize x StampSize pixel centres from box pixel (i0, j0):
 // E = e + di*a + dj*b with a = A*u, b = B*u (constant multiples: adders); a pixel is covered when
-// every E >= 0 (or its edge holds the whole stamp inside: inside_i) and it lies in the box. Per
-// stamp row: any pixel, first and last covered column. With tiles its values are tile-relative,
+// every E >= 0 (or its edge holds the whole stamp inside: inside_i) and it lies in the box: one
+// bit per pixel (the walker forms each stamp row's piece from them). With tiles its values are
+// tile-relative,
 // the low EdgeBits of E (the walker's OffBits: exact for an edge that crosses the tile).
 // The stamp origin is StampSize-aligned and inside the box (the walker asserts both,
 // HalfspaceStampAligned_A and HalfspaceUnitInBox_A / HalfspaceStampInTile_A): a pixel's column is
-// i0 with its low bits set to di (no adder), and it is in the box unless the stamp holds Xmax's
-// column and di passes Xmax's low bits (no compare of magnitudes); the same for rows.
+// in the box unless the stamp holds Xmax's column and di passes Xmax's low bits (no compare of
+// magnitudes); the same for rows.
 module trirast_halfspace_stamp_tester #(
   parameter int StampSize = 2,
   parameter int EdgeBits = trirast_pkg::EdgeBits  // its values' bits (the walker's StampBits)
@@ -20,11 +21,8 @@ module trirast_halfspace_stamp_tester #(
   input  logic [trirast_pkg::BoxBits:0]          j0_i,
   input  logic [trirast_pkg::BoxBits-1:0]        xmax_i,
   input  logic [trirast_pkg::BoxBits-1:0]        ymax_i,
-  output logic [StampSize-1:0]                   row_any_o,
-  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_first_o,
-  output logic [StampSize*(trirast_pkg::BoxBits+1)-1:0] row_last_o
+  output logic [StampSize*StampSize-1:0]         cover_o    // pixel (di, dj): bit dj*StampSize + di
 );
-  localparam int PB = trirast_pkg::BoxBits + 1;
   localparam int SL = $clog2(StampSize);
   localparam int SB = (SL > 0) ? SL : 1;  // a pixel's offset in the stamp (StampSize 1: 0)
   logic last_col, last_row;  // the stamp holds the box's last column (row)
@@ -35,16 +33,10 @@ module trirast_halfspace_stamp_tester #(
   // temporaries (docs/rtl.md, "Icarus"); a variable written twice glitches, and the glitch wakes
   // the blocks that read it (here the walker's) in the same time step, again and again.
   always_comb begin
-    logic [StampSize-1:0] any;
-    logic [StampSize*PB-1:0] first, last;
-    any = '0;
-    first = '0;
-    last = '0;
-    for (int dj = StampSize - 1; dj >= 0; dj--) begin
-      for (int di = StampSize - 1; di >= 0; di--) begin
+    logic [StampSize*StampSize-1:0] covered;
+    for (int dj = 0; dj < StampSize; dj++) begin
+      for (int di = 0; di < StampSize; di++) begin
         logic in;
-        logic [PB-1:0] i;
-        i = i0_i | PB'(di);
         in = (!last_col || SB'(di) <= SB'(xmax_i & trirast_pkg::BoxBits'(StampSize - 1))) &&
              (!last_row || SB'(dj) <= SB'(ymax_i & trirast_pkg::BoxBits'(StampSize - 1)));
         for (int k = 0; k < 3; k++) begin
@@ -53,16 +45,9 @@ module trirast_halfspace_stamp_tester #(
               EdgeBits'(dj) * b_i[k*EdgeBits +: EdgeBits];
           in = in && (inside_i[k] || !v[EdgeBits-1]);
         end
-        if (in) begin
-          // Scanning right to left: the last hit is the first column.
-          if (!any[dj]) last[dj*PB +: PB] = i;
-          first[dj*PB +: PB] = i;
-          any[dj] = 1'b1;
-        end
+        covered[dj*StampSize + di] = in;
       end
     end
-    row_any_o = any;
-    row_first_o = first;
-    row_last_o = last;
+    cover_o = covered;
   end
 endmodule

@@ -144,11 +144,17 @@ module trirast_halfspace_tile_walker #(
   end
   logic reject, accept;
 
-  // ---- stamp tester: the unit itself without tiles, else the current stamp ----
+  // ---- stamp tester: the unit itself without tiles, else the next stamp ----
   // With tiles its result is read in WStamp only, without tiles in WUnit only: its inputs are
-  // the stamp's (es, si, sj) or the unit's (eu, i0, j0) by the build, not by the state.
+  // the unit's (eu, i0, j0) or, with tiles, the next stamp's (es_d, si_d, the next sj), and with
+  // tiles its S x S coverage bits are registered with the stamp (es_en): the tester's adders
+  // start from the stamp registers' inputs, which the registers and the registered last-column
+  // and last-row flags select (no walk decision before them), and a stamp's pieces come from
+  // flip-flops.
+  logic [S*S-1:0] st_cover, st_cover_c, st_cover_q;
   logic [S-1:0] st_any;
   logic [S*PB-1:0] st_first, st_last;
+  logic [PB-1:0] sj_next;  // the next stamp's row: sj_d at a stamp row's start, else sj_q
   logic stamp_mode;
   assign stamp_mode = state_q == WStamp;
   always_comb begin
@@ -159,18 +165,40 @@ module trirast_halfspace_tile_walker #(
     end
   end
   trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (StampBits)) u_stamp (
-    .e_i         (Tiles ? es_q : eu_st),
-    .inside_i    (Tiles ? st_inside_q : 3'b000),
+    .e_i         (Tiles ? es_d : eu_st),
+    .inside_i    (Tiles ? st_inside_d : 3'b000),
     .a_i         (a_st),
     .b_i         (b_st),
-    .i0_i        (Tiles ? si_q : i0_q),
-    .j0_i        (Tiles ? sj_q : j0_q),
+    .i0_i        (Tiles ? si_d : i0_q),
+    .j0_i        (Tiles ? sj_next : j0_q),
     .xmax_i      (xmax_q),
     .ymax_i      (ymax_q),
-    .row_any_o   (st_any),
-    .row_first_o (st_first),
-    .row_last_o  (st_last)
+    .cover_o     (st_cover_c)
   );
+  assign st_cover = Tiles ? st_cover_q : st_cover_c;
+  // Per stamp row: any pixel, the first and last covered column: the stamp's column (S-aligned)
+  // with its low bits set to the pixel's (no adder).
+  always_comb begin
+    logic [S-1:0] any;
+    logic [S*PB-1:0] first, last;
+    logic [PB-1:0] i0;
+    i0 = Tiles ? si_q : i0_q;
+    any = '0;
+    first = '0;
+    last = '0;
+    for (int dj = 0; dj < S; dj++) begin
+      for (int di = S - 1; di >= 0; di--) begin  // right to left: the last hit is the first column
+        if (st_cover[dj*S + di]) begin
+          if (!any[dj]) last[dj*PB +: PB] = i0 | PB'(di);
+          first[dj*PB +: PB] = i0 | PB'(di);
+          any[dj] = 1'b1;
+        end
+      end
+    end
+    st_any = any;
+    st_first = first;
+    st_last = last;
+  end
 
   // ---- pieces for the emitter (row r of the band) ----
   // Row r's piece is piece r mod S: a stamp row starts at an S-aligned row of the unit, so a
@@ -186,7 +214,7 @@ module trirast_halfspace_tile_walker #(
   always_comb begin
     logic [PB-1:0] srow;
     logic [U-1:0] m, mt;
-    srow = stamp_mode ? sj_q - j0_q : '0;
+    srow = stamp_mode ? sj_q & PB'(U - 1) : '0;  // sj_q - j0_q: sj_q is in j0_q's (U-aligned) unit
     m = '0;
     mt = '0;
     for (int r = 0; r < U; r++) begin
@@ -217,10 +245,15 @@ module trirast_halfspace_tile_walker #(
   // The stamp's column (row) is the tile's last, si_q + S > tile_i1 (sj_q + S > tile_j1), with no
   // adder before a compare: units are U-aligned and stamps S-aligned in them, so it is the unit's
   // last stamp column, or si_q + S > xmax_q, which for an S-aligned si_q is si_q/S >= xmax_q/S.
-  assign stamp_last_col = (si_q & PB'(U - 1)) == PB'(U - S) ||
-                          (si_q >> $clog2(S)) >= ({1'b0, xmax_q} >> $clog2(S));
-  assign stamp_last_row = (sj_q & PB'(U - 1)) == PB'(U - S) ||
-                          (sj_q >> $clog2(S)) >= ({1'b0, ymax_q} >> $clog2(S));
+  // Both are flip-flops, set with si_q and sj_q from their next values (Xmax and Ymax are set at
+  // the load, and a unit's stamps start with es_en and esr_en after it): the stamp's control and
+  // the next stamp's values start from them.
+  function automatic logic stamp_end(input logic [PB-1:0] s, input logic [BoxBits-1:0] smax);
+    stamp_end = (s & PB'(U - 1)) == PB'(U - S) || (s >> $clog2(S)) >= ({1'b0, smax} >> $clog2(S));
+  endfunction
+  logic stamp_last_col_q, stamp_last_row_q;
+  assign stamp_last_col = stamp_last_col_q;
+  assign stamp_last_row = stamp_last_row_q;
   // The band's last unit (back_q ? i0_q == 0 : i0_q == iend_q) and the box's last band
   // (j0_q + U > ymax_q) are flip-flops, set with i0_q and j0_q: the control starts from them.
   logic last_unit_q, last_unit_d, band_last_q, band_last_d;
@@ -378,6 +411,7 @@ module trirast_halfspace_tile_walker #(
     // A partial tile's stamps: from the unit's corner, along the stamp row, then the next row.
     si_d = stamp_col ? si_q + PB'(S) : i0_q;
     sj_d = stamp_mode ? sj_q + PB'(S) : j0_q;
+    sj_next = stamp_mode && !stamp_last_col ? sj_q : sj_d;
     es_d = stamp_mode ? (stamp_last_col ? esr_next : es_next) : eu_st;
     esr_d = stamp_mode ? esr_next : eu_st;
     st_inside_d = stamp_mode ? st_inside_q : all_in;
@@ -407,8 +441,11 @@ module trirast_halfspace_tile_walker #(
     if (band_en) begin
       {ebn_q, ebo_q, j0_q, back_q, band_last_q} <= {ebn_d, ebo_d, j0_d, back_d, band_last_d};
     end
-    if (es_en) {si_q, es_q, st_inside_q} <= {si_d, es_d, st_inside_d};
-    if (esr_en) {sj_q, esr_q} <= {sj_d, esr_d};
+    if (es_en) begin
+      {si_q, es_q, st_inside_q, stamp_last_col_q} <= {si_d, es_d, st_inside_d, stamp_end(si_d, xmax_q)};
+      st_cover_q <= st_cover_c;
+    end
+    if (esr_en) {sj_q, esr_q, stamp_last_row_q} <= {sj_d, esr_d, stamp_end(sj_d, ymax_q)};
     {seen_q, spans_q} <= {seen_d, spans_d};
   end
 

@@ -119,7 +119,8 @@ module trirast_halfspace_top #(
     .UnitSize  (UnitSize),
     .StampSize (StampSize),
     .CountBits (CountBits),
-    .EntryBits (EntryBits)
+    .EntryBits (EntryBits),
+    .OwnLuts   (CornerForm == 1)  // the iCE40 form
   ) u_emitter (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
