@@ -176,6 +176,17 @@ module trirast_halfspace_tile_walker #(
     .cover_o     (st_cover_c)
   );
   assign st_cover = Tiles ? st_cover_q : st_cover_c;
+`ifndef SYNTHESIS  // simulation only (the port proofs cut the stamp tester's outputs free)
+`ifndef FORMAL
+  // The coverage registered a cycle ahead is the stamp's own: the stamp tester on its registers.
+  logic [S*S-1:0] st_cover_now;
+  trirast_halfspace_stamp_tester #(.StampSize (S), .EdgeBits (StampBits)) u_stamp_now (
+    .e_i (es_q), .inside_i (st_inside_q), .a_i (a_st), .b_i (b_st), .i0_i (si_q), .j0_i (sj_q),
+    .xmax_i (xmax_q), .ymax_i (ymax_q), .cover_o (st_cover_now));
+  `ASSERT_IMPLIES(HalfspaceStampAhead_A, Tiles && stamp_mode, st_cover_q == st_cover_now, clk_i,
+                 !rst_ni)
+`endif  // FORMAL
+`endif  // SYNTHESIS
   // Per stamp row: any pixel, the first and last covered column: the stamp's column (S-aligned)
   // with its low bits set to the pixel's (no adder).
   always_comb begin
