@@ -3,8 +3,8 @@
 // E = e + di*a + dj*b with a = A*u, b = B*u (constant multiples: adders); a pixel is covered when
 // every E >= 0 (or its edge holds the whole stamp inside: inside_i) and it lies in the box: one
 // bit per pixel (the walker forms each stamp row's piece from them). With tiles its values are
-// tile-relative,
-// the low EdgeBits of E (the walker's OffBits: exact for an edge that crosses the tile).
+// tile-relative, the low EdgeBits of E (the walker's OffBits: exact for an edge that crosses the
+// tile).
 // The stamp origin is StampSize-aligned and inside the box (the walker asserts both,
 // HalfspaceStampAligned_A and HalfspaceUnitInBox_A / HalfspaceStampInTile_A): a pixel's column is
 // in the box unless the stamp holds Xmax's column and di passes Xmax's low bits (no compare of
